@@ -1,0 +1,128 @@
+// The SID data model: everything isosid-prep hands to isosid-run for one reduced
+// flexible body (classic FFRF standard input data plus contact, stress and transfer data).
+// Conventions: SI units; body-frame vectors of the classic SID terms and of nodes are 3D
+// (2D bodies lie in the x-y plane, axisymmetric bodies have x radial and y on the axis);
+// contact, master-patch and stress-point data use the analysis dimension `dim` (2 or 3).
+#pragma once
+#include "isosid/format/analysis_type.hpp"
+#include "isosid/format/taylor.hpp"
+
+#include <Eigen/Dense>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace isosid::format {
+
+struct Material {
+  double youngs_modulus = 0;  ///< Pa
+  double poisson_ratio = 0;   ///< -
+  double density = 0;         ///< kg/m^3
+};
+
+/// Reference model data (SID "refmod") and how the elastic coordinates were made.
+struct RefMod {
+  double mass = 0;                       ///< kg
+  std::vector<std::string> mode_names;   ///< nq names
+  Eigen::VectorXd frequencies_hz;        ///< nq natural frequencies of the reduced body
+  int n_low = 0;                         ///< leading normal (low-frequency) modes; the rest are high
+  std::string reduction_method;          ///< "modal", "craig-bampton", "full", "macneal"
+  std::string interface_description;     ///< e.g. the contact surface and interval of the constraint modes
+  Eigen::Index nq() const { return frequencies_hz.size(); }
+  int n_high() const { return static_cast<int>(nq()) - n_low; }
+};
+
+/// Rayleigh damping De = alpha1 Me + alpha2 Ke from (kappa, f1, f2) (seed 000 eq. 26-28).
+struct Damping {
+  double kappa = 0, f1_hz = 0, f2_hz = 0;
+  double alpha1 = 0;  ///< 1/s, mass-proportional
+  double alpha2 = 0;  ///< s, stiffness-proportional
+};
+
+/// A node where joints, loads or monitors attach (SID "frame/node").
+struct Node {
+  std::string name;
+  Taylor origin;  ///< 3x1, order 1: M0 = reference position c_k, M1[j] = phi(:, j)
+  Eigen::MatrixXd phi;  ///< 3 x nq translational mode shapes
+  Eigen::MatrixXd psi;  ///< 3 x nq rotational mode shapes (small rotations of the node frame)
+  Taylor AP;     ///< 3x3, order 1: node frame orientation
+};
+
+/// Gauss points of a contact boundary: where the runtime evaluates penalty contact.
+struct ContactSurface {
+  std::string name;
+  std::string side;            ///< the patch side it lies on, e.g. "bottom"
+  std::string master_patch;    ///< the MasterPatch describing the same boundary
+  Eigen::MatrixXd parameter;   ///< npts x param_dim, patch parameters of each point
+  Eigen::VectorXi element;     ///< npts, element index (in the body's element list)
+  Eigen::MatrixXd position;    ///< npts x dim, reference position in the body frame, m
+  Eigen::MatrixXd normal;      ///< npts x dim, outward unit normal
+  Eigen::VectorXd weight;      ///< npts, quadrature weight: area (2*pi*r*length, thickness*length), m^2
+  Eigen::MatrixXd Psi;         ///< (npts*dim) x nq, row g*dim+a: displacement a of point g per q
+  Eigen::Index points() const { return weight.size(); }
+};
+
+/// A boundary NURBS (curve in 2D, surface in 3D) for closest-point projection on a deformed body.
+struct MasterPatch {
+  std::string name;
+  std::vector<int> degrees;              ///< one per parametric direction
+  std::vector<Eigen::VectorXd> knots;    ///< one open knot vector per direction
+  Eigen::VectorXd weights;               ///< ncp NURBS weights (first direction fastest)
+  Eigen::MatrixXd control_points;        ///< ncp x dim reference control points, m
+  Eigen::MatrixXd Phi;                   ///< (ncp*dim) x nq displacement rows of the control points
+};
+
+/// Points where stresses are recovered as sigma = S q (linear elasticity).
+struct StressRecovery {
+  std::string name;
+  std::vector<std::string> components;   ///< e.g. xx yy zz xy (2D) or xx yy zz xy yz xz (3D)
+  Eigen::MatrixXd position;              ///< npts x dim, m
+  Eigen::MatrixXd S;                     ///< (npts*ncomp) x nq, Pa per unit q
+};
+
+/// Maps elastic coordinates between a coarse model and this (refined) model of one body.
+struct TransferOperator {
+  std::string coarse_model_sha256;
+  Eigen::MatrixXd coarse_to_fine;        ///< nq x nq_coarse
+  Eigen::MatrixXd fine_to_coarse;        ///< nq_coarse x nq
+};
+
+struct Provenance {
+  std::string model_file, model_sha256, program_version, created_utc;
+  std::vector<std::pair<std::string, double>> timings_s;
+};
+
+struct Sid {
+  std::string body_name;
+  AnalysisType analysis = AnalysisType::Solid;
+  Material material;
+  double thickness = 1.0;  ///< m, for plane strain / plane stress bodies
+  RefMod refmod;
+  Damping damping;
+
+  // Classic SID body terms (Wallrapp; see shared/research/sid-and-ffrf.md).
+  Taylor mdCM;    ///< 3x1, o1: first moment of mass, kg m
+  Taylor J;       ///< 3x3, o1: inertia tensor about the frame origin, kg m^2
+  Taylor Ct;      ///< nq x 3, o1
+  Taylor Cr;      ///< nq x 3, o1
+  Taylor Me;      ///< nq x nq, o0
+  Taylor Gr;      ///< 3 x 3nq, o0
+  Taylor Ge;      ///< nq x 3nq, o0
+  Taylor Oe;      ///< nq x 6, o1, columns pair with [wx^2, wy^2, wz^2, wx wy, wy wz, wz wx]
+  Taylor ksigma;  ///< nq x 1, o0
+  Taylor Ke;      ///< nq x nq, o0
+  Taylor De;      ///< nq x nq, o0
+
+  std::vector<Node> nodes;
+  std::vector<ContactSurface> contact_surfaces;
+  std::vector<MasterPatch> master_patches;
+  std::vector<StressRecovery> stress_recovery;
+  std::optional<TransferOperator> transfer;
+  Provenance provenance;
+
+  Eigen::Index nq() const { return refmod.nq(); }
+  int dim() const { return spatial_dim(analysis); }
+};
+
+}  // namespace isosid::format

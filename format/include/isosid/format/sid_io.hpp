@@ -1,0 +1,26 @@
+// Reading and writing SID files (HDF5). The layout is documented in format/README.md.
+#pragma once
+#include "isosid/format/sid.hpp"
+
+#include <functional>
+#include <string>
+
+namespace isosid::format {
+
+/// Schema version written to /isosid/version; a reader refuses any other major version.
+constexpr int kSchemaVersion = 1;
+
+struct WriteOptions {
+  /// Called before each part is written (for progress reports); may throw to abort the write.
+  std::function<void(const std::string& part)> on_part;
+};
+
+/// Validates `sid` and writes it atomically: a temporary file in the target's folder is
+/// renamed onto `path` only after everything was written, so a failed or interrupted
+/// write never leaves a half-written file at `path`. Throws InputError on invalid data.
+void write_sid(const Sid& sid, const std::string& path, const WriteOptions& options = {});
+
+/// Reads and validates a SID. Throws InputError naming the file, dataset and problem.
+Sid read_sid(const std::string& path);
+
+}  // namespace isosid::format

@@ -1,0 +1,136 @@
+// isosid-info: what a SID file holds (body, invariants, modes, contact data, provenance).
+#include "isosid/format/cli_parse.hpp"
+#include "isosid/format/rigid_invariants.hpp"
+#include "isosid/format/sid_io.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+namespace {
+using namespace isosid::format;
+using nlohmann::json;
+
+json matrix_json(const Eigen::MatrixXd& m) {
+  json rows = json::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    json row = json::array();
+    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(m(i, j));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+json vector_json(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
+
+json describe(const Sid& sid) {
+  const RigidInvariants inv = rigid_invariants(sid);
+  json j;
+  j["body"] = sid.body_name;
+  j["analysis_type"] = to_string(sid.analysis);
+  j["material"] = {{"youngs_modulus_pa", sid.material.youngs_modulus},
+                   {"poisson_ratio", sid.material.poisson_ratio},
+                   {"density_kg_m3", sid.material.density}};
+  if (sid.dim() == 2 && sid.analysis != AnalysisType::Axisymmetric) j["thickness_m"] = sid.thickness;
+  j["mass"] = inv.mass;
+  j["center_of_mass"] = vector_json(inv.center_of_mass);
+  j["inertia"] = matrix_json(inv.inertia_origin);
+  j["inertia_at_center_of_mass"] = matrix_json(inv.inertia_center);
+  j["nq"] = sid.nq();
+  j["n_low"] = sid.refmod.n_low;
+  j["n_high"] = sid.refmod.n_high();
+  j["reduction_method"] = sid.refmod.reduction_method;
+  j["interface"] = sid.refmod.interface_description;
+  j["frequencies_hz"] = vector_json(sid.refmod.frequencies_hz);
+  j["damping"] = {{"kappa", sid.damping.kappa}, {"f1_hz", sid.damping.f1_hz}, {"f2_hz", sid.damping.f2_hz},
+                  {"alpha1", sid.damping.alpha1}, {"alpha2", sid.damping.alpha2}};
+  j["nodes"] = json::array();
+  for (const Node& n : sid.nodes) j["nodes"].push_back({{"name", n.name}, {"position", vector_json(n.origin.M0.col(0))}});
+  j["contact_surfaces"] = json::array();
+  for (const ContactSurface& c : sid.contact_surfaces)
+    j["contact_surfaces"].push_back({{"name", c.name}, {"side", c.side}, {"points", c.points()},
+                                     {"master_patch", c.master_patch}, {"area_m2", c.weight.sum()}});
+  j["master_patches"] = json::array();
+  for (const MasterPatch& m : sid.master_patches)
+    j["master_patches"].push_back({{"name", m.name}, {"degrees", m.degrees}, {"control_points", m.weights.size()}});
+  j["stress_recovery"] = json::array();
+  for (const StressRecovery& s : sid.stress_recovery)
+    j["stress_recovery"].push_back({{"name", s.name}, {"points", s.position.rows()}, {"components", s.components}});
+  j["transfer"] = sid.transfer ? json{{"coarse_nq", sid.transfer->coarse_to_fine.cols()},
+                                      {"coarse_model_sha256", sid.transfer->coarse_model_sha256}}
+                               : json(nullptr);
+  json timings = json::object();
+  for (const auto& [name, s] : sid.provenance.timings_s) timings[name] = s;
+  j["provenance"] = {{"model_file", sid.provenance.model_file}, {"model_sha256", sid.provenance.model_sha256},
+                     {"program_version", sid.provenance.program_version},
+                     {"created_utc", sid.provenance.created_utc}, {"timings_s", timings}};
+  return j;
+}
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string vec3(const Eigen::VectorXd& v) {
+  std::string s = "(";
+  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + fmt(v(i));
+  return s + ")";
+}
+
+void print_text(const Sid& sid, std::ostream& out) {
+  const RigidInvariants inv = rigid_invariants(sid);
+  out << "body          " << sid.body_name << " (" << to_string(sid.analysis) << ")\n"
+      << "material      E = " << fmt(sid.material.youngs_modulus) << " Pa, nu = " << fmt(sid.material.poisson_ratio)
+      << ", rho = " << fmt(sid.material.density) << " kg/m^3\n"
+      << "mass          " << fmt(inv.mass) << " kg\n"
+      << "centre of mass " << vec3(inv.center_of_mass) << " m\n"
+      << "inertia (about the centre of mass) [kg m^2]\n";
+  for (int i = 0; i < 3; ++i) out << "              " << vec3(inv.inertia_center.row(i).transpose()) << "\n";
+  out << "nq            " << sid.nq() << " (" << sid.refmod.n_low << " low + " << sid.refmod.n_high() << " high), "
+      << sid.refmod.reduction_method;
+  if (!sid.refmod.interface_description.empty()) out << ", interface: " << sid.refmod.interface_description;
+  out << "\nfrequencies   [Hz]";
+  for (Eigen::Index i = 0; i < sid.nq(); ++i) out << (i % 6 == 0 ? "\n              " : "  ") << fmt(sid.refmod.frequencies_hz(i));
+  out << "\ndamping       kappa = " << fmt(sid.damping.kappa) << ", band " << fmt(sid.damping.f1_hz) << "-"
+      << fmt(sid.damping.f2_hz) << " Hz: alpha1 = " << fmt(sid.damping.alpha1) << " 1/s, alpha2 = "
+      << fmt(sid.damping.alpha2) << " s\n";
+  for (const Node& n : sid.nodes) out << "node          " << n.name << " at " << vec3(n.origin.M0.col(0)) << " m\n";
+  for (const ContactSurface& c : sid.contact_surfaces)
+    out << "contact       " << c.name << ": " << c.points() << " Gauss points on side '" << c.side << "', area "
+        << fmt(c.weight.sum()) << " m^2, master patch '" << c.master_patch << "'\n";
+  for (const MasterPatch& m : sid.master_patches) {
+    out << "master patch  " << m.name << ": degrees";
+    for (int d : m.degrees) out << " " << d;
+    out << ", " << m.weights.size() << " control points\n";
+  }
+  for (const StressRecovery& s : sid.stress_recovery)
+    out << "stress        " << s.name << ": " << s.position.rows() << " points, " << s.components.size() << " components\n";
+  if (sid.transfer)
+    out << "transfer      from a coarse model with nq = " << sid.transfer->coarse_to_fine.cols() << "\n";
+  out << "provenance    " << sid.provenance.model_file << " (sha256 " << sid.provenance.model_sha256.substr(0, 12)
+      << "...), isosid " << sid.provenance.program_version << ", " << sid.provenance.created_utc << "\n";
+  for (const auto& [name, s] : sid.provenance.timings_s) out << "  time        " << name << ": " << fmt(s) << " s\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return run_guarded("isosid-info", [&] {
+    CLI::App app{"Shows what a SID file holds: body, mass, centre of mass, inertia, modes, contact data.", "isosid-info"};
+    std::string file;
+    bool as_json = false;
+    app.add_option("file", file, "SID file (.sid.h5)")->required();
+    app.add_flag("--json", as_json, "print JSON instead of text");
+    if (auto status = parse_command_line(app, argc, argv)) return *status;
+    const Sid sid = read_sid(file);
+    if (as_json)
+      std::cout << describe(sid).dump(2) << "\n";
+    else
+      print_text(sid, std::cout);
+    return 0;
+  });
+}

@@ -1,0 +1,85 @@
+// An interrupted or failed SID write leaves nothing at the target path (and keeps an older file).
+#include "isosid/format/sid_io.hpp"
+#include "support/lumped_sid.hpp"
+#include "support/run_program.hpp"
+
+#include <catch2/catch.hpp>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace isosid;
+namespace fs = std::filesystem;
+
+namespace {
+std::size_t files_in(const std::string& dir) {
+  return std::size_t(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
+}
+}  // namespace
+
+TEST_CASE("a write that fails part-way leaves no file and no temporary behind", "[format][atomic]") {
+  const test::ScratchDir dir("atomic");
+  const std::string target = dir.path("body.sid.h5");
+  format::WriteOptions abort_at_contact;
+  abort_at_contact.on_part = [](const std::string& part) {
+    if (part == "contact") throw std::runtime_error("disk full (simulated)");
+  };
+  const format::Sid sid = test::lumped_sid(test::random_lumped_body(10, 4, 2));
+  CHECK_THROWS_WITH(format::write_sid(sid, target, abort_at_contact), "disk full (simulated)");
+  CHECK_FALSE(fs::exists(target));
+  CHECK(files_in(dir.dir()) == 0);
+}
+
+TEST_CASE("a failed rewrite keeps the previous file intact", "[format][atomic]") {
+  const test::ScratchDir dir("atomic-keep");
+  const std::string target = dir.path("body.sid.h5");
+  const format::Sid old_sid = test::lumped_sid(test::random_lumped_body(10, 4, 2));
+  format::write_sid(old_sid, target);
+  format::WriteOptions abort_at_terms;
+  abort_at_terms.on_part = [](const std::string& part) {
+    if (part == "terms") throw std::runtime_error("interrupted");
+  };
+  CHECK_THROWS(format::write_sid(test::lumped_sid(test::random_lumped_body(10, 4, 9)), target, abort_at_terms));
+  const format::Sid back = format::read_sid(target);
+  CHECK(back.Ct.M0 == old_sid.Ct.M0);
+  CHECK(files_in(dir.dir()) == 1);
+}
+
+TEST_CASE("a writer killed mid-write leaves nothing at the target path", "[format][atomic]") {
+  const test::ScratchDir dir("atomic-kill");
+  const std::string target = dir.path("body.sid.h5");
+  const format::Sid sid = test::lumped_sid(test::random_lumped_body(40, 12, 3));
+  int ready[2];
+  REQUIRE(::pipe(ready) == 0);
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    format::WriteOptions stall;
+    stall.on_part = [&](const std::string& part) {
+      if (part == "contact") {  // half the file is written: tell the parent, then wait to be killed
+        const char byte = 1;
+        (void)!::write(ready[1], &byte, 1);
+        ::pause();
+      }
+    };
+    format::write_sid(sid, target, stall);
+    ::_exit(0);
+  }
+  char byte = 0;
+  REQUIRE(::read(ready[0], &byte, 1) == 1);
+  ::kill(child, SIGKILL);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ::close(ready[0]);
+  ::close(ready[1]);
+  CHECK(WIFSIGNALED(status));
+  CHECK_FALSE(fs::exists(target));
+}
+
+TEST_CASE("writing into a missing folder is a one-line input error", "[format][atomic]") {
+  const format::Sid sid = test::lumped_sid(test::random_lumped_body(6, 2, 2));
+  CHECK_THROWS_WITH(format::write_sid(sid, "/nonexistent-isosid-folder/x.sid.h5"),
+                    Catch::Matchers::Contains("output folder") && Catch::Matchers::Contains("does not exist"));
+}

@@ -1,0 +1,97 @@
+// isosid-diff's comparison: the same physics in a sign-flipped or rotated mode basis is equal;
+// a perturbed frequency, inertia or mode shape is not. The rotated SIDs are recomputed from
+// scratch (lumped body integrals), so the alignment rules are checked independently.
+#include "isosid/format/sid_compare.hpp"
+#include "support/lumped_sid.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace isosid;
+using Eigen::MatrixXd;
+
+namespace {
+const double kRtol = 1e-8;  // the recomputed SIDs differ from the originals only by round-off (~1e-14)
+
+std::string listing(const format::Comparison& c) {
+  std::string s;
+  for (const auto& d : c.differences) s += d.what + ": " + d.detail + "\n";
+  return s;
+}
+}  // namespace
+
+TEST_CASE("identical SIDs compare equal", "[format][diff]") {
+  const auto body = test::random_lumped_body(12, 5, 21);
+  const auto c = format::compare_sids(test::lumped_sid(body), test::lumped_sid(body), kRtol);
+  INFO(listing(c));
+  CHECK(c.equal());
+}
+
+TEST_CASE("a sign-flipped mode is the same body", "[format][diff]") {
+  const auto body = test::random_lumped_body(12, 5, 21);
+  MatrixXd Q = MatrixXd::Identity(5, 5);
+  Q(3, 3) = -1;
+  Q(0, 0) = -1;
+  const auto c = format::compare_sids(test::lumped_sid(body), test::lumped_sid(test::rotate_modes(body, Q)), kRtol);
+  INFO(listing(c));
+  CHECK(c.equal());
+}
+
+TEST_CASE("a rotated pair of repeated-frequency modes is the same body", "[format][diff]") {
+  const auto body = test::random_lumped_body(12, 5, 21);  // modes 1 and 2 share a frequency
+  MatrixXd Q = MatrixXd::Identity(5, 5);
+  const double t = 0.7;
+  Q.block(1, 1, 2, 2) << std::cos(t), -std::sin(t), std::sin(t), std::cos(t);
+  Q(4, 4) = -1;
+  const auto c = format::compare_sids(test::lumped_sid(body), test::lumped_sid(test::rotate_modes(body, Q)), kRtol);
+  INFO(listing(c));
+  CHECK(c.equal());
+  REQUIRE(c.clusters.size() == 4);
+  CHECK(c.clusters[1].size == 2);
+  CHECK(c.clusters[1].max_sine < 1e-10);
+}
+
+TEST_CASE("a rotation that mixes modes of different frequency is a different body", "[format][diff]") {
+  const auto body = test::random_lumped_body(12, 5, 21);
+  MatrixXd Q = MatrixXd::Identity(5, 5);
+  const double t = 0.3;
+  Q.block(3, 3, 2, 2) << std::cos(t), -std::sin(t), std::sin(t), std::cos(t);  // modes 3, 4: 4 and 5 kHz
+  const auto c = format::compare_sids(test::lumped_sid(body), test::lumped_sid(test::rotate_modes(body, Q)), kRtol);
+  CHECK_FALSE(c.equal());
+}
+
+TEST_CASE("a perturbed frequency is reported", "[format][diff]") {
+  const auto body = test::random_lumped_body(12, 5, 21);
+  auto a = test::lumped_sid(body), b = a;
+  b.refmod.frequencies_hz(3) *= 1 + 1e-5;
+  const auto c = format::compare_sids(a, b, 1e-6);
+  REQUIRE_FALSE(c.equal());
+  CHECK(c.differences[0].what == "frequency of mode 3");
+}
+
+TEST_CASE("a perturbed inertia is reported", "[format][diff]") {
+  const auto body = test::random_lumped_body(12, 5, 21);
+  auto a = test::lumped_sid(body), b = a;
+  b.J.M0(1, 1) *= 1 + 1e-4;
+  const auto c = format::compare_sids(a, b, 1e-6);
+  REQUIRE_FALSE(c.equal());
+  bool inertia = false;
+  for (const auto& d : c.differences) inertia = inertia || d.what == "inertia tensor";
+  CHECK(inertia);
+}
+
+TEST_CASE("a perturbed contact mode shape is reported as a subspace difference", "[format][diff]") {
+  const auto body = test::random_lumped_body(12, 5, 21);
+  auto a = test::lumped_sid(body), b = a;
+  b.contact_surfaces[0].Psi(2, 0) += 1e-3 * b.contact_surfaces[0].Psi.norm();
+  const auto c = format::compare_sids(a, b, 1e-6);
+  INFO(listing(c));
+  CHECK_FALSE(c.equal());
+}
+
+TEST_CASE("SIDs of different structure are reported without comparing terms", "[format][diff]") {
+  const auto a = test::lumped_sid(test::random_lumped_body(12, 5, 21));
+  const auto b = test::lumped_sid(test::random_lumped_body(12, 4, 21));
+  const auto c = format::compare_sids(a, b, 1e-6);
+  REQUIRE_FALSE(c.equal());
+  CHECK(c.notes.back().find("structure differs") != std::string::npos);
+}

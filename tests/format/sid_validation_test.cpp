@@ -1,0 +1,129 @@
+// The reader refuses damaged or inconsistent SID files with an InputError that names the
+// file, the dataset and the problem; it never crashes.
+#include "isosid/format/error.hpp"
+#include "isosid/format/sid_io.hpp"
+#include "support/hdf5_tamper.hpp"
+#include "support/lumped_sid.hpp"
+#include "support/run_program.hpp"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+
+using namespace isosid;
+
+namespace {
+/// Writes a valid SID, applies `damage`, and returns the reader's message (empty if it accepted).
+template <class Damage>
+std::string message_after(const test::ScratchDir& dir, Damage damage) {
+  const std::string file = dir.path("damaged.sid.h5");
+  format::write_sid(test::lumped_sid(test::random_lumped_body(10, 4, 11)), file);
+  damage(file);
+  try {
+    format::read_sid(file);
+  } catch (const format::InputError& e) {
+    CHECK(std::string(e.what()).find('\n') == std::string::npos);  // one line
+    CHECK(e.file() == file);
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST_CASE("reader refuses each kind of bad SID with a message naming the dataset", "[format][validation]") {
+  const test::ScratchDir dir("validation");
+  using Catch::Matchers::Contains;
+
+  SECTION("wrong schema version") {
+    const auto m = message_after(dir, [](const std::string& f) { test::replace_integer(f, "/isosid/version", 99); });
+    CHECK_THAT(m, Contains("/isosid/version") && Contains("unsupported schema version 99"));
+  }
+  SECTION("missing version") {
+    const auto m = message_after(dir, [](const std::string& f) { test::remove_object(f, "/isosid/version"); });
+    CHECK_THAT(m, Contains("/isosid/version") && Contains("missing"));
+  }
+  SECTION("missing mandatory dataset") {
+    const auto m = message_after(dir, [](const std::string& f) { test::remove_object(f, "/terms/Me/M0"); });
+    CHECK_THAT(m, Contains("/terms/Me/M0") && Contains("missing"));
+  }
+  SECTION("wrong shape") {
+    const auto m = message_after(dir, [](const std::string& f) { test::replace_dataset(f, "/terms/Ke/M0", Eigen::MatrixXd::Identity(3, 3)); });
+    CHECK_THAT(m, Contains("/terms/Ke/M0") && Contains("wrong shape (3, 3), expected (4, 4)"));
+  }
+  SECTION("non-finite value") {
+    Eigen::MatrixXd bad = Eigen::MatrixXd::Zero(4, 3);
+    bad(2, 1) = std::numeric_limits<double>::quiet_NaN();
+    const auto m = message_after(dir, [&](const std::string& f) { test::replace_dataset(f, "/terms/Ct/M0", bad); });
+    CHECK_THAT(m, Contains("/terms/Ct/M0") && Contains("non-finite"));
+  }
+  SECTION("non-symmetric mass matrix") {
+    Eigen::MatrixXd me = Eigen::MatrixXd::Identity(4, 4);
+    me(0, 3) = 0.5;
+    const auto m = message_after(dir, [&](const std::string& f) { test::replace_dataset(f, "/terms/Me/M0", me); });
+    CHECK_THAT(m, Contains("/terms/Me/M0") && Contains("not symmetric"));
+  }
+  SECTION("non-symmetric stiffness matrix") {
+    Eigen::MatrixXd ke = Eigen::MatrixXd::Identity(4, 4) * 1e8;
+    ke(1, 2) = 3e7;
+    const auto m = message_after(dir, [&](const std::string& f) { test::replace_dataset(f, "/terms/Ke/M0", ke); });
+    CHECK_THAT(m, Contains("/terms/Ke/M0") && Contains("not symmetric"));
+  }
+  SECTION("non-positive mass") {
+    const auto m = message_after(dir, [](const std::string& f) { test::replace_scalar(f, "/refmod/mass", 0.0); });
+    CHECK_THAT(m, Contains("/refmod/mass") && Contains("must be positive"));
+  }
+  SECTION("not an HDF5 file") {
+    const std::string file = dir.path("text.sid.h5");
+    std::ofstream(file) << "this is not HDF5\n";
+    CHECK_THROWS_WITH(format::read_sid(file), Contains(file) && Contains("not an HDF5 file"));
+  }
+  SECTION("truncated file") {
+    const std::string file = dir.path("whole.sid.h5"), cut = dir.path("cut.sid.h5");
+    format::write_sid(test::lumped_sid(test::random_lumped_body(10, 4, 11)), file);
+    for (double fraction : {0.1, 0.5, 0.9, 0.999}) {
+      test::truncate_copy(file, cut, fraction);
+      CHECK_THROWS_AS(format::read_sid(cut), format::InputError);
+    }
+  }
+  SECTION("missing file") {
+    CHECK_THROWS_WITH(format::read_sid(dir.path("nope.sid.h5")), Contains("file not found"));
+  }
+}
+
+TEST_CASE("non-positive mass and other physics checks are refused before writing", "[format][validation]") {
+  const test::ScratchDir dir("physics");
+  using Catch::Matchers::Contains;
+  format::Sid s = test::lumped_sid(test::random_lumped_body(10, 4, 5));
+  const std::string file = dir.path("x.sid.h5");
+
+  SECTION("mass") {
+    s.refmod.mass = -1;
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/refmod/mass") && Contains("must be positive"));
+  }
+  SECTION("NaN in a node") {
+    s.nodes[0].phi(1, 1) = std::nan("");
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/nodes/tip/phi") && Contains("non-finite"));
+  }
+  SECTION("contact normal not unit") {
+    s.contact_surfaces[0].normal(0, 0) += 0.5;
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face/normal") && Contains("unit"));
+  }
+  SECTION("M1 with the wrong number of slices") {
+    s.J.M1.pop_back();
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/terms/J/M1") && Contains("expected nq = 4"));
+  }
+  SECTION("Poisson ratio") {
+    s.material.poisson_ratio = 0.5;
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/body/poisson_ratio"));
+  }
+  CHECK_FALSE(std::filesystem::exists(file));
+}
+
+TEST_CASE("a dataset of the wrong rank is refused with its shape", "[format][validation]") {
+  const test::ScratchDir dir("rank");
+  const std::string file = dir.path("m.sid.h5");
+  format::write_sid(test::lumped_sid(test::random_lumped_body(10, 4, 5)), file);
+  test::replace_dataset(file, "/refmod/mass", Eigen::MatrixXd::Constant(1, 1, 2.0));
+  CHECK_THROWS_WITH(format::read_sid(file), Catch::Matchers::Contains("/refmod/mass") &&
+                                                Catch::Matchers::Contains("expected a scalar, found shape (1, 1)"));
+}

@@ -1,0 +1,71 @@
+// isosid-info and isosid-diff as a user runs them: output, JSON keys and exit statuses.
+#include "isosid/format/sid_io.hpp"
+#include "support/hdf5_tamper.hpp"
+#include "support/lumped_sid.hpp"
+#include "support/run_program.hpp"
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+using namespace isosid;
+using Catch::Matchers::Contains;
+
+TEST_CASE("isosid-info --json reports mass, centre of mass, inertia, nq and frequencies", "[format][tools]") {
+  const test::ScratchDir dir("info");
+  const auto sid = test::lumped_sid(test::random_lumped_body(12, 5, 4));
+  format::write_sid(sid, dir.path("a.sid.h5"));
+  const auto r = test::run_program(std::string(ISOSID_INFO_EXE) + " --json " + dir.path("a.sid.h5"));
+  REQUIRE(r.exit_status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["mass"].get<double>() == Approx(sid.refmod.mass).epsilon(1e-15));
+  CHECK(j["center_of_mass"].size() == 3);
+  CHECK(j["center_of_mass"][1].get<double>() == Approx(sid.mdCM.M0(1, 0) / sid.refmod.mass).epsilon(1e-12));
+  CHECK(j["inertia"][2][2].get<double>() == Approx(sid.J.M0(2, 2)).epsilon(1e-15));
+  CHECK(j["nq"] == 5);
+  CHECK(j["frequencies_hz"].size() == 5);
+  CHECK(j["contact_surfaces"][0]["points"] == 4);
+  CHECK(j["nodes"][0]["name"] == "tip");
+  CHECK(j["provenance"]["timings_s"]["eigen"].get<double>() == 1.25);
+
+  const auto text = test::run_program(std::string(ISOSID_INFO_EXE) + " " + dir.path("a.sid.h5"));
+  CHECK(text.exit_status == 0);
+  CHECK_THAT(text.out, Contains("mass") && Contains("contact       face: 4 Gauss points"));
+}
+
+TEST_CASE("the tools exit 2 with one line on bad input", "[format][tools]") {
+  const test::ScratchDir dir("bad");
+  std::ofstream(dir.path("junk.sid.h5")) << "junk";
+  for (const std::string& cmd : {std::string(ISOSID_INFO_EXE) + " " + dir.path("junk.sid.h5"),
+                                 std::string(ISOSID_INFO_EXE) + " " + dir.path("missing.sid.h5"),
+                                 std::string(ISOSID_INFO_EXE) + " --no-such-flag x",
+                                 std::string(ISOSID_DIFF_EXE) + " " + dir.path("junk.sid.h5") + " " + dir.path("junk.sid.h5"),
+                                 std::string(ISOSID_DIFF_EXE) + " a --rtol -1"}) {
+    INFO(cmd);
+    const auto r = test::run_program(cmd);
+    CHECK(r.exit_status == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+}
+
+TEST_CASE("isosid-diff exits 0 for the same body in another basis and 1 for a different body", "[format][tools]") {
+  const test::ScratchDir dir("diff");
+  const auto body = test::random_lumped_body(12, 5, 8);
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(5, 5);
+  Q(2, 2) = -1;
+  format::write_sid(test::lumped_sid(body), dir.path("a.sid.h5"));
+  format::write_sid(test::lumped_sid(test::rotate_modes(body, Q)), dir.path("b.sid.h5"));
+  auto perturbed = test::lumped_sid(body);
+  perturbed.refmod.frequencies_hz(4) *= 1.001;
+  format::write_sid(perturbed, dir.path("c.sid.h5"));
+
+  const std::string diff = ISOSID_DIFF_EXE;
+  const auto same = test::run_program(diff + " " + dir.path("a.sid.h5") + " " + dir.path("b.sid.h5"));
+  CHECK(same.exit_status == 0);
+  CHECK_THAT(same.out, Contains("equal"));
+  const auto differ = test::run_program(diff + " " + dir.path("a.sid.h5") + " " + dir.path("c.sid.h5"));
+  CHECK(differ.exit_status == 1);
+  CHECK_THAT(differ.out, Contains("frequency of mode 4"));
+  const auto loose = test::run_program(diff + " --rtol 0.01 " + dir.path("a.sid.h5") + " " + dir.path("c.sid.h5"));
+  CHECK(loose.exit_status == 0);
+}

@@ -1,0 +1,19 @@
+// Test support: damage a valid SID file in specific ways to exercise the reader's checks.
+#pragma once
+#include <Eigen/Dense>
+#include <string>
+
+namespace isosid::test {
+
+/// Replaces a dataset by a matrix of doubles (any shape).
+void replace_dataset(const std::string& file, const std::string& dataset, const Eigen::MatrixXd& value);
+/// Replaces a dataset by a scalar double.
+void replace_scalar(const std::string& file, const std::string& dataset, double value);
+/// Replaces a dataset by a scalar 64-bit integer.
+void replace_integer(const std::string& file, const std::string& dataset, long long value);
+/// Removes a dataset or group.
+void remove_object(const std::string& file, const std::string& object);
+/// Copies the first `fraction` of the file's bytes to `target`.
+void truncate_copy(const std::string& file, const std::string& target, double fraction);
+
+}  // namespace isosid::test
