@@ -1,0 +1,56 @@
+// Strict reading of TOML input files (models and scenes): every key must be known, every
+// number finite and of the right sign, and every problem is an InputError naming the file
+// and the dotted field, e.g. "sphere.model.toml: material.poisson_ratio: must be < 0.5".
+#pragma once
+#include "isosid/format/error.hpp"
+
+#include <Eigen/Dense>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <toml++/toml.h>
+#include <vector>
+
+namespace isosid::format {
+
+/// Parses a TOML file; syntax errors become InputError with line and column.
+toml::table parse_toml_file(const std::string& path);
+
+class TomlView {
+public:
+  TomlView(const toml::table& table, std::string file, std::string path = "")
+      : table_(&table), file_(std::move(file)), path_(std::move(path)) {}
+
+  /// Refuses keys outside `allowed`.
+  void allow_only(std::initializer_list<const char*> allowed) const;
+  bool has(const std::string& key) const { return table_->contains(key); }
+  std::string field(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  const std::string& file() const { return file_; }
+  [[noreturn]] void fail(const std::string& key, const std::string& problem) const { throw InputError(file_, field(key), problem); }
+
+  TomlView table(const std::string& key) const;            ///< required sub-table
+  std::optional<TomlView> optional_table(const std::string& key) const;
+  std::vector<TomlView> tables(const std::string& key) const;  ///< array of tables ([[key]]), may be empty
+
+  double number(const std::string& key) const;
+  double number(const std::string& key, double fallback) const;
+  double positive(const std::string& key) const;
+  double positive(const std::string& key, double fallback) const;
+  long long integer(const std::string& key) const;
+  long long integer(const std::string& key, long long fallback) const;
+  std::string string(const std::string& key) const;
+  std::string string(const std::string& key, const std::string& fallback) const;
+  bool boolean(const std::string& key, bool fallback) const;
+  std::vector<double> numbers(const std::string& key) const;                 ///< array of numbers
+  std::vector<std::vector<double>> number_rows(const std::string& key) const;  ///< array of arrays
+  std::vector<long long> integers(const std::string& key) const;
+  std::vector<std::string> strings(const std::string& key) const;
+
+private:
+  const toml::node& node(const std::string& key) const;
+  double as_number(const toml::node& n, const std::string& where) const;
+  const toml::table* table_;
+  std::string file_, path_;
+};
+
+}  // namespace isosid::format

@@ -1,0 +1,39 @@
+// The discrete space of an isogeometric body: elements with their extraction operators.
+// On element e the functions living there are N = C_e B(xi_hat) with B the tensor Bernstein
+// basis on the element; the rational analysis functions are R_i = w_i N_i / W. Uniform,
+// graded and hierarchical (THB) refinement differ only in how C_e is built.
+#pragma once
+#include "geometry/nurbs_patch.hpp"
+
+#include <Eigen/Dense>
+#include <vector>
+
+namespace isosid::prep {
+
+struct Element {
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  ///< parametric box
+  std::vector<int> functions;   ///< global function indices of the functions living on the element
+  Eigen::MatrixXd C;            ///< functions.size() x prod(p+1): Bernstein -> functions
+  int level = 0;                ///< hierarchical level (0 for tensor spaces)
+};
+
+struct AnalysisSpace {
+  std::vector<int> degrees;
+  std::vector<Element> elements;
+  Eigen::MatrixXd control_points;  ///< n_functions x phys_dim: the exact geometry x = sum R_i P_i
+  Eigen::VectorXd weights;         ///< n_functions: W = sum w_i N_i
+  Eigen::Vector3d param_lo = Eigen::Vector3d::Zero(), param_hi = Eigen::Vector3d::Zero();
+
+  int param_dim() const { return int(degrees.size()); }
+  int phys_dim() const { return int(control_points.cols()); }
+  int n_functions() const { return int(weights.size()); }
+  int bernstein_count() const;
+  /// True if the element touches the patch side.
+  bool on_side(const Element& e, PatchSide side) const;
+};
+
+/// Tensor-product space of a NURBS patch: one element per non-empty knot span box, with
+/// extraction operators from collocation at p+1 points per direction.
+AnalysisSpace tensor_space(const NurbsPatch& patch);
+
+}  // namespace isosid::prep

@@ -1,0 +1,33 @@
+// Sparse assembly of consistent mass and stiffness matrices (and boundary loads) on the free
+// DOFs, element by element with the (p+1)^d Gauss rule, in parallel over elements.
+#pragma once
+#include "assemble/analysis_space.hpp"
+#include "assemble/dof_map.hpp"
+#include "assemble/elasticity.hpp"
+
+#include <Eigen/Sparse>
+#include <functional>
+
+namespace isosid::prep {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+struct SystemMatrices {
+  SparseMatrix K, M;  ///< free DOFs x free DOFs
+};
+
+/// `extra_points` adds Gauss points per direction beyond p+1 (rational integrands).
+SystemMatrices assemble_system(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
+                               int extra_points = 0);
+
+/// Scalar consistent mass over all nodes (no constraints): M_s(i,j) = rho int R_i R_j dV.
+/// Every body integral of the SID follows from it (sum = mass, P^T M_s P = int x x^T dm, ...).
+SparseMatrix assemble_scalar_mass(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
+                                  int extra_points = 0);
+
+/// Load vector on the free DOFs of a traction t(x, n) (Pa) applied on a side.
+Eigen::VectorXd assemble_traction(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
+                                  PatchSide side,
+                                  const std::function<Eigen::VectorXd(const Eigen::VectorXd&, const Eigen::VectorXd&)>& t);
+
+}  // namespace isosid::prep

@@ -1,0 +1,67 @@
+// Side quadrature; see boundary_quadrature.hpp.
+#include "assemble/boundary_quadrature.hpp"
+
+#include "assemble/element_evaluator.hpp"
+#include "assemble/gauss_quadrature.hpp"
+
+namespace isosid::prep {
+
+std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Elasticity& elasticity, PatchSide side,
+                                           int points_per_direction) {
+  const int pd = space.param_dim();
+  std::vector<int> tangential;
+  for (int d = 0; d < pd; ++d)
+    if (d != side.direction) tangential.push_back(d);
+  std::vector<QuadratureRule> rules;
+  for (int d : tangential) rules.push_back(gauss_legendre(points_per_direction > 0 ? points_per_direction : space.degrees[std::size_t(d)] + 1));
+
+  const ElementEvaluator evaluator(space);
+  PointValues v;
+  std::vector<BoundaryPoint> out;
+  for (int e = 0; e < int(space.elements.size()); ++e) {
+    const Element& el = space.elements[std::size_t(e)];
+    if (!space.on_side(el, side)) continue;
+    std::vector<int> g(tangential.size(), 0);
+    while (true) {
+      double t[3] = {0, 0, 0};
+      double w = 1;
+      t[side.direction] = side.end;
+      for (std::size_t k = 0; k < tangential.size(); ++k) {
+        t[tangential[k]] = rules[k].points(g[k]);
+        w *= rules[k].weights(g[k]) * (el.hi(tangential[k]) - el.lo(tangential[k]));
+      }
+      evaluator.evaluate(el, t, v);
+      Eigen::VectorXd n;
+      double jac = 0;
+      if (pd == 2) {
+        const Eigen::Vector2d tau = v.J.col(tangential[0]);
+        n = Eigen::Vector2d(tau.y(), -tau.x());
+        jac = tau.norm();
+      } else {
+        const Eigen::Vector3d a = v.J.col(tangential[0]), b = v.J.col(tangential[1]);
+        n = a.cross(b);
+        jac = n.norm();
+      }
+      // outward: against the direction into the body (increasing xi_d at end 0, decreasing at end 1)
+      const double into = v.J.col(side.direction).dot(n);
+      if ((side.end == 0 && into > 0) || (side.end == 1 && into < 0)) n = -n;
+      if (jac > 0) {
+        BoundaryPoint bp;
+        bp.element = e;
+        bp.t = Eigen::Vector3d(t[0], t[1], t[2]);
+        bp.xi = v.xi;
+        bp.x = v.x;
+        bp.normal = n.normalized();
+        bp.weight = w * jac * elasticity.measure(v.x);
+        bp.R = v.R;
+        out.push_back(std::move(bp));
+      }
+      std::size_t k = 0;
+      while (k < g.size() && ++g[k] >= int(rules[k].points.size())) g[k++] = 0;
+      if (k == g.size()) break;
+    }
+  }
+  return out;
+}
+
+}  // namespace isosid::prep

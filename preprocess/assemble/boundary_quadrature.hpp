@@ -1,0 +1,24 @@
+// Gauss points on a side of the body with outward normals and measure-weighted quadrature
+// weights (length x thickness, length x 2 pi r, or area): for tractions and contact surfaces.
+#pragma once
+#include "assemble/analysis_space.hpp"
+#include "assemble/elasticity.hpp"
+
+#include <vector>
+
+namespace isosid::prep {
+
+struct BoundaryPoint {
+  int element = 0;
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();  ///< reference coordinates in the element
+  Eigen::VectorXd xi, x, normal;                ///< patch parameter, position, outward unit normal
+  double weight = 0;                            ///< quadrature weight incl. measure, m^2 (m in planar per thickness)
+  Eigen::VectorXd R;                            ///< functions of the element at the point
+};
+
+/// `points_per_direction` Gauss points in each tangential direction of every element on the
+/// side (p+1 of that direction when 0).
+std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Elasticity& elasticity, PatchSide side,
+                                           int points_per_direction = 0);
+
+}  // namespace isosid::prep

@@ -1,0 +1,62 @@
+// Coincident-point merging and free-DOF numbering; see dof_map.hpp.
+#include "assemble/dof_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace isosid::prep {
+
+DofMap::DofMap(const AnalysisSpace& space, int dim, double tolerance) : dim_(dim) {
+  const Eigen::MatrixXd& P = space.control_points;
+  const int n = int(P.rows());
+  // sort by the first coordinate, then compare points whose first coordinates are close
+  std::vector<int> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return P(a, 0) < P(b, 0); });
+  node_of_function_.assign(std::size_t(n), -1);
+  std::vector<int> representative;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const int f = order[i];
+    if (node_of_function_[std::size_t(f)] >= 0) continue;
+    const int node = int(representative.size());
+    representative.push_back(f);
+    node_of_function_[std::size_t(f)] = node;
+    for (std::size_t j = i + 1; j < order.size() && P(order[j], 0) - P(f, 0) <= tolerance; ++j) {
+      const int g = order[j];
+      if (node_of_function_[std::size_t(g)] < 0 && (P.row(g) - P.row(f)).norm() <= tolerance)
+        node_of_function_[std::size_t(g)] = node;
+    }
+  }
+  // number nodes in the order of their first function, so numbering follows the patch layout
+  std::vector<int> first_function(representative.size(), n);
+  for (int f = 0; f < n; ++f) first_function[std::size_t(node_of_function_[std::size_t(f)])] =
+      std::min(first_function[std::size_t(node_of_function_[std::size_t(f)])], f);
+  std::vector<int> node_order(representative.size());
+  std::iota(node_order.begin(), node_order.end(), 0);
+  std::sort(node_order.begin(), node_order.end(), [&](int a, int b) { return first_function[std::size_t(a)] < first_function[std::size_t(b)]; });
+  std::vector<int> renamed(representative.size());
+  for (std::size_t k = 0; k < node_order.size(); ++k) renamed[std::size_t(node_order[k])] = int(k);
+  node_points_.resize(Eigen::Index(representative.size()), P.cols());
+  for (int f = 0; f < n; ++f) {
+    int& node = node_of_function_[std::size_t(f)];
+    node = renamed[std::size_t(node)];
+    node_points_.row(node) = P.row(f);
+  }
+  fixed_.assign(std::size_t(node_count() * dim_), false);
+  renumber();
+}
+
+void DofMap::fix(int node, int component) {
+  fixed_[std::size_t(node * dim_ + component)] = true;
+  renumber();
+}
+
+void DofMap::renumber() {
+  free_.assign(fixed_.size(), -1);
+  n_free_ = 0;
+  for (std::size_t i = 0; i < fixed_.size(); ++i)
+    if (!fixed_[i]) free_[i] = n_free_++;
+}
+
+}  // namespace isosid::prep

@@ -1,0 +1,39 @@
+// Degrees of freedom of a body: coincident control points (collapsed edges, axes of bodies
+// of revolution, seams) merged into one node, `dim` displacement components per node, and
+// constrained components eliminated from the free numbering.
+#pragma once
+#include "assemble/analysis_space.hpp"
+
+#include <vector>
+
+namespace isosid::prep {
+
+class DofMap {
+public:
+  /// Merges functions whose control points lie within `tolerance` of each other.
+  DofMap(const AnalysisSpace& space, int dim, double tolerance);
+
+  int dim() const { return dim_; }
+  int node_count() const { return int(node_points_.rows()); }
+  int node_of(int function) const { return node_of_function_[std::size_t(function)]; }
+  const Eigen::MatrixXd& node_points() const { return node_points_; }
+
+  /// Fixes component a of a node (clamped or symmetry conditions, the radial DOF on an axis).
+  void fix(int node, int component);
+  bool is_fixed(int node, int component) const { return fixed_[std::size_t(node * dim_ + component)]; }
+  /// Free index of (node, component), or -1 if fixed. Valid after any fix().
+  int free_index(int node, int component) const { return free_[std::size_t(node * dim_ + component)]; }
+  int free_count() const { return n_free_; }
+  int total_dofs() const { return node_count() * dim_; }
+
+private:
+  void renumber();
+  int dim_;
+  std::vector<int> node_of_function_;
+  Eigen::MatrixXd node_points_;
+  std::vector<bool> fixed_;
+  std::vector<int> free_;
+  int n_free_ = 0;
+};
+
+}  // namespace isosid::prep

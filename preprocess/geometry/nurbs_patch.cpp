@@ -1,0 +1,129 @@
+// NURBS patch evaluation and sides; see nurbs_patch.hpp.
+#include "geometry/nurbs_patch.hpp"
+
+#include "isosid/format/error.hpp"
+
+#include <cmath>
+
+namespace isosid::prep {
+
+namespace {
+const char* kDirectionNames[3] = {"xi", "eta", "zeta"};
+}
+
+std::string side_name(PatchSide side) {
+  return std::string(kDirectionNames[side.direction]) + std::to_string(side.end);
+}
+
+std::optional<PatchSide> side_from_name(const std::string& name, int param_dim) {
+  for (int d = 0; d < param_dim; ++d)
+    for (int e = 0; e < 2; ++e)
+      if (name == side_name({d, e})) return PatchSide{d, e};
+  return std::nullopt;
+}
+
+std::vector<int> NurbsPatch::counts() const {
+  std::vector<int> n;
+  for (std::size_t d = 0; d < degrees.size(); ++d) n.push_back(basis_count(knots[d], degrees[d]));
+  return n;
+}
+
+int flat_index(const std::vector<int>& counts, const std::vector<int>& ijk) {
+  int index = 0, stride = 1;
+  for (std::size_t d = 0; d < counts.size(); ++d) {
+    index += ijk[d] * stride;
+    stride *= counts[d];
+  }
+  return index;
+}
+
+void NurbsPatch::evaluate(const Eigen::VectorXd& xi, Eigen::VectorXd& x, Eigen::MatrixXd* dx_dxi) const {
+  const int pd = param_dim(), cols = phys_dim();
+  const std::vector<int> n = counts();
+  std::vector<Eigen::MatrixXd> ders(static_cast<std::size_t>(pd));
+  std::vector<int> spans(static_cast<std::size_t>(pd));
+  for (int d = 0; d < pd; ++d) {
+    spans[std::size_t(d)] = find_span(knots[std::size_t(d)], degrees[std::size_t(d)], xi(d));
+    ders[std::size_t(d)] = basis_derivatives(knots[std::size_t(d)], degrees[std::size_t(d)], spans[std::size_t(d)], xi(d), 1);
+  }
+  // homogeneous sums: A = sum N w P, W = sum N w, and their first derivatives
+  Eigen::VectorXd A = Eigen::VectorXd::Zero(cols);
+  Eigen::MatrixXd dA = Eigen::MatrixXd::Zero(cols, pd);
+  double W = 0;
+  Eigen::VectorXd dW = Eigen::VectorXd::Zero(pd);
+  std::vector<int> local(static_cast<std::size_t>(pd), 0), ijk(static_cast<std::size_t>(pd));
+  while (true) {
+    double value = 1;
+    Eigen::VectorXd grad = Eigen::VectorXd::Ones(pd);
+    for (int d = 0; d < pd; ++d) {
+      const auto dd = std::size_t(d);
+      ijk[dd] = spans[dd] - degrees[dd] + local[dd];
+      value *= ders[dd](0, local[dd]);
+      for (int e = 0; e < pd; ++e) grad(e) *= ders[dd](e == d ? 1 : 0, local[dd]);
+    }
+    const int i = flat_index(n, ijk);
+    const double w = weights(i);
+    A += value * w * points.row(i).transpose();
+    dA += w * points.row(i).transpose() * grad.transpose();
+    W += value * w;
+    dW += w * grad;
+    int d = 0;
+    while (d < pd && ++local[std::size_t(d)] > degrees[std::size_t(d)]) local[std::size_t(d++)] = 0;
+    if (d == pd) break;
+  }
+  x = A / W;
+  if (dx_dxi) *dx_dxi = (dA - x * dW.transpose()) / W;
+}
+
+Eigen::VectorXd NurbsPatch::point(const Eigen::VectorXd& xi) const {
+  Eigen::VectorXd x;
+  evaluate(xi, x);
+  return x;
+}
+
+std::optional<PatchSide> NurbsPatch::side(const std::string& name) const {
+  if (auto s = side_from_name(name, param_dim())) return s;
+  if (auto it = named_sides.find(name); it != named_sides.end()) return it->second;
+  return std::nullopt;
+}
+
+std::vector<int> NurbsPatch::side_points(PatchSide side) const {
+  const std::vector<int> n = counts();
+  std::vector<int> out;
+  std::vector<int> ijk(n.size(), 0);
+  for (int i = 0; i < count(); ++i) {
+    int rest = i;
+    for (std::size_t d = 0; d < n.size(); ++d) {
+      ijk[d] = rest % n[d];
+      rest /= n[d];
+    }
+    if (ijk[std::size_t(side.direction)] == (side.end == 0 ? 0 : n[std::size_t(side.direction)] - 1)) out.push_back(i);
+  }
+  return out;
+}
+
+void validate_patch(const NurbsPatch& patch, const std::string& file, const std::string& field) {
+  using format::InputError;
+  const int pd = patch.param_dim();
+  if (pd < 1 || pd > 3) throw InputError(file, field + ".degrees", "needs 1 to 3 parametric directions");
+  if (int(patch.knots.size()) != pd) throw InputError(file, field + ".knots", "one knot vector per degree required");
+  int expected = 1;
+  for (int d = 0; d < pd; ++d) {
+    validate_knot_vector(patch.knots[std::size_t(d)], patch.degrees[std::size_t(d)], file,
+                         field + ".knots[" + std::to_string(d) + "]");
+    expected *= basis_count(patch.knots[std::size_t(d)], patch.degrees[std::size_t(d)]);
+  }
+  if (patch.points.rows() != expected)
+    throw InputError(file, field + ".control_points",
+                     std::to_string(patch.points.rows()) + " control points, the knot vectors need " + std::to_string(expected));
+  if (patch.weights.size() != expected)
+    throw InputError(file, field + ".weights", std::to_string(patch.weights.size()) + " weights, expected " + std::to_string(expected));
+  for (int i = 0; i < expected; ++i) {
+    if (!std::isfinite(patch.weights(i)) || patch.weights(i) <= 0)
+      throw InputError(file, field + ".weights", "weight " + std::to_string(i) + " must be positive and finite");
+    if (!patch.points.row(i).allFinite())
+      throw InputError(file, field + ".control_points", "non-finite coordinate in point " + std::to_string(i));
+  }
+}
+
+}  // namespace isosid::prep

@@ -1,0 +1,57 @@
+// A single NURBS patch (curve, surface or volume) with exact rational evaluation, and its
+// boundary sides. Control points are stored with the first parametric direction fastest.
+#pragma once
+#include "geometry/bspline_basis.hpp"
+
+#include <Eigen/Dense>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace isosid::prep {
+
+/// A boundary side: the face where parameter `direction` is at its lower (end 0) or upper (end 1) bound.
+struct PatchSide {
+  int direction = 0;
+  int end = 0;
+  bool operator==(const PatchSide&) const = default;
+};
+
+/// Canonical side names: xi0, xi1, eta0, eta1, zeta0, zeta1.
+std::string side_name(PatchSide side);
+std::optional<PatchSide> side_from_name(const std::string& name, int param_dim);
+
+struct NurbsPatch {
+  std::vector<int> degrees;            ///< one per parametric direction
+  std::vector<KnotVector> knots;       ///< one open knot vector per direction
+  Eigen::MatrixXd points;              ///< ncp x ncols Cartesian control points (extra columns: fields)
+  Eigen::VectorXd weights;             ///< ncp positive weights
+  std::map<std::string, PatchSide> named_sides;  ///< primitive-specific aliases, e.g. "axis" -> xi0
+
+  int param_dim() const { return int(degrees.size()); }
+  int phys_dim() const { return int(points.cols()); }
+  std::vector<int> counts() const;     ///< control points per direction
+  int count() const { return int(weights.size()); }
+
+  /// Position and Jacobian (phys_dim x param_dim) at parameter xi.
+  void evaluate(const Eigen::VectorXd& xi, Eigen::VectorXd& x, Eigen::MatrixXd* dx_dxi = nullptr) const;
+  Eigen::VectorXd point(const Eigen::VectorXd& xi) const;
+
+  /// Parameter interval [lo, hi] of direction d.
+  double lower(int d) const { return knots[std::size_t(d)](0); }
+  double upper(int d) const { return knots[std::size_t(d)](knots[std::size_t(d)].size() - 1); }
+
+  /// Resolves a canonical or primitive-specific side name.
+  std::optional<PatchSide> side(const std::string& name) const;
+  /// Flat indices of the control points on a side.
+  std::vector<int> side_points(PatchSide side) const;
+};
+
+/// Flat index of the multi-index `ijk` (first direction fastest).
+int flat_index(const std::vector<int>& counts, const std::vector<int>& ijk);
+
+/// Checks degrees, knots, weights and control points; throws InputError naming `field`.
+void validate_patch(const NurbsPatch& patch, const std::string& file, const std::string& field);
+
+}  // namespace isosid::prep

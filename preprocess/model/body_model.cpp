@@ -1,0 +1,58 @@
+// Building a refined, constrained body; see body_model.hpp.
+#include "model/body_model.hpp"
+
+#include "assemble/boundary_quadrature.hpp"
+#include "refine/patch_refinement.hpp"
+
+#include <algorithm>
+#include <set>
+
+namespace isosid::prep {
+
+NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& r) {
+  NurbsPatch p = coarse;
+  for (std::size_t d = 0; d < r.degrees.size(); ++d) elevate_degree(p, int(d), r.degrees[d]);
+  for (std::size_t d = 0; d < r.subdivisions.size(); ++d) subdivide_uniformly(p, int(d), r.subdivisions[d]);
+  // all graded requests are sized on the geometry before grading, then inserted together
+  std::vector<std::vector<double>> knots(std::size_t(p.param_dim()));
+  for (const GradingRequest& g : r.graded) {
+    const auto k = graded_knots(p, g);
+    knots[std::size_t(g.direction)].insert(knots[std::size_t(g.direction)].end(), k.begin(), k.end());
+  }
+  for (std::size_t d = 0; d < knots.size(); ++d) {
+    auto& k = knots[d];
+    std::sort(k.begin(), k.end());
+    k.erase(std::unique(k.begin(), k.end(), [](double a, double b) { return std::abs(a - b) < 1e-13; }), k.end());
+    insert_knots(p, int(d), k);
+  }
+  return p;
+}
+
+std::vector<int> side_nodes(const BodyModel& body, PatchSide side) {
+  std::set<int> nodes;
+  for (const BoundaryPoint& bp : boundary_points(body.space, body.elasticity, side)) {
+    const Element& e = body.space.elements[std::size_t(bp.element)];
+    for (std::size_t k = 0; k < e.functions.size(); ++k)
+      if (std::abs(bp.R(Eigen::Index(k))) > 1e-12) nodes.insert(body.dofs.node_of(e.functions[k]));
+  }
+  return {nodes.begin(), nodes.end()};
+}
+
+BodyModel build_body(const ModelSpec& spec) {
+  NurbsPatch refined = refine_patch(spec.patch, spec.refinement);
+  AnalysisSpace space = tensor_space(refined);
+  const double size = (refined.points.colwise().maxCoeff() - refined.points.colwise().minCoeff()).norm();
+  const int dim = format::spatial_dim(spec.analysis);
+  DofMap dofs(space, dim, 1e-10 * size);
+  BodyModel body{spec, std::move(refined), std::move(space), Elasticity(spec.analysis, spec.material, spec.thickness),
+                 std::move(dofs)};
+  if (spec.analysis == format::AnalysisType::Axisymmetric)  // radial displacement vanishes on the axis
+    for (int n = 0; n < body.dofs.node_count(); ++n)
+      if (std::abs(body.dofs.node_points()(n, 0)) <= 1e-10 * size) body.dofs.fix(n, 0);
+  for (const FixedComponents& f : spec.fixed)
+    for (int node : side_nodes(body, *body.refined.side(f.side)))
+      for (int a : f.components) body.dofs.fix(node, a);
+  return body;
+}
+
+}  // namespace isosid::prep

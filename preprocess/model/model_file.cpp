@@ -1,0 +1,204 @@
+// Model file parsing and validation; see model_file.hpp.
+#include "model/model_file.hpp"
+
+#include "geometry/primitives.hpp"
+#include "isosid/format/toml_fields.hpp"
+
+namespace isosid::prep {
+namespace {
+
+using format::TomlView;
+
+const char* kDirections[3] = {"xi", "eta", "zeta"};
+const char* kComponents[3] = {"x", "y", "z"};
+
+int direction_index(const TomlView& t, const std::string& key, int param_dim) {
+  const std::string name = t.string(key);
+  for (int d = 0; d < param_dim; ++d)
+    if (name == kDirections[d]) return d;
+  t.fail(key, "unknown direction '" + name + "' (use xi, eta" + (param_dim == 3 ? ", zeta)" : ")"));
+}
+
+NurbsPatch read_explicit_patch(const TomlView& g) {
+  NurbsPatch p;
+  for (long long d : g.integers("degrees")) p.degrees.push_back(int(d));
+  for (const auto& k : g.number_rows("knots")) p.knots.push_back(Eigen::Map<const Eigen::VectorXd>(k.data(), Eigen::Index(k.size())));
+  const auto cps = g.number_rows("control_points");
+  const std::vector<double> w = g.numbers("weights");
+  if (cps.empty()) g.fail("control_points", "no control points");
+  p.points.resize(Eigen::Index(cps.size()), Eigen::Index(cps[0].size()));
+  for (std::size_t i = 0; i < cps.size(); ++i) {
+    if (cps[i].size() != cps[0].size()) g.fail("control_points", "rows of different length at " + std::to_string(i));
+    for (std::size_t j = 0; j < cps[i].size(); ++j) p.points(Eigen::Index(i), Eigen::Index(j)) = cps[i][j];
+  }
+  p.weights = Eigen::Map<const Eigen::VectorXd>(w.data(), Eigen::Index(w.size()));
+  if (p.degrees.empty()) g.fail("degrees", "needs 1 to 3 entries");
+  if (p.knots.size() != p.degrees.size()) g.fail("knots", "one knot vector per degree required");
+  validate_patch(p, g.file(), g.field("patch"));
+  return p;
+}
+
+NurbsPatch read_geometry(const TomlView& g, format::AnalysisType analysis) {
+  const std::string primitive = g.string("primitive");
+  NurbsPatch p;
+  if (primitive == "half_disk") {
+    g.allow_only({"primitive", "radius"});
+    p = primitives::half_disk(g.positive("radius"));
+  } else if (primitive == "rod_with_spherical_end") {
+    g.allow_only({"primitive", "radius", "length"});
+    const double r = g.positive("radius"), l = g.positive("length");
+    if (l <= r) g.fail("length", "must exceed the radius");
+    p = primitives::rod_with_spherical_end(r, l);
+  } else if (primitive == "disk") {
+    g.allow_only({"primitive", "radius"});
+    p = primitives::disk(g.positive("radius"));
+  } else if (primitive == "quarter_annulus") {
+    g.allow_only({"primitive", "inner_radius", "outer_radius"});
+    const double ri = g.positive("inner_radius"), ro = g.positive("outer_radius");
+    if (ro <= ri) g.fail("outer_radius", "must exceed inner_radius");
+    p = primitives::quarter_annulus(ri, ro);
+  } else if (primitive == "rectangle") {
+    g.allow_only({"primitive", "size", "origin"});
+    const auto s = g.numbers("size");
+    if (s.size() != 2 || s[0] <= 0 || s[1] <= 0) g.fail("size", "needs two positive lengths [lx, ly]");
+    const auto o = g.has("origin") ? g.numbers("origin") : std::vector<double>{0, 0};
+    if (o.size() != 2) g.fail("origin", "needs two coordinates");
+    p = primitives::rectangle(s[0], s[1], o[0], o[1]);
+  } else if (primitive == "box") {
+    g.allow_only({"primitive", "size", "origin"});
+    const auto s = g.numbers("size");
+    if (s.size() != 3 || s[0] <= 0 || s[1] <= 0 || s[2] <= 0) g.fail("size", "needs three positive lengths [lx, ly, lz]");
+    const auto o = g.has("origin") ? g.numbers("origin") : std::vector<double>{0, 0, 0};
+    if (o.size() != 3) g.fail("origin", "needs three coordinates");
+    p = primitives::box(s[0], s[1], s[2], Eigen::Vector3d(o[0], o[1], o[2]));
+  } else if (primitive == "ball") {
+    g.allow_only({"primitive", "radius"});
+    p = primitives::ball(g.positive("radius"));
+  } else if (primitive == "cylinder_rod") {
+    g.allow_only({"primitive", "radius", "length"});
+    p = primitives::cylinder_rod(g.positive("radius"), g.positive("length"));
+  } else if (primitive == "patch") {
+    g.allow_only({"primitive", "degrees", "knots", "control_points", "weights"});
+    p = read_explicit_patch(g);
+  } else {
+    g.fail("primitive", "unknown primitive '" + primitive +
+                            "' (half_disk, rod_with_spherical_end, disk, quarter_annulus, rectangle, box, ball, "
+                            "cylinder_rod, patch)");
+  }
+  const int dim = format::spatial_dim(analysis);
+  if (p.param_dim() != dim || p.phys_dim() != dim)
+    g.fail("primitive", "'" + primitive + "' is a " + std::to_string(p.param_dim()) + "D patch in " +
+                            std::to_string(p.phys_dim()) + "D, but the analysis '" + format::to_string(analysis) +
+                            "' needs " + std::to_string(dim) + "D");
+  if (analysis == format::AnalysisType::Axisymmetric && p.points.col(0).minCoeff() < -1e-12 * p.points.cwiseAbs().maxCoeff())
+    g.fail("primitive", "an axisymmetric body must lie at x >= 0 (x is the radius)");
+  return p;
+}
+
+RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch) {
+  r.allow_only({"degrees", "subdivisions", "graded"});
+  RefinementSpec spec;
+  const int pd = patch.param_dim();
+  if (r.has("degrees")) {
+    for (long long d : r.integers("degrees")) spec.degrees.push_back(int(d));
+    if (int(spec.degrees.size()) != pd) r.fail("degrees", "needs " + std::to_string(pd) + " entries");
+    for (int d = 0; d < pd; ++d) {
+      if (spec.degrees[std::size_t(d)] < patch.degrees[std::size_t(d)])
+        r.fail("degrees", "cannot lower the degree of " + std::string(kDirections[d]) + " below " +
+                              std::to_string(patch.degrees[std::size_t(d)]));
+      if (spec.degrees[std::size_t(d)] > 8) r.fail("degrees", "degree above 8 is not supported");
+    }
+  }
+  if (r.has("subdivisions")) {
+    for (long long s : r.integers("subdivisions")) {
+      if (s < 1 || s > 1000) r.fail("subdivisions", "each entry must lie in 1..1000");
+      spec.subdivisions.push_back(int(s));
+    }
+    if (int(spec.subdivisions.size()) != pd) r.fail("subdivisions", "needs " + std::to_string(pd) + " entries");
+  }
+  for (const TomlView& g : r.tables("graded")) {
+    g.allow_only({"direction", "toward", "smallest", "growth"});
+    GradingRequest q;
+    q.direction = direction_index(g, "direction", pd);
+    q.toward = g.number("toward");
+    if (q.toward < patch.lower(q.direction) || q.toward > patch.upper(q.direction))
+      g.fail("toward", "outside the parameter range of " + std::string(kDirections[q.direction]));
+    q.smallest = g.positive("smallest");
+    q.growth = g.number("growth", 1.3);
+    if (q.growth <= 1.0 || q.growth > 3.0) g.fail("growth", "must lie in (1, 3]");
+    spec.graded.push_back(q);
+  }
+  return spec;
+}
+
+std::vector<FixedComponents> read_boundary(const TomlView& b, const NurbsPatch& patch, int dim) {
+  b.allow_only({"clamped", "fixed"});
+  std::vector<FixedComponents> out;
+  auto check_side = [&](const TomlView& t, const std::string& key, const std::string& side) {
+    if (!patch.side(side)) t.fail(key, "unknown side '" + side + "'");
+  };
+  if (b.has("clamped"))
+    for (const std::string& side : b.strings("clamped")) {
+      check_side(b, "clamped", side);
+      FixedComponents f{side, {}};
+      for (int a = 0; a < dim; ++a) f.components.push_back(a);
+      out.push_back(f);
+    }
+  for (const TomlView& t : b.tables("fixed")) {
+    t.allow_only({"side", "components"});
+    FixedComponents f{t.string("side"), {}};
+    check_side(t, "side", f.side);
+    for (const std::string& c : t.strings("components")) {
+      int a = -1;
+      for (int k = 0; k < dim; ++k)
+        if (c == kComponents[k]) a = k;
+      if (a < 0) t.fail("components", "unknown component '" + c + "'");
+      f.components.push_back(a);
+    }
+    out.push_back(f);
+  }
+  return out;
+}
+
+}  // namespace
+
+ModelSpec read_model_file(const std::string& path) {
+  const toml::table root = format::parse_toml_file(path);
+  const TomlView top(root, path);
+  top.allow_only({"body", "material", "geometry", "refinement", "boundary", "quadrature"});
+  ModelSpec m;
+  m.file = path;
+
+  const TomlView body = top.table("body");
+  body.allow_only({"name", "analysis", "thickness"});
+  m.body_name = body.string("name");
+  if (m.body_name.empty() || m.body_name.find('/') != std::string::npos) body.fail("name", "must be a non-empty name without '/'");
+  const std::string analysis = body.string("analysis");
+  const auto type = format::analysis_type_from_string(analysis);
+  if (!type) body.fail("analysis", "unknown analysis '" + analysis + "' (plane_strain, plane_stress, axisymmetric, solid)");
+  m.analysis = *type;
+  const bool planar = m.analysis == format::AnalysisType::PlaneStrain || m.analysis == format::AnalysisType::PlaneStress;
+  if (body.has("thickness") && !planar) body.fail("thickness", "only planar bodies have a thickness");
+  m.thickness = body.positive("thickness", 1.0);
+
+  const TomlView mat = top.table("material");
+  mat.allow_only({"youngs_modulus", "poisson_ratio", "density"});
+  m.material.youngs_modulus = mat.positive("youngs_modulus");
+  m.material.poisson_ratio = mat.number("poisson_ratio");
+  if (m.material.poisson_ratio <= -1 || m.material.poisson_ratio >= 0.5)
+    mat.fail("poisson_ratio", "must lie in (-1, 0.5), is " + std::to_string(m.material.poisson_ratio));
+  m.material.density = mat.positive("density");
+
+  m.patch = read_geometry(top.table("geometry"), m.analysis);
+  if (auto r = top.optional_table("refinement")) m.refinement = read_refinement(*r, m.patch);
+  if (auto b = top.optional_table("boundary")) m.fixed = read_boundary(*b, m.patch, format::spatial_dim(m.analysis));
+  if (auto q = top.optional_table("quadrature")) {
+    q->allow_only({"extra_points"});
+    const long long extra = q->integer("extra_points", 0);
+    if (extra < 0 || extra > 10) q->fail("extra_points", "must lie in 0..10");
+    m.extra_quadrature_points = int(extra);
+  }
+  return m;
+}
+
+}  // namespace isosid::prep
