@@ -3,7 +3,7 @@
 
 #include "assemble/boundary_quadrature.hpp"
 #include "assemble/element_evaluator.hpp"
-#include "assemble/gauss_quadrature.hpp"
+#include "assemble/element_quadrature.hpp"
 
 #include <omp.h>
 
@@ -16,22 +16,9 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 template <class F>
 void for_each_gauss_point(const AnalysisSpace& space, const Elasticity& el, const Element& e, int extra,
                           const ElementEvaluator& evaluator, PointValues& v, F&& f) {
-  const int pd = space.param_dim();
-  QuadratureRule rules[3];
-  for (int d = 0; d < pd; ++d) rules[d] = gauss_legendre(space.degrees[std::size_t(d)] + 1 + extra);
-  int g[3] = {0, 0, 0};
-  while (true) {
-    double t[3] = {0, 0, 0}, w = 1;
-    for (int d = 0; d < pd; ++d) {
-      t[d] = rules[d].points(g[d]);
-      w *= rules[d].weights(g[d]) * (e.hi(d) - e.lo(d));
-    }
-    evaluator.evaluate(e, t, v);
-    const double det = v.J.determinant();
-    f(v, w * std::abs(det) * el.measure(v.x));
-    int d = 0;
-    while (d < pd && ++g[d] >= int(rules[d].points.size())) g[d++] = 0;
-    if (d == pd) break;
+  for (const QuadPoint& q : element_quadrature(space, e, extra)) {
+    evaluator.evaluate(e, q.t, v);
+    f(v, q.weight * std::abs(v.J.determinant()) * el.measure(v.x));
   }
 }
 

@@ -1,0 +1,43 @@
+// Pointwise displacement and strain operators; see point_operator.hpp.
+#include "assemble/point_operator.hpp"
+
+#include "assemble/element_evaluator.hpp"
+
+namespace isosid::prep {
+
+PointOperator point_operator(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
+                             const Element& element, const double* t) {
+  const ElementEvaluator ev(space);
+  PointValues v;
+  ev.evaluate(element, t, v);
+  PointOperator op;
+  op.x = v.x;
+  op.det_J = v.J.determinant();
+  const int nf = int(element.functions.size()), dim = dofs.dim();
+  for (int f : element.functions) op.nodes.push_back(dofs.node_of(f));
+  op.N = Eigen::MatrixXd::Zero(dim, nf * dim);
+  for (int f = 0; f < nf; ++f)
+    for (int a = 0; a < dim; ++a) op.N(a, f * dim + a) = v.R(f);
+  elasticity.strain_operator(v.R, v.dR_dxi * v.J.inverse(), v.x, op.B);
+  return op;
+}
+
+Eigen::VectorXd PointOperator::gather(const Eigen::VectorXd& nodal) const {
+  const Eigen::Index dim = N.rows();
+  Eigen::VectorXd local(N.cols());
+  for (std::size_t f = 0; f < nodes.size(); ++f) local.segment(Eigen::Index(f) * dim, dim) = nodal.segment(nodes[f] * dim, dim);
+  return local;
+}
+
+Eigen::VectorXd PointOperator::displacement(const Eigen::VectorXd& nodal) const { return N * gather(nodal); }
+Eigen::VectorXd PointOperator::strain(const Eigen::VectorXd& nodal) const { return B * gather(nodal); }
+
+Eigen::VectorXd expand_to_nodes(const DofMap& dofs, const Eigen::VectorXd& free_values, const Eigen::VectorXd* fixed_values) {
+  Eigen::VectorXd nodal = fixed_values ? *fixed_values : Eigen::VectorXd::Zero(dofs.total_dofs());
+  for (int n = 0; n < dofs.node_count(); ++n)
+    for (int a = 0; a < dofs.dim(); ++a)
+      if (const int i = dofs.free_index(n, a); i >= 0) nodal(n * dofs.dim() + a) = free_values(i);
+  return nodal;
+}
+
+}  // namespace isosid::prep
