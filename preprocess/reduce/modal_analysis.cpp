@@ -71,10 +71,7 @@ ModalResult lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::Spar
   r.modes = solver.eigenvectors();
   r.iterations = int(solver.num_iterations());
   for (Eigen::Index i = 0; i < r.eigenvalues.size(); ++i)
-    if (std::abs(r.eigenvalues(i)) < 1e-4 * lambda_scale) {
-      r.eigenvalues(i) = 0;
-      ++r.rigid_body_modes;
-    }
+    if (std::abs(r.eigenvalues(i)) < 1e-4 * lambda_scale) ++r.rigid_body_modes;
   return r;
 }
 

@@ -8,7 +8,7 @@
 namespace isosid::prep {
 
 struct ModalResult {
-  Eigen::VectorXd eigenvalues;   ///< ascending, omega^2 (1/s^2)
+  Eigen::VectorXd eigenvalues;   ///< ascending, omega^2 (1/s^2); rigid-body ones are round-off around 0
   Eigen::MatrixXd modes;         ///< mass-normalized: modes^T M modes = I
   int rigid_body_modes = 0;      ///< eigenvalues recognised as zero
   int iterations = 0;            ///< Lanczos restarts
@@ -17,7 +17,8 @@ struct ModalResult {
 
 /// The n lowest modes. `lambda_scale` estimates the first elastic eigenvalue (e.g. (pi c / L)^2):
 /// the shift is -0.1 lambda_scale, so zero and the first elastic eigenvalues stay well apart
-/// after inversion, and eigenvalues below 1e-4 lambda_scale count as rigid-body modes (set to 0).
+/// after inversion, and eigenvalues below 1e-4 lambda_scale count as rigid-body modes (they
+/// are returned as computed: round-off around zero).
 ModalResult lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, int n,
                          double lambda_scale);
 
