@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
     if (auto status = format::parse_command_line(app, argc, argv)) return *status;
 
     StageTimer timer(quiet);
-    const prep::ModelSpec spec = timer.run("parse", "reading " + model_file, [&] { return prep::read_model_file(model_file); });
+    const prep::ModelSpec spec = prep::read_model_file(model_file);  // instant; progress starts on valid input
     const prep::BodyModel body = timer.run("refine", "refining the geometry", [&] { return prep::build_body(spec); });
     const auto system = timer.run("assembly", "assembling " + std::to_string(body.space.elements.size()) + " elements, " +
                                                   std::to_string(body.dofs.free_count()) + " DOFs",
