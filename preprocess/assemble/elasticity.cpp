@@ -64,7 +64,8 @@ void Elasticity::strain_operator(const Eigen::VectorXd& R, const Eigen::MatrixXd
       case AnalysisType::Axisymmetric:  // x = r (radial), y = z (axis)
         B(0, c) = dR(f, 0);
         B(1, c + 1) = dR(f, 1);
-        B(2, c) = R(f) / x(0);
+        // hoop strain u_r / r; on the axis (u_r = 0 there) its limit is du_r/dr
+        B(2, c) = x(0) > 0 ? R(f) / x(0) : dR(f, 0);
         B(3, c) = dR(f, 1);
         B(3, c + 1) = dR(f, 0);
         break;

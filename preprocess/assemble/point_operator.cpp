@@ -18,14 +18,30 @@ PointOperator point_operator(const AnalysisSpace& space, const DofMap& dofs, con
   op.N = Eigen::MatrixXd::Zero(dim, nf * dim);
   for (int f = 0; f < nf; ++f)
     for (int a = 0; a < dim; ++a) op.N(a, f * dim + a) = v.R(f);
-  elasticity.strain_operator(v.R, v.dR_dxi * v.J.inverse(), v.x, op.B);
+  op.R = v.R;
+  op.dR_dx = v.dR_dxi * v.J.inverse();
+  elasticity.strain_operator(v.R, op.dR_dx, v.x, op.B);
   return op;
 }
 
-Eigen::VectorXd PointOperator::gather(const Eigen::VectorXd& nodal) const {
+bool locate(const AnalysisSpace& space, const Eigen::VectorXd& xi, int& element, double* t) {
+  const int pd = space.param_dim();
+  for (int e = 0; e < int(space.elements.size()); ++e) {
+    const Element& el = space.elements[std::size_t(e)];
+    bool inside = true;
+    for (int d = 0; d < pd && inside; ++d) inside = xi(d) >= el.lo(d) && xi(d) <= el.hi(d);
+    if (!inside) continue;
+    element = e;
+    for (int d = 0; d < pd; ++d) t[d] = (xi(d) - el.lo(d)) / (el.hi(d) - el.lo(d));
+    return true;
+  }
+  return false;
+}
+
+Eigen::MatrixXd PointOperator::gather(const Eigen::MatrixXd& nodal) const {
   const Eigen::Index dim = N.rows();
-  Eigen::VectorXd local(N.cols());
-  for (std::size_t f = 0; f < nodes.size(); ++f) local.segment(Eigen::Index(f) * dim, dim) = nodal.segment(nodes[f] * dim, dim);
+  Eigen::MatrixXd local(N.cols(), nodal.cols());
+  for (std::size_t f = 0; f < nodes.size(); ++f) local.middleRows(Eigen::Index(f) * dim, dim) = nodal.middleRows(nodes[f] * dim, dim);
   return local;
 }
 

@@ -16,16 +16,23 @@ struct PointOperator {
   std::vector<int> nodes;           ///< node of each element function
   Eigen::MatrixXd N;                ///< dim x (nf*dim), columns f*dim + a
   Eigen::MatrixXd B;                ///< strain_count x (nf*dim)
+  Eigen::VectorXd R;                ///< element functions at the point
+  Eigen::MatrixXd dR_dx;            ///< nf x dim physical gradients
 
   /// u at the point from all nodal displacements (node_count*dim, node-major).
   Eigen::VectorXd displacement(const Eigen::VectorXd& nodal) const;
   Eigen::VectorXd strain(const Eigen::VectorXd& nodal) const;
-  /// Local DOF vector gathered from nodal values.
-  Eigen::VectorXd gather(const Eigen::VectorXd& nodal) const;
+  /// Rows of the element's DOFs (f*dim + a) gathered from nodal rows (node*dim + a), for a
+  /// displacement vector or a matrix of modes.
+  Eigen::MatrixXd gather(const Eigen::MatrixXd& nodal) const;
 };
 
 PointOperator point_operator(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
                              const Element& element, const double* t);
+
+/// The element containing patch parameter xi and the reference coordinates of xi in it;
+/// returns false if xi lies outside the patch.
+bool locate(const AnalysisSpace& space, const Eigen::VectorXd& xi, int& element, double* t);
 
 /// Expands a solution on the free DOFs to all nodal DOFs (fixed components get `fixed_values`
 /// if given, else zero).

@@ -87,6 +87,18 @@ std::optional<PatchSide> NurbsPatch::side(const std::string& name) const {
   return std::nullopt;
 }
 
+Eigen::VectorXd NurbsPatch::greville(int i) const {
+  const std::vector<int> n = counts();
+  Eigen::VectorXd g(param_dim());
+  int rest = i;
+  for (int d = 0; d < param_dim(); ++d) {
+    const int k = rest % n[std::size_t(d)], p = degrees[std::size_t(d)];
+    rest /= n[std::size_t(d)];
+    g(d) = knots[std::size_t(d)].segment(k + 1, p).sum() / p;
+  }
+  return g;
+}
+
 std::vector<int> NurbsPatch::side_points(PatchSide side) const {
   const std::vector<int> n = counts();
   std::vector<int> out;

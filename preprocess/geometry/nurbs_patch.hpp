@@ -44,6 +44,8 @@ struct NurbsPatch {
 
   /// Resolves a canonical or primitive-specific side name.
   std::optional<PatchSide> side(const std::string& name) const;
+  /// Greville abscissae of control point `i` (one parameter per direction).
+  Eigen::VectorXd greville(int i) const;
   /// Flat indices of the control points on a side.
   std::vector<int> side_points(PatchSide side) const;
 };

@@ -4,6 +4,8 @@
 #include "geometry/primitives.hpp"
 #include "isosid/format/toml_fields.hpp"
 
+#include <algorithm>
+
 namespace isosid::prep {
 namespace {
 
@@ -160,12 +162,110 @@ std::vector<FixedComponents> read_boundary(const TomlView& b, const NurbsPatch& 
   return out;
 }
 
+Eigen::VectorXd parameter_point(const TomlView& t, const std::string& key, const NurbsPatch& patch) {
+  const std::vector<double> v = t.numbers(key);
+  if (int(v.size()) != patch.param_dim()) t.fail(key, "needs " + std::to_string(patch.param_dim()) + " parameters");
+  for (int d = 0; d < patch.param_dim(); ++d)
+    if (v[std::size_t(d)] < patch.lower(d) || v[std::size_t(d)] > patch.upper(d)) t.fail(key, "outside the patch's parameter range");
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(v.size()));
+}
+
+void read_sid_content(const TomlView& top, ModelSpec& m) {
+  const NurbsPatch& patch = m.patch;
+  auto unique_name = [](const TomlView& t, std::vector<std::string>& seen) {
+    const std::string name = t.string("name");
+    if (name.empty() || name.find('/') != std::string::npos) t.fail("name", "must be a non-empty name without '/'");
+    if (std::find(seen.begin(), seen.end(), name) != seen.end()) t.fail("name", "duplicate name '" + name + "'");
+    seen.push_back(name);
+    return name;
+  };
+  std::vector<std::string> surfaces, nodes, lines;
+  for (const TomlView& c : top.tables("contact_surface")) {
+    c.allow_only({"name", "side", "interval", "points_per_direction"});
+    ContactSurfaceSpec s;
+    s.name = unique_name(c, surfaces);
+    s.side = c.string("side");
+    const auto side = patch.side(s.side);
+    if (!side) c.fail("side", "unknown side '" + s.side + "'");
+    if (c.has("interval")) {
+      const auto rows = c.number_rows("interval");
+      if (int(rows.size()) != patch.param_dim() - 1) c.fail("interval", "needs one [lo, hi] per tangential direction");
+      int k = 0;
+      for (int d = 0; d < patch.param_dim(); ++d) {
+        if (d == side->direction) continue;
+        const auto& r = rows[std::size_t(k++)];
+        if (r.size() != 2 || r[0] >= r[1] || r[0] < patch.lower(d) || r[1] > patch.upper(d))
+          c.fail("interval", "each entry must be [lo, hi] with lo < hi inside the parameter range");
+        s.interval.push_back({r[0], r[1]});
+      }
+    }
+    const long long n = c.integer("points_per_direction", 0);
+    if (n < 0 || n > 20) c.fail("points_per_direction", "must lie in 1..20 (0: p+1)");
+    s.points_per_direction = int(n);
+    m.contact_surfaces.push_back(s);
+  }
+  for (const TomlView& t : top.tables("node")) {
+    t.allow_only({"name", "parameter"});
+    NodeSpec n;
+    n.name = unique_name(t, nodes);
+    n.parameter = parameter_point(t, "parameter", patch);
+    m.nodes.push_back(n);
+  }
+  for (const TomlView& t : top.tables("stress_line")) {
+    t.allow_only({"name", "from", "to", "points"});
+    StressLineSpec l;
+    l.name = unique_name(t, lines);
+    l.from = parameter_point(t, "from", patch);
+    l.to = parameter_point(t, "to", patch);
+    const long long n = t.integer("points", 10);
+    if (n < 1 || n > 10000) t.fail("points", "must lie in 1..10000");
+    l.points = int(n);
+    m.stress_lines.push_back(l);
+  }
+  if (auto r = top.optional_table("reduction")) {
+    r->allow_only({"method", "normal_modes", "interface_surface", "interface_points", "interface_center"});
+    ReductionSpec& red = m.reduction;
+    red.method = r->string("method");
+    if (red.method != "modal" && red.method != "craig-bampton" && red.method != "full")
+      r->fail("method", "unknown method '" + red.method + "' (modal, craig-bampton, full)");
+    const long long n = r->integer("normal_modes", red.method == "full" ? 0 : 10);
+    if (n < 0 || n > 100000 || (red.method == "modal" && n < 1)) r->fail("normal_modes", "must be a positive count");
+    red.normal_modes = int(n);
+    if (red.method == "craig-bampton") {
+      red.interface_surface = r->string("interface_surface");
+      if (std::find(surfaces.begin(), surfaces.end(), red.interface_surface) == surfaces.end())
+        r->fail("interface_surface", "no contact_surface named '" + red.interface_surface + "'");
+      const long long k = r->integer("interface_points");
+      if (k < 1) r->fail("interface_points", "must be at least 1");
+      red.interface_points = int(k);
+      const std::vector<double> c = r->numbers("interface_center");
+      if (int(c.size()) != patch.param_dim() - 1) r->fail("interface_center", "needs one parameter per tangential direction");
+      red.interface_center = Eigen::Map<const Eigen::VectorXd>(c.data(), Eigen::Index(c.size()));
+    } else {
+      for (const char* key : {"interface_surface", "interface_points", "interface_center"})
+        if (r->has(key)) r->fail(key, "only used by method = \"craig-bampton\"");
+    }
+  }
+  if (auto d = top.optional_table("damping")) {
+    d->allow_only({"kappa", "f1", "f2"});
+    m.damping.kappa = d->number("kappa", m.damping.kappa);
+    if (m.damping.kappa < 0) d->fail("kappa", "must not be negative");
+    if (d->has("f1") != d->has("f2")) d->fail(d->has("f1") ? "f2" : "f1", "give both f1 and f2, or neither");
+    if (d->has("f1")) {
+      m.damping.f1_hz = d->positive("f1");
+      m.damping.f2_hz = d->positive("f2");
+      if (m.damping.f2_hz <= m.damping.f1_hz) d->fail("f2", "must exceed f1");
+    }
+  }
+}
+
 }  // namespace
 
 ModelSpec read_model_file(const std::string& path) {
   const toml::table root = format::parse_toml_file(path);
   const TomlView top(root, path);
-  top.allow_only({"body", "material", "geometry", "refinement", "boundary", "quadrature"});
+  top.allow_only({"body", "material", "geometry", "refinement", "boundary", "quadrature", "reduction", "damping",
+                  "contact_surface", "node", "stress_line"});
   ModelSpec m;
   m.file = path;
 
@@ -198,6 +298,7 @@ ModelSpec read_model_file(const std::string& path) {
     if (extra < 0 || extra > 10) q->fail("extra_points", "must lie in 0..10");
     m.extra_quadrature_points = int(extra);
   }
+  read_sid_content(top, m);
   return m;
 }
 

@@ -5,6 +5,7 @@
 #include "isosid/format/sid.hpp"
 #include "refine/graded_knots.hpp"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,38 @@ struct RefinementSpec {
   std::vector<GradingRequest> graded;
 };
 
+/// How the body is reduced (the [reduction] table).
+struct ReductionSpec {
+  std::string method = "modal";          ///< modal | craig-bampton | full
+  int normal_modes = 10;
+  std::string interface_surface;         ///< contact surface whose side holds the interface nodes
+  int interface_points = 0;              ///< that many side nodes nearest to interface_center
+  Eigen::VectorXd interface_center;      ///< tangential parameter(s) on that side
+};
+
+struct DampingSpec {
+  double kappa = 1e-3;                   ///< seed 000's value
+  double f1_hz = -1, f2_hz = -1;         ///< band; negative: the normal modes' lowest and highest
+};
+
+struct ContactSurfaceSpec {
+  std::string name;
+  std::string side;
+  std::vector<std::array<double, 2>> interval;  ///< per tangential direction; empty: the whole side
+  int points_per_direction = 0;                 ///< Gauss points per element and direction (0: p+1)
+};
+
+struct NodeSpec {
+  std::string name;
+  Eigen::VectorXd parameter;             ///< patch parameter of the point
+};
+
+struct StressLineSpec {
+  std::string name;
+  Eigen::VectorXd from, to;              ///< patch parameters of the line's ends
+  int points = 10;
+};
+
 struct ModelSpec {
   std::string file;                 ///< path of the model file
   std::string body_name;
@@ -31,6 +64,11 @@ struct ModelSpec {
   RefinementSpec refinement;
   std::vector<FixedComponents> fixed;
   int extra_quadrature_points = 0;
+  ReductionSpec reduction;
+  DampingSpec damping;
+  std::vector<ContactSurfaceSpec> contact_surfaces;
+  std::vector<NodeSpec> nodes;
+  std::vector<StressLineSpec> stress_lines;
 };
 
 /// Reads and validates a model file; throws InputError(file, field, problem).

@@ -1,9 +1,12 @@
-// isosid-prep: builds an isogeometric body from a model file, assembles it and reports its
-// size and natural frequencies (modal analysis).
+// isosid-prep: builds an isogeometric body from a model file, assembles it, reduces it and
+// writes its SID (or, with --modes, reports its size and natural frequencies).
 #include "assemble/assembly.hpp"
 #include "isosid/format/cli_parse.hpp"
+#include "isosid/format/sid_io.hpp"
 #include "model/body_model.hpp"
 #include "reduce/modal_analysis.hpp"
+#include "reduce/mode_basis.hpp"
+#include "sid/sid_builder.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -14,6 +17,7 @@ namespace {
 using namespace isosid;
 using Clock = std::chrono::steady_clock;
 
+/// Runs named stages with progress on stderr and records their times.
 class StageTimer {
 public:
   explicit StageTimer(bool quiet) : quiet_(quiet) {}
@@ -23,28 +27,48 @@ public:
     const auto t0 = Clock::now();
     auto result = f();
     const double s = std::chrono::duration<double>(Clock::now() - t0).count();
-    timings_[stage] = s;
+    timings_.emplace_back(stage, s);
     if (!quiet_) std::fprintf(stderr, "isosid-prep: %s done in %.3f s\n", stage.c_str(), s);
     return result;
   }
-  const nlohmann::json& timings() const { return timings_; }
+  const std::vector<std::pair<std::string, double>>& timings() const { return timings_; }
+  nlohmann::json json() const {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [k, v] : timings_) j[k] = v;
+    return j;
+  }
 
 private:
   bool quiet_;
-  nlohmann::json timings_ = nlohmann::json::object();
+  std::vector<std::pair<std::string, double>> timings_;
 };
+
+std::string default_output(const std::string& model) {
+  const std::string suffix = ".model.toml";
+  if (model.size() > suffix.size() && model.compare(model.size() - suffix.size(), suffix.size(), suffix) == 0)
+    return model.substr(0, model.size() - suffix.size()) + ".sid.h5";
+  return model + ".sid.h5";
+}
+
+std::vector<double> as_vector(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+
+double body_size(const prep::BodyModel& body) {
+  return (body.refined.points.colwise().maxCoeff() - body.refined.points.colwise().minCoeff()).norm();
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   return format::run_guarded("isosid-prep", [&] {
-    CLI::App app{"Builds an isogeometric body from MODEL.toml, assembles mass and stiffness and computes its modes.",
+    CLI::App app{"Builds an isogeometric body from MODEL.toml, reduces it and writes its SID file.\n"
+                 "With --modes N it only reports the model size and the N lowest frequencies.",
                  "isosid-prep"};
-    std::string model_file;
-    int n_modes = 10;
+    std::string model_file, output;
+    int n_modes = 0;
     bool as_json = false, quiet = false;
     app.add_option("model", model_file, "model file (*.model.toml)")->required();
-    app.add_option("--modes", n_modes, "number of lowest modes to compute (rigid-body modes included)")
+    app.add_option("-o,--output", output, "SID file to write (default: MODEL with .sid.h5 instead of .model.toml)");
+    app.add_option("--modes", n_modes, "modal analysis only: number of lowest modes (rigid-body modes included)")
         ->check(CLI::Range(1, 100000));
     app.add_flag("--json", as_json, "print the result as JSON");
     app.add_flag("-q,--quiet", quiet, "no progress on stderr");
@@ -56,17 +80,10 @@ int main(int argc, char** argv) {
     const auto system = timer.run("assembly", "assembling " + std::to_string(body.space.elements.size()) + " elements, " +
                                                   std::to_string(body.dofs.free_count()) + " DOFs",
                                   [&] { return prep::assemble_system(body.space, body.dofs, body.elasticity, spec.extra_quadrature_points); });
-    const auto mass_matrix = timer.run("mass", "integrating the mass", [&] {
+    const auto scalar_mass = timer.run("mass", "integrating the mass", [&] {
       return prep::assemble_scalar_mass(body.space, body.dofs, body.elasticity, spec.extra_quadrature_points);
     });
-    const double mass = mass_matrix.sum();
-    const auto modes = timer.run("eigen", "solving for " + std::to_string(n_modes) + " modes",
-                                 [&] {
-      const double size = (body.refined.points.colwise().maxCoeff() - body.refined.points.colwise().minCoeff()).norm();
-      const double scale = prep::eigenvalue_scale(spec.material.youngs_modulus, spec.material.density, size);
-      return prep::lowest_modes(system.K, system.M, std::min(n_modes, body.dofs.free_count() - 1), scale);
-    });
-    const Eigen::VectorXd f = modes.frequencies_hz();
+    const double lambda_scale = prep::eigenvalue_scale(spec.material.youngs_modulus, spec.material.density, body_size(body));
 
     nlohmann::json j;
     j["body"] = spec.body_name;
@@ -76,20 +93,66 @@ int main(int argc, char** argv) {
     j["control_points"] = body.space.n_functions();
     j["nodes"] = body.dofs.node_count();
     j["dofs"] = body.dofs.free_count();
-    j["mass_kg"] = mass;
-    j["rigid_body_modes"] = modes.rigid_body_modes;
-    j["frequencies_hz"] = std::vector<double>(f.data(), f.data() + f.size());
-    j["timings_s"] = timer.timings();
-    if (as_json) {
-      std::cout << j.dump(2) << "\n";
-    } else {
+    j["mass_kg"] = scalar_mass.sum();
+
+    if (n_modes > 0) {
+      const auto modes = timer.run("eigen", "solving for " + std::to_string(n_modes) + " modes", [&] {
+        return prep::lowest_modes(system.K, system.M, std::min(n_modes, body.dofs.free_count() - 1), lambda_scale);
+      });
+      const Eigen::VectorXd f = modes.frequencies_hz();
+      j["rigid_body_modes"] = modes.rigid_body_modes;
+      j["frequencies_hz"] = as_vector(f);
+      j["timings_s"] = timer.json();
+      if (as_json) {
+        std::cout << j.dump(2) << "\n";
+        return 0;
+      }
       std::printf("%s (%s): %zu elements, degrees", spec.body_name.c_str(), format::to_string(spec.analysis).c_str(),
                   body.space.elements.size());
       for (int p : body.space.degrees) std::printf(" %d", p);
-      std::printf(", %d free DOFs, mass %.6g kg\n", body.dofs.free_count(), mass);
+      std::printf(", %d free DOFs, mass %.6g kg\n", body.dofs.free_count(), scalar_mass.sum());
       std::printf("%d rigid-body modes; frequencies [Hz]:", modes.rigid_body_modes);
       for (Eigen::Index i = 0; i < f.size(); ++i) std::printf("%s%.6g", i % 6 ? "  " : "\n  ", f(i));
       std::printf("\n");
+      return 0;
+    }
+
+    if (output.empty()) output = default_output(model_file);
+    const prep::ReductionRequest request = prep::reduction_request(body);
+    const Eigen::MatrixXd rigid = prep::admissible_rigid_fields(
+        prep::rigid_nodal_fields(body.dofs.node_points(), spec.analysis), [&] {
+          std::vector<int> free(std::size_t(body.dofs.total_dofs()));
+          for (int n = 0; n < body.dofs.node_count(); ++n)
+            for (int a = 0; a < body.dofs.dim(); ++a) free[std::size_t(n * body.dofs.dim() + a)] = body.dofs.free_index(n, a);
+          return free;
+        }());
+    const prep::ReducedBasis basis = timer.run("reduction", request.method + " reduction", [&] {
+      return prep::reduce(system.K, system.M, rigid, request, lambda_scale);
+    });
+    format::Sid sid = timer.run("sid_terms", "SID terms, contact data, nodes and stress rows",
+                                [&] { return prep::build_sid(body, system, scalar_mass, basis); });
+    sid.provenance.timings_s = timer.timings();
+    timer.run("write", "writing " + output, [&] {
+      format::write_sid(sid, output);
+      return 0;
+    });
+
+    j["nq"] = sid.nq();
+    j["n_low"] = sid.refmod.n_low;
+    j["n_high"] = sid.refmod.n_high();
+    j["reduction"] = basis.method;
+    j["removed_rigid_directions"] = basis.removed_rigid;
+    j["frequencies_hz"] = as_vector(sid.refmod.frequencies_hz);
+    j["contact_points"] = nlohmann::json::object();
+    for (const auto& c : sid.contact_surfaces) j["contact_points"][c.name] = c.points();
+    j["output"] = output;
+    j["timings_s"] = timer.json();
+    if (as_json) {
+      std::cout << j.dump(2) << "\n";
+    } else {
+      std::printf("%s: %s reduction, nq = %lld (%d low + %d high), %d free DOFs -> %s\n", spec.body_name.c_str(),
+                  basis.method.c_str(), static_cast<long long>(sid.nq()), sid.refmod.n_low, sid.refmod.n_high(),
+                  body.dofs.free_count(), output.c_str());
     }
     return 0;
   });

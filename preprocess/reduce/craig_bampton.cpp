@@ -1,0 +1,54 @@
+// Craig-Bampton basis; see craig_bampton.hpp.
+#include "reduce/craig_bampton.hpp"
+
+#include "isosid/format/error.hpp"
+#include "reduce/modal_analysis.hpp"
+#include "reduce/sparse_cholesky.hpp"
+
+#include <algorithm>
+
+namespace isosid::prep {
+
+Eigen::SparseMatrix<double> submatrix(const Eigen::SparseMatrix<double>& A, const std::vector<int>& rows,
+                                      const std::vector<int>& cols) {
+  std::vector<int> row_of(std::size_t(A.rows()), -1), col_of(std::size_t(A.cols()), -1);
+  for (std::size_t i = 0; i < rows.size(); ++i) row_of[std::size_t(rows[i])] = int(i);
+  for (std::size_t j = 0; j < cols.size(); ++j) col_of[std::size_t(cols[j])] = int(j);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int c = 0; c < A.outerSize(); ++c) {
+    if (col_of[std::size_t(c)] < 0) continue;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, c); it; ++it)
+      if (row_of[std::size_t(it.row())] >= 0) t.emplace_back(row_of[std::size_t(it.row())], col_of[std::size_t(c)], it.value());
+  }
+  Eigen::SparseMatrix<double> S(Eigen::Index(rows.size()), Eigen::Index(cols.size()));
+  S.setFromTriplets(t.begin(), t.end());
+  return S;
+}
+
+Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                                    const std::vector<int>& interface_dofs, int n_normal, double lambda_scale) {
+  const int n = int(K.rows());
+  std::vector<bool> is_interface(std::size_t(n), false);
+  for (int d : interface_dofs) is_interface[std::size_t(d)] = true;
+  std::vector<int> inner;
+  for (int d = 0; d < n; ++d)
+    if (!is_interface[std::size_t(d)]) inner.push_back(d);
+  if (interface_dofs.empty()) throw format::ComputationError("Craig-Bampton reduction needs at least one interface DOF");
+  const auto Koo = submatrix(K, inner, inner), Moo = submatrix(M, inner, inner);
+  const auto Koi = submatrix(K, inner, interface_dofs);
+
+  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(n, n_normal + Eigen::Index(interface_dofs.size()));
+  if (n_normal > 0) {
+    const ModalResult fixed = lowest_modes(Koo, Moo, n_normal, lambda_scale);
+    if (fixed.rigid_body_modes > 0)
+      throw format::ComputationError("the interface does not fix the body: " + std::to_string(fixed.rigid_body_modes) +
+                                     " rigid-body modes remain with the interface held");
+    for (std::size_t i = 0; i < inner.size(); ++i) basis.row(inner[i]).head(n_normal) = fixed.modes.row(Eigen::Index(i));
+  }
+  const Eigen::MatrixXd static_part = -SparseCholesky(Koo).solve(Eigen::MatrixXd(Koi));
+  for (std::size_t i = 0; i < inner.size(); ++i) basis.row(inner[i]).tail(static_part.cols()) = static_part.row(Eigen::Index(i));
+  for (std::size_t j = 0; j < interface_dofs.size(); ++j) basis(interface_dofs[j], n_normal + Eigen::Index(j)) = 1.0;
+  return basis;
+}
+
+}  // namespace isosid::prep

@@ -1,0 +1,42 @@
+// A reduced basis of a body on its free DOFs, and the steps that make every reduction method
+// end alike: rigid-body content removed (Buckens frame), M-orthonormal, K-diagonal, sorted.
+#pragma once
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <string>
+#include <vector>
+
+#include "isosid/format/analysis_type.hpp"
+
+namespace isosid::prep {
+
+struct ReducedBasis {
+  Eigen::MatrixXd Phi;        ///< free DOFs x nq: Phi^T M Phi = I, Phi^T K Phi = diag(omega2)
+  Eigen::VectorXd omega2;     ///< ascending squared angular frequencies
+  int n_low = 0;              ///< leading normal (low-frequency) modes
+  std::string method;         ///< modal, craig-bampton, full
+  std::string interface;      ///< description of the interface (Craig-Bampton)
+  int removed_rigid = 0;      ///< basis directions dropped as rigid-body content
+};
+
+/// Rigid-body displacement fields on all nodal DOFs (node-major, `dim` per node): translations
+/// and rotations about the frame origin in 3D; x, y translation and z-rotation for planar
+/// bodies; the axial (y) translation for axisymmetric sections.
+Eigen::MatrixXd rigid_nodal_fields(const Eigen::MatrixXd& node_points, format::AnalysisType analysis);
+
+/// Rigid-body displacement fields of the body on its free DOFs (columns), only those that the
+/// constraints allow: translations and rotations about the frame origin in 3D; x, y and the
+/// z-rotation for planar bodies; the axial translation for axisymmetric bodies.
+Eigen::MatrixXd admissible_rigid_fields(const Eigen::MatrixXd& rigid_nodal, const std::vector<int>& free_of_dof);
+
+/// Phi <- (I - R (R^T M R)^-1 R^T M) Phi: no rigid-body content (int Phi dm = 0 and
+/// int c x Phi dm = 0, the Buckens conditions).
+void remove_rigid_content(Eigen::MatrixXd& Phi, const Eigen::SparseMatrix<double>& M, const Eigen::MatrixXd& R);
+
+/// Makes Phi M-orthonormal and K-diagonal within its span, sorted by frequency; directions
+/// whose M-norm is below `rank_tolerance` of the largest are dropped (rank deficiency after
+/// rigid-content removal). Returns the squared frequencies.
+Eigen::VectorXd orthonormalize(Eigen::MatrixXd& Phi, const Eigen::SparseMatrix<double>& K,
+                               const Eigen::SparseMatrix<double>& M, double rank_tolerance = 1e-10);
+
+}  // namespace isosid::prep

@@ -1,0 +1,50 @@
+// Dispatch of the reduction methods; see reduction.hpp.
+#include "reduce/reduction.hpp"
+
+#include "isosid/format/error.hpp"
+#include "reduce/craig_bampton.hpp"
+#include "reduce/modal_analysis.hpp"
+
+#include <Eigen/Eigenvalues>
+
+namespace isosid::prep {
+
+namespace {
+/// All modes of a model small enough for a dense solver.
+Eigen::MatrixXd all_modes(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M) {
+  if (K.rows() > 6000)
+    throw format::ComputationError("the full modal basis needs a dense eigen solve; " + std::to_string(K.rows()) +
+                                   " DOFs is too many (limit 6000)");
+  const Eigen::MatrixXd Kd = K, Md = M;
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Kd, Md);
+  if (dense.info() != Eigen::Success) throw format::ComputationError("dense generalized eigen solve failed");
+  return dense.eigenvectors();
+}
+}  // namespace
+
+ReducedBasis reduce(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, const Eigen::MatrixXd& rigid,
+                    const ReductionRequest& r, double lambda_scale) {
+  ReducedBasis out;
+  out.method = r.method;
+  out.interface = r.interface_description;
+  const int n_rigid = int(rigid.cols());
+  if (r.method == "modal") {
+    if (r.normal_modes < 1) throw format::ComputationError("modal reduction needs at least one mode");
+    const ModalResult m = lowest_modes(K, M, r.normal_modes + n_rigid, lambda_scale);
+    out.Phi = m.modes.rightCols(r.normal_modes);
+  } else if (r.method == "craig-bampton") {
+    out.Phi = craig_bampton_basis(K, M, r.interface_dofs, r.normal_modes, lambda_scale);
+  } else if (r.method == "full") {
+    out.Phi = all_modes(K, M);
+  } else {
+    throw format::ComputationError("unknown reduction method '" + r.method + "'");
+  }
+  const Eigen::Index raw = out.Phi.cols();
+  remove_rigid_content(out.Phi, M, rigid);
+  out.omega2 = orthonormalize(out.Phi, K, M);
+  out.removed_rigid = int(raw - out.Phi.cols());
+  out.n_low = r.method == "craig-bampton" ? std::min<int>(r.normal_modes, int(out.Phi.cols())) : int(out.Phi.cols());
+  return out;
+}
+
+}  // namespace isosid::prep

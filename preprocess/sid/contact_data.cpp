@@ -1,0 +1,101 @@
+// Contact Gauss points and master patches; see contact_data.hpp.
+#include "sid/contact_data.hpp"
+
+#include "assemble/boundary_quadrature.hpp"
+#include "isosid/format/error.hpp"
+
+namespace isosid::prep {
+namespace {
+
+std::vector<BoundaryPoint> selected_points(const BodyModel& body, const ContactSurfaceSpec& spec) {
+  const auto side = body.refined.side(spec.side);
+  if (!side) throw format::InputError(body.spec.file, "contact_surface " + spec.name, "unknown side '" + spec.side + "'");
+  std::vector<int> tangential;
+  for (int d = 0; d < body.space.param_dim(); ++d)
+    if (d != side->direction) tangential.push_back(d);
+  std::vector<BoundaryPoint> out;
+  for (BoundaryPoint& bp : boundary_points(body.space, body.elasticity, *side, spec.points_per_direction)) {
+    bool inside = true;
+    for (std::size_t k = 0; k < spec.interval.size() && k < tangential.size(); ++k) {
+      const double u = bp.xi(tangential[k]);
+      inside = inside && u >= spec.interval[k][0] && u <= spec.interval[k][1];
+    }
+    if (inside) out.push_back(std::move(bp));
+  }
+  if (out.empty())
+    throw format::InputError(body.spec.file, "contact_surface " + spec.name, "no Gauss point lies in the interval");
+  return out;
+}
+
+}  // namespace
+
+format::ContactSurface contact_points(const BodyModel& body, const ContactSurfaceSpec& spec) {
+  const std::vector<BoundaryPoint> pts = selected_points(body, spec);
+  const int dim = body.dofs.dim(), pd = body.space.param_dim();
+  const auto n = Eigen::Index(pts.size());
+  format::ContactSurface s;
+  s.name = spec.name;
+  s.side = side_name(*body.refined.side(spec.side));
+  s.master_patch = spec.name;
+  s.parameter.resize(n, pd);
+  s.element.resize(n);
+  s.position.resize(n, dim);
+  s.normal.resize(n, dim);
+  s.weight.resize(n);
+  for (Eigen::Index g = 0; g < n; ++g) {
+    const BoundaryPoint& p = pts[std::size_t(g)];
+    s.parameter.row(g) = p.xi.transpose();
+    s.element(g) = p.element;
+    s.position.row(g) = p.x.transpose();
+    s.normal.row(g) = p.normal.transpose();
+    s.weight(g) = p.weight;
+  }
+  return s;
+}
+
+Eigen::SparseMatrix<double> contact_shape_rows(const BodyModel& body, const ContactSurfaceSpec& spec) {
+  const std::vector<BoundaryPoint> pts = selected_points(body, spec);
+  const int dim = body.dofs.dim();
+  std::vector<Eigen::Triplet<double>> t;
+  for (std::size_t g = 0; g < pts.size(); ++g) {
+    const Element& e = body.space.elements[std::size_t(pts[g].element)];
+    for (std::size_t f = 0; f < e.functions.size(); ++f)
+      for (int a = 0; a < dim; ++a)
+        t.emplace_back(int(g) * dim + a, body.dofs.node_of(e.functions[f]) * dim + a, pts[g].R(Eigen::Index(f)));
+  }
+  Eigen::SparseMatrix<double> N(Eigen::Index(pts.size()) * dim, body.dofs.total_dofs());
+  N.setFromTriplets(t.begin(), t.end());  // duplicates (merged nodes) are summed
+  return N;
+}
+
+format::ContactSurface contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal) {
+  format::ContactSurface s = contact_points(body, spec);
+  s.Psi = contact_shape_rows(body, spec) * Phi_nodal;
+  return s;
+}
+
+format::MasterPatch master_patch(const BodyModel& body, const std::string& name, PatchSide side, const Eigen::MatrixXd& Phi_nodal) {
+  const NurbsPatch& p = body.refined;
+  const int dim = body.dofs.dim();
+  format::MasterPatch m;
+  m.name = name;
+  for (int d = 0; d < p.param_dim(); ++d)
+    if (d != side.direction) {
+      m.degrees.push_back(p.degrees[std::size_t(d)]);
+      m.knots.push_back(p.knots[std::size_t(d)]);
+    }
+  const std::vector<int> cps = p.side_points(side);  // first tangential direction fastest
+  const auto n = Eigen::Index(cps.size());
+  m.weights.resize(n);
+  m.control_points.resize(n, dim);
+  m.Phi.resize(n * dim, Phi_nodal.cols());
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const int f = cps[std::size_t(i)], node = body.dofs.node_of(f);
+    m.weights(i) = p.weights(f);
+    m.control_points.row(i) = p.points.row(f);
+    m.Phi.middleRows(i * dim, dim) = Phi_nodal.middleRows(Eigen::Index(node) * dim, dim);
+  }
+  return m;
+}
+
+}  // namespace isosid::prep

@@ -1,0 +1,27 @@
+// Contact data of a SID: Gauss points of a boundary side (optionally a parametric interval
+// of it) with positions, outward normals, weights and reduced shape rows Psi = N Phi, and the
+// side's NURBS (master patch) with the modal rows of its control points.
+#pragma once
+#include "model/body_model.hpp"
+#include "isosid/format/sid.hpp"
+
+#include <Eigen/Sparse>
+#include <array>
+#include <vector>
+
+namespace isosid::prep {
+
+/// Gauss points of the surface (element, parameter, position, normal, weight) without Psi.
+format::ContactSurface contact_points(const BodyModel& body, const ContactSurfaceSpec& spec);
+
+/// N (npts*dim x nodal DOFs): displacement at each point from nodal displacements.
+Eigen::SparseMatrix<double> contact_shape_rows(const BodyModel& body, const ContactSurfaceSpec& spec);
+
+/// Complete contact surface: points and Psi = N Phi_nodal.
+format::ContactSurface contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal);
+
+/// The side as a NURBS of one dimension less, with the modal rows of its control points.
+format::MasterPatch master_patch(const BodyModel& body, const std::string& name, PatchSide side,
+                                 const Eigen::MatrixXd& Phi_nodal);
+
+}  // namespace isosid::prep

@@ -1,0 +1,123 @@
+// Composition of the SID; see sid_builder.hpp.
+#include "sid/sid_builder.hpp"
+
+#include "isosid/format/error.hpp"
+#include "isosid/format/sha256.hpp"
+#include "isosid/version.hpp"
+#include "sid/contact_data.hpp"
+#include "sid/node_data.hpp"
+#include "sid/sid_terms.hpp"
+#include "sid/stress_rows.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <numeric>
+#include <map>
+
+namespace isosid::prep {
+
+std::vector<int> interface_dofs(const BodyModel& body, std::string& description) {
+  const ReductionSpec& r = body.spec.reduction;
+  const auto surface = std::find_if(body.spec.contact_surfaces.begin(), body.spec.contact_surfaces.end(),
+                                    [&](const ContactSurfaceSpec& c) { return c.name == r.interface_surface; });
+  const PatchSide side = *body.refined.side(surface->side);
+  std::vector<int> tangential;
+  for (int d = 0; d < body.space.param_dim(); ++d)
+    if (d != side.direction) tangential.push_back(d);
+  // distance of every side node to the centre, by the Greville parameters of its control points
+  std::map<int, double> distance;
+  for (int f : body.refined.side_points(side)) {
+    const Eigen::VectorXd g = body.refined.greville(f);
+    double d2 = 0;
+    for (std::size_t k = 0; k < tangential.size(); ++k) d2 += std::pow(g(tangential[k]) - r.interface_center(Eigen::Index(k)), 2);
+    const int node = body.dofs.node_of(f);
+    auto [it, inserted] = distance.emplace(node, d2);
+    if (!inserted) it->second = std::min(it->second, d2);
+  }
+  std::vector<std::pair<double, int>> ranked;
+  for (auto [node, d2] : distance) ranked.emplace_back(d2, node);
+  std::sort(ranked.begin(), ranked.end());
+  if (int(ranked.size()) < r.interface_points)
+    throw format::InputError(body.spec.file, "reduction.interface_points",
+                             std::to_string(r.interface_points) + " requested, the side has " + std::to_string(ranked.size()) + " nodes");
+  std::vector<int> dofs;
+  for (int k = 0; k < r.interface_points; ++k)
+    for (int a = 0; a < body.dofs.dim(); ++a)
+      if (const int i = body.dofs.free_index(ranked[std::size_t(k)].second, a); i >= 0) dofs.push_back(i);
+  std::sort(dofs.begin(), dofs.end());
+  description = std::to_string(r.interface_points) + " control points of '" + surface->name + "' nearest to parameter " +
+                std::to_string(r.interface_center(0)) + " (" + std::to_string(dofs.size()) + " DOFs)";
+  return dofs;
+}
+
+ReductionRequest reduction_request(const BodyModel& body) {
+  ReductionRequest q;
+  q.method = body.spec.reduction.method;
+  q.normal_modes = body.spec.reduction.normal_modes;
+  if (q.method == "craig-bampton") q.interface_dofs = interface_dofs(body, q.interface_description);
+  return q;
+}
+
+Eigen::MatrixXd nodal_modes(const DofMap& dofs, const Eigen::MatrixXd& Phi_free) {
+  Eigen::MatrixXd Phi = Eigen::MatrixXd::Zero(dofs.total_dofs(), Phi_free.cols());
+  for (int n = 0; n < dofs.node_count(); ++n)
+    for (int a = 0; a < dofs.dim(); ++a)
+      if (const int i = dofs.free_index(n, a); i >= 0) Phi.row(n * dofs.dim() + a) = Phi_free.row(i);
+  return Phi;
+}
+
+namespace {
+std::string utc_now() {
+  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+}  // namespace
+
+format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const SparseMatrix& scalar_mass,
+                      const ReducedBasis& basis) {
+  const ModelSpec& spec = body.spec;
+  format::Sid sid;
+  sid.body_name = spec.body_name;
+  sid.analysis = spec.analysis;
+  sid.material = spec.material;
+  sid.thickness = spec.thickness;
+
+  const Eigen::MatrixXd Phi = nodal_modes(body.dofs, basis.Phi);
+  fill_inertia_terms(sid, scalar_mass, body.dofs.node_points(), Phi);
+  auto symmetric = [](const Eigen::MatrixXd& A) { return Eigen::MatrixXd(0.5 * (A + A.transpose())); };
+  sid.Me.M0 = symmetric(basis.Phi.transpose() * (system.M * basis.Phi));
+  sid.Ke.M0 = symmetric(basis.Phi.transpose() * (system.K * basis.Phi));
+
+  format::RefMod& r = sid.refmod;
+  r.frequencies_hz = basis.omega2.cwiseMax(0.0).cwiseSqrt() / (2 * M_PI);
+  r.n_low = basis.n_low;
+  r.reduction_method = basis.method;
+  r.interface_description = basis.interface;
+  for (Eigen::Index k = 0; k < basis.Phi.cols(); ++k)
+    r.mode_names.push_back((k < basis.n_low ? "low mode " : "high mode ") + std::to_string(k + 1) + ": " +
+                           std::to_string(r.frequencies_hz(k)) + " Hz");
+  const double f1 = spec.damping.f1_hz > 0 ? spec.damping.f1_hz : r.frequencies_hz(0);
+  const double f2 = spec.damping.f2_hz > 0 ? spec.damping.f2_hz : r.frequencies_hz(std::max(0, basis.n_low - 1));
+  sid.damping = rayleigh_damping(spec.damping.kappa, f1, std::max(f2, f1));
+  sid.De.M0 = sid.damping.alpha1 * sid.Me.M0 + sid.damping.alpha2 * sid.Ke.M0;
+
+  for (const ContactSurfaceSpec& c : spec.contact_surfaces) {
+    sid.contact_surfaces.push_back(contact_surface(body, c, Phi));
+    sid.master_patches.push_back(master_patch(body, c.name, *body.refined.side(c.side), Phi));
+  }
+  for (const NodeSpec& n : spec.nodes) sid.nodes.push_back(node_at(body, n, Phi));
+  for (const StressLineSpec& l : spec.stress_lines) sid.stress_recovery.push_back(stress_rows(body, l, Phi));
+
+  sid.provenance.model_file = spec.file;
+  sid.provenance.model_sha256 = std::filesystem::is_regular_file(spec.file) ? format::sha256_file(spec.file) : "";
+  sid.provenance.program_version = kProgramVersion;
+  sid.provenance.created_utc = utc_now();
+  return sid;
+}
+
+}  // namespace isosid::prep

@@ -1,0 +1,33 @@
+// Stress rows along a parametric line; see stress_rows.hpp.
+#include "sid/stress_rows.hpp"
+
+#include "assemble/point_operator.hpp"
+#include "isosid/format/error.hpp"
+
+namespace isosid::prep {
+
+format::StressRecovery stress_rows(const BodyModel& body, const StressLineSpec& spec, const Eigen::MatrixXd& Phi_nodal) {
+  const int dim = body.dofs.dim();
+  const auto comps = body.elasticity.stress_components();
+  const auto nc = Eigen::Index(comps.size());
+  format::StressRecovery s;
+  s.name = spec.name;
+  s.components = comps;
+  s.position.resize(spec.points, dim);
+  s.S.resize(spec.points * nc, Phi_nodal.cols());
+  for (int i = 0; i < spec.points; ++i) {
+    const double u = spec.points == 1 ? 0.0 : double(i) / (spec.points - 1);
+    const Eigen::VectorXd xi = spec.from + u * (spec.to - spec.from);
+    int e = 0;
+    double t[3] = {0, 0, 0};
+    if (!locate(body.space, xi, e, t))
+      throw format::InputError(body.spec.file, "stress_line " + spec.name, "point outside the patch");
+    const PointOperator op = point_operator(body.space, body.dofs, body.elasticity, body.space.elements[std::size_t(e)], t);
+    const Eigen::MatrixXd local = op.gather(Phi_nodal);
+    s.position.row(i) = op.x.transpose();
+    s.S.middleRows(i * nc, nc) = body.elasticity.D() * op.B * local;
+  }
+  return s;
+}
+
+}  // namespace isosid::prep
