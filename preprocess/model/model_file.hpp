@@ -27,7 +27,7 @@ struct ReductionSpec {
   std::string method = "modal";          ///< modal | craig-bampton | full
   int normal_modes = 10;
   std::string interface_surface;         ///< contact surface whose side holds the interface nodes
-  int interface_points = 0;              ///< that many side nodes nearest to interface_center
+  int interface_points = 0;              ///< that many side nodes nearest to the point at interface_center
   Eigen::VectorXd interface_center;      ///< tangential parameter(s) on that side
 };
 

@@ -6,6 +6,7 @@
 #include "reduce/sparse_cholesky.hpp"
 
 #include <algorithm>
+#include <memory>
 
 namespace isosid::prep {
 
@@ -37,15 +38,21 @@ Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const 
   const auto Koo = submatrix(K, inner, inner), Moo = submatrix(M, inner, inner);
   const auto Koi = submatrix(K, inner, interface_dofs);
 
+  // the interior stiffness is positive definite exactly when the interface fixes the body
+  std::unique_ptr<SparseCholesky> interior;
+  try {
+    interior = std::make_unique<SparseCholesky>(Koo);
+  } catch (const format::ComputationError&) {
+    throw format::ComputationError("Craig-Bampton: the " + std::to_string(interface_dofs.size()) +
+                                   " interface DOFs do not fix the body (the interior stiffness is singular); "
+                                   "choose more or more widely spread interface points");
+  }
   Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(n, n_normal + Eigen::Index(interface_dofs.size()));
   if (n_normal > 0) {
     const ModalResult fixed = lowest_modes(Koo, Moo, n_normal, lambda_scale);
-    if (fixed.rigid_body_modes > 0)
-      throw format::ComputationError("the interface does not fix the body: " + std::to_string(fixed.rigid_body_modes) +
-                                     " rigid-body modes remain with the interface held");
     for (std::size_t i = 0; i < inner.size(); ++i) basis.row(inner[i]).head(n_normal) = fixed.modes.row(Eigen::Index(i));
   }
-  const Eigen::MatrixXd static_part = -SparseCholesky(Koo).solve(Eigen::MatrixXd(Koi));
+  const Eigen::MatrixXd static_part = -interior->solve(Eigen::MatrixXd(Koi));
   for (std::size_t i = 0; i < inner.size(); ++i) basis.row(inner[i]).tail(static_part.cols()) = static_part.row(Eigen::Index(i));
   for (std::size_t j = 0; j < interface_dofs.size(); ++j) basis(interface_dofs[j], n_normal + Eigen::Index(j)) = 1.0;
   return basis;

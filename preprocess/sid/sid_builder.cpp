@@ -24,21 +24,17 @@ std::vector<int> interface_dofs(const BodyModel& body, std::string& description)
   const auto surface = std::find_if(body.spec.contact_surfaces.begin(), body.spec.contact_surfaces.end(),
                                     [&](const ContactSurfaceSpec& c) { return c.name == r.interface_surface; });
   const PatchSide side = *body.refined.side(surface->side);
-  std::vector<int> tangential;
-  for (int d = 0; d < body.space.param_dim(); ++d)
-    if (d != side.direction) tangential.push_back(d);
-  // distance of every side node to the centre, by the Greville parameters of its control points
+  // the centre as a physical point of the side; nodes are ranked by their physical distance
+  // to it (parameter distances mislead where the parametrization collapses, e.g. at a pole)
+  Eigen::VectorXd xi(body.space.param_dim());
+  for (int d = 0, k = 0; d < body.space.param_dim(); ++d)
+    xi(d) = d == side.direction ? (side.end ? body.refined.upper(d) : body.refined.lower(d)) : r.interface_center(k++);
+  const Eigen::VectorXd centre = body.refined.point(xi);
   std::map<int, double> distance;
-  for (int f : body.refined.side_points(side)) {
-    const Eigen::VectorXd g = body.refined.greville(f);
-    double d2 = 0;
-    for (std::size_t k = 0; k < tangential.size(); ++k) d2 += std::pow(g(tangential[k]) - r.interface_center(Eigen::Index(k)), 2);
-    const int node = body.dofs.node_of(f);
-    auto [it, inserted] = distance.emplace(node, d2);
-    if (!inserted) it->second = std::min(it->second, d2);
-  }
+  for (int f : body.refined.side_points(side))
+    distance[body.dofs.node_of(f)] = (body.dofs.node_points().row(body.dofs.node_of(f)).transpose() - centre).norm();
   std::vector<std::pair<double, int>> ranked;
-  for (auto [node, d2] : distance) ranked.emplace_back(d2, node);
+  for (auto [node, d] : distance) ranked.emplace_back(d, node);
   std::sort(ranked.begin(), ranked.end());
   if (int(ranked.size()) < r.interface_points)
     throw format::InputError(body.spec.file, "reduction.interface_points",
@@ -48,8 +44,9 @@ std::vector<int> interface_dofs(const BodyModel& body, std::string& description)
     for (int a = 0; a < body.dofs.dim(); ++a)
       if (const int i = body.dofs.free_index(ranked[std::size_t(k)].second, a); i >= 0) dofs.push_back(i);
   std::sort(dofs.begin(), dofs.end());
-  description = std::to_string(r.interface_points) + " control points of '" + surface->name + "' nearest to parameter " +
-                std::to_string(r.interface_center(0)) + " (" + std::to_string(dofs.size()) + " DOFs)";
+  description = std::to_string(r.interface_points) + " control points of '" + surface->name + "' nearest to (" +
+                std::to_string(centre(0)) + ", " + std::to_string(centre(1)) + (centre.size() > 2 ? ", " + std::to_string(centre(2)) : "") +
+                ") m (" + std::to_string(dofs.size()) + " DOFs)";
   return dofs;
 }
 

@@ -9,8 +9,8 @@
 namespace isosid::prep {
 
 /// The interface DOFs of a Craig-Bampton reduction: all free components of the
-/// `interface_points` nodes of the interface surface's side nearest (by Greville parameter)
-/// to `interface_center`; also describes them in words.
+/// `interface_points` nodes of the interface surface's side physically nearest to the side's
+/// point at `interface_center`; also describes them in words.
 std::vector<int> interface_dofs(const BodyModel& body, std::string& description);
 
 /// The request for prep::reduce() from the model's [reduction] table.
