@@ -24,6 +24,8 @@ public:
   /// Free index of (node, component), or -1 if fixed. Valid after any fix().
   int free_index(int node, int component) const { return free_[std::size_t(node * dim_ + component)]; }
   int free_count() const { return n_free_; }
+  /// Free index of every nodal DOF (node-major), -1 where fixed.
+  const std::vector<int>& free_indices() const { return free_; }
   int total_dofs() const { return node_count() * dim_; }
 
 private:

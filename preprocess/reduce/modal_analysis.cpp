@@ -4,6 +4,7 @@
 #include "isosid/format/error.hpp"
 
 #include <Eigen/CholmodSupport>
+#include <Eigen/Eigenvalues>
 #include <Spectra/MatOp/SparseSymMatProd.h>
 #include <Spectra/SymGEigsShiftSolver.h>
 #include <algorithm>
@@ -48,18 +49,28 @@ double eigenvalue_scale(double youngs_modulus, double density, double size) {
   return std::pow(M_PI * std::sqrt(youngs_modulus / density) / size, 2);
 }
 
-ModalResult lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, int n,
-                         double lambda_scale) {
-  const Eigen::Index size = K.rows();
-  if (n < 1 || n >= size)
-    throw format::ComputationError("requested " + std::to_string(n) + " modes of a model with " +
-                                   std::to_string(size) + " free DOFs (need 1 <= n < DOFs)");
-  if (!(lambda_scale > 0)) throw format::ComputationError("eigenvalue scale must be positive");
-  // K - sigma M is positive definite even with rigid-body modes for sigma < 0
-  const double sigma = -0.1 * lambda_scale;
+namespace {
+
+/// All modes by a dense generalized eigen solve (small models, or n close to the size).
+ModalResult dense_lowest(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, int n) {
+  if (K.rows() > 6000)
+    throw format::ComputationError("a dense eigen solve of " + std::to_string(K.rows()) + " DOFs is too large (limit 6000)");
+  const Eigen::MatrixXd Kd = K, Md = M;
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Kd, Md);
+  if (dense.info() != Eigen::Success) throw format::ComputationError("dense generalized eigen solve failed");
+  ModalResult r;
+  r.eigenvalues = dense.eigenvalues().head(n);
+  r.modes = dense.eigenvectors().leftCols(n);
+  return r;
+}
+
+/// The n lowest by shift-invert Lanczos; K - sigma M is positive definite for sigma < 0 even
+/// with rigid-body modes.
+ModalResult lanczos_lowest(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, int n,
+                           double sigma) {
   CholmodShiftInvert op(K, M);
   Spectra::SparseSymMatProd<double> bop(M);
-  const Eigen::Index ncv = std::min<Eigen::Index>(size, std::max<Eigen::Index>(2 * n + 1, n + 20));
+  const Eigen::Index ncv = std::min<Eigen::Index>(K.rows(), std::max<Eigen::Index>(2 * n + 1, n + 20));
   Spectra::SymGEigsShiftSolver<CholmodShiftInvert, Spectra::SparseSymMatProd<double>, Spectra::GEigsMode::ShiftInvert>
       solver(op, bop, n, ncv, sigma);
   solver.init();
@@ -70,6 +81,20 @@ ModalResult lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::Spar
   r.eigenvalues = solver.eigenvalues();
   r.modes = solver.eigenvectors();
   r.iterations = int(solver.num_iterations());
+  return r;
+}
+
+}  // namespace
+
+ModalResult lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, int n,
+                         double lambda_scale) {
+  const Eigen::Index size = K.rows();
+  if (n < 1 || n > size)
+    throw format::ComputationError("requested " + std::to_string(n) + " modes of a model with " +
+                                   std::to_string(size) + " free DOFs (need 1 <= n <= DOFs)");
+  if (!(lambda_scale > 0)) throw format::ComputationError("eigenvalue scale must be positive");
+  // Lanczos needs n < size - 1 Krylov room; a dense solve does not
+  ModalResult r = n >= size - 1 ? dense_lowest(K, M, n) : lanczos_lowest(K, M, n, -0.1 * lambda_scale);
   for (Eigen::Index i = 0; i < r.eigenvalues.size(); ++i)
     if (std::abs(r.eigenvalues(i)) < 1e-4 * lambda_scale) ++r.rigid_body_modes;
   return r;

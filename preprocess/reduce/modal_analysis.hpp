@@ -15,7 +15,7 @@ struct ModalResult {
   Eigen::VectorXd frequencies_hz() const;
 };
 
-/// The n lowest modes. `lambda_scale` estimates the first elastic eigenvalue (e.g. (pi c / L)^2):
+/// The n lowest modes (Lanczos, or a dense solve when n is close to the size). `lambda_scale` estimates the first elastic eigenvalue (e.g. (pi c / L)^2):
 /// the shift is -0.1 lambda_scale, so zero and the first elastic eigenvalues stay well apart
 /// after inversion, and eigenvalues below 1e-4 lambda_scale count as rigid-body modes (they
 /// are returned as computed: round-off around zero).

@@ -5,22 +5,8 @@
 #include "reduce/craig_bampton.hpp"
 #include "reduce/modal_analysis.hpp"
 
-#include <Eigen/Eigenvalues>
 
 namespace isosid::prep {
-
-namespace {
-/// All modes of a model small enough for a dense solver.
-Eigen::MatrixXd all_modes(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M) {
-  if (K.rows() > 6000)
-    throw format::ComputationError("the full modal basis needs a dense eigen solve; " + std::to_string(K.rows()) +
-                                   " DOFs is too many (limit 6000)");
-  const Eigen::MatrixXd Kd = K, Md = M;
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Kd, Md);
-  if (dense.info() != Eigen::Success) throw format::ComputationError("dense generalized eigen solve failed");
-  return dense.eigenvectors();
-}
-}  // namespace
 
 ReducedBasis reduce(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, const Eigen::MatrixXd& rigid,
                     const ReductionRequest& r, double lambda_scale) {
@@ -35,7 +21,7 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMat
   } else if (r.method == "craig-bampton") {
     out.Phi = craig_bampton_basis(K, M, r.interface_dofs, r.normal_modes, lambda_scale);
   } else if (r.method == "full") {
-    out.Phi = all_modes(K, M);
+    out.Phi = lowest_modes(K, M, int(K.rows()), lambda_scale).modes;
   } else {
     throw format::ComputationError("unknown reduction method '" + r.method + "'");
   }

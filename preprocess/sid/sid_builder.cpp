@@ -4,6 +4,7 @@
 #include "isosid/format/error.hpp"
 #include "isosid/format/sha256.hpp"
 #include "isosid/version.hpp"
+#include "reduce/modal_analysis.hpp"
 #include "sid/contact_data.hpp"
 #include "sid/node_data.hpp"
 #include "sid/sid_terms.hpp"
@@ -56,6 +57,13 @@ ReductionRequest reduction_request(const BodyModel& body) {
   q.normal_modes = body.spec.reduction.normal_modes;
   if (q.method == "craig-bampton") q.interface_dofs = interface_dofs(body, q.interface_description);
   return q;
+}
+
+ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system) {
+  const Eigen::MatrixXd rigid = admissible_rigid_fields(rigid_nodal_fields(body.dofs.node_points(), body.spec.analysis),
+                                                        body.dofs.free_indices());
+  const double scale = eigenvalue_scale(body.spec.material.youngs_modulus, body.spec.material.density, body_size(body));
+  return reduce(system.K, system.M, rigid, reduction_request(body), scale);
 }
 
 Eigen::MatrixXd nodal_modes(const DofMap& dofs, const Eigen::MatrixXd& Phi_free) {

@@ -16,6 +16,10 @@ std::vector<int> interface_dofs(const BodyModel& body, std::string& description)
 /// The request for prep::reduce() from the model's [reduction] table.
 ReductionRequest reduction_request(const BodyModel& body);
 
+/// Reduces the body as its model file asks: admissible rigid fields, the request, and the
+/// eigenvalue scale from its material and size.
+ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system);
+
 /// Modes on all nodal DOFs (fixed components zero), node-major.
 Eigen::MatrixXd nodal_modes(const DofMap& dofs, const Eigen::MatrixXd& Phi_free);
 

@@ -5,7 +5,6 @@
 #include "isosid/format/sid_io.hpp"
 #include "model/body_model.hpp"
 #include "reduce/modal_analysis.hpp"
-#include "reduce/mode_basis.hpp"
 #include "sid/sid_builder.hpp"
 
 #include <chrono>
@@ -52,10 +51,6 @@ std::string default_output(const std::string& model) {
 
 std::vector<double> as_vector(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
 
-double body_size(const prep::BodyModel& body) {
-  return (body.refined.points.colwise().maxCoeff() - body.refined.points.colwise().minCoeff()).norm();
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -83,7 +78,6 @@ int main(int argc, char** argv) {
     const auto scalar_mass = timer.run("mass", "integrating the mass", [&] {
       return prep::assemble_scalar_mass(body.space, body.dofs, body.elasticity, spec.extra_quadrature_points);
     });
-    const double lambda_scale = prep::eigenvalue_scale(spec.material.youngs_modulus, spec.material.density, body_size(body));
 
     nlohmann::json j;
     j["body"] = spec.body_name;
@@ -97,7 +91,8 @@ int main(int argc, char** argv) {
 
     if (n_modes > 0) {
       const auto modes = timer.run("eigen", "solving for " + std::to_string(n_modes) + " modes", [&] {
-        return prep::lowest_modes(system.K, system.M, std::min(n_modes, body.dofs.free_count() - 1), lambda_scale);
+        const double scale = prep::eigenvalue_scale(spec.material.youngs_modulus, spec.material.density, prep::body_size(body));
+        return prep::lowest_modes(system.K, system.M, std::min(n_modes, body.dofs.free_count() - 1), scale);
       });
       const Eigen::VectorXd f = modes.frequencies_hz();
       j["rigid_body_modes"] = modes.rigid_body_modes;
@@ -118,17 +113,8 @@ int main(int argc, char** argv) {
     }
 
     if (output.empty()) output = default_output(model_file);
-    const prep::ReductionRequest request = prep::reduction_request(body);
-    const Eigen::MatrixXd rigid = prep::admissible_rigid_fields(
-        prep::rigid_nodal_fields(body.dofs.node_points(), spec.analysis), [&] {
-          std::vector<int> free(std::size_t(body.dofs.total_dofs()));
-          for (int n = 0; n < body.dofs.node_count(); ++n)
-            for (int a = 0; a < body.dofs.dim(); ++a) free[std::size_t(n * body.dofs.dim() + a)] = body.dofs.free_index(n, a);
-          return free;
-        }());
-    const prep::ReducedBasis basis = timer.run("reduction", request.method + " reduction", [&] {
-      return prep::reduce(system.K, system.M, rigid, request, lambda_scale);
-    });
+    const prep::ReducedBasis basis = timer.run("reduction", spec.reduction.method + " reduction",
+                                               [&] { return prep::reduce_body(body, system); });
     format::Sid sid = timer.run("sid_terms", "SID terms, contact data, nodes and stress rows",
                                 [&] { return prep::build_sid(body, system, scalar_mass, basis); });
     sid.provenance.timings_s = timer.timings();
