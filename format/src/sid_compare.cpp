@@ -103,34 +103,40 @@ std::vector<MatrixXd> slices_modal(const std::vector<MatrixXd>& X, const MatrixX
 }
 
 /// Rows of a SID that are linear in one elastic coordinate each: the "mode shapes" by
-/// which the two bases are aligned. Blocks are scaled by A's block norms so that units
-/// (metres, radians, pascals) weigh alike.
-MatrixXd mode_rows(const Sid& s, const Sid& reference) {
-  std::vector<std::pair<MatrixXd, MatrixXd>> blocks;  // (this SID's block, reference block for scaling)
-  auto add = [&](const MatrixXd& x, const MatrixXd& ref) {
-    if (x.size() > 0 && x.rows() == ref.rows() && x.cols() == ref.cols()) blocks.emplace_back(x, ref);
+/// which the two bases are aligned. Each block is divided by max(|reference block|, 1e-6 x its
+/// natural scale) so that units (metres, radians, pascals) weigh alike and blocks that vanish
+/// up to round-off (Ct and Cr in a Buckens frame) stay negligible instead of being blown up.
+MatrixXd mode_rows(const Sid& s, const Sid& reference, const Scales& sc) {
+  struct Block {
+    MatrixXd rows;
+    double weight;
   };
-  add(s.Ct.M0.transpose(), reference.Ct.M0.transpose());
-  add(s.Cr.M0.transpose(), reference.Cr.M0.transpose());
-  add(s.Oe.M0.transpose(), reference.Oe.M0.transpose());
+  std::vector<Block> blocks;
+  const double inv_sm = 1.0 / sc.sqrt_m;
+  auto add = [&](const MatrixXd& x, const MatrixXd& ref, double natural) {
+    if (x.size() > 0 && x.rows() == ref.rows() && x.cols() == ref.cols())
+      blocks.push_back({x, 1.0 / std::max(ref.norm(), 1e-6 * natural * std::sqrt(double(ref.size())))});
+  };
+  add(s.Ct.M0.transpose(), reference.Ct.M0.transpose(), sc.sqrt_m);
+  add(s.Cr.M0.transpose(), reference.Cr.M0.transpose(), sc.sqrt_m * sc.L);
+  add(s.Oe.M0.transpose(), reference.Oe.M0.transpose(), sc.sqrt_m * sc.L);
   for (std::size_t i = 0; i < s.nodes.size() && i < reference.nodes.size(); ++i) {
-    add(s.nodes[i].phi, reference.nodes[i].phi);
-    add(s.nodes[i].psi, reference.nodes[i].psi);
+    add(s.nodes[i].phi, reference.nodes[i].phi, inv_sm);
+    add(s.nodes[i].psi, reference.nodes[i].psi, inv_sm / sc.L);
   }
   for (std::size_t i = 0; i < s.contact_surfaces.size() && i < reference.contact_surfaces.size(); ++i)
-    add(s.contact_surfaces[i].Psi, reference.contact_surfaces[i].Psi);
+    add(s.contact_surfaces[i].Psi, reference.contact_surfaces[i].Psi, inv_sm);
   for (std::size_t i = 0; i < s.master_patches.size() && i < reference.master_patches.size(); ++i)
-    add(s.master_patches[i].Phi, reference.master_patches[i].Phi);
+    add(s.master_patches[i].Phi, reference.master_patches[i].Phi, inv_sm);
   for (std::size_t i = 0; i < s.stress_recovery.size() && i < reference.stress_recovery.size(); ++i)
-    add(s.stress_recovery[i].S, reference.stress_recovery[i].S);
+    add(s.stress_recovery[i].S, reference.stress_recovery[i].S, sc.E * inv_sm / sc.L);
   Index rows = 0;
-  for (const auto& b : blocks) rows += b.first.rows();
+  for (const auto& b : blocks) rows += b.rows.rows();
   MatrixXd Y(rows, s.nq());
   Index r = 0;
-  for (const auto& [x, ref] : blocks) {
-    const double n = ref.norm();
-    Y.middleRows(r, x.rows()) = n > 0 ? MatrixXd(x / n) : x;
-    r += x.rows();
+  for (const auto& b : blocks) {
+    Y.middleRows(r, b.rows.rows()) = b.weight * b.rows;
+    r += b.rows.rows();
   }
   return Y;
 }
@@ -326,7 +332,7 @@ Comparison compare_sids(const Sid& a, const Sid& b, double rtol) {
   for (Index i = 0; i < fa.size(); ++i)
     cmp.scalar("frequency of mode " + std::to_string(i), fa(i), fb(i), 1e-6 * fmax);
   out.clusters = frequency_clusters(fa, std::max(rtol, 1e-8));
-  const MatrixXd Q = align_bases(mode_rows(a, a), mode_rows(b, a), out.clusters, rtol, out);
+  const MatrixXd Q = align_bases(mode_rows(a, a, s), mode_rows(b, a, s), out.clusters, rtol, out);
   compare_terms(a, b, Q, s, cmp);
   compare_parts(a, b, Q, s, cmp);
   return out;

@@ -4,10 +4,12 @@
 #include "assemble/element_evaluator.hpp"
 #include "assemble/gauss_quadrature.hpp"
 
+#include <algorithm>
+
 namespace isosid::prep {
 
 std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Elasticity& elasticity, PatchSide side,
-                                           int points_per_direction) {
+                                           int points_per_direction, const SideInterval& interval) {
   const int pd = space.param_dim();
   std::vector<int> tangential;
   for (int d = 0; d < pd; ++d)
@@ -21,14 +23,25 @@ std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Ela
   for (int e = 0; e < int(space.elements.size()); ++e) {
     const Element& el = space.elements[std::size_t(e)];
     if (!space.on_side(el, side)) continue;
+    // reference sub-range [t0, t1] of each tangential direction (the clipped interval)
+    std::vector<double> t0(tangential.size(), 0.0), t1(tangential.size(), 1.0);
+    bool empty = false;
+    for (std::size_t k = 0; k < interval.size() && k < tangential.size(); ++k) {
+      const int d = tangential[k];
+      const double lo = std::max(el.lo(d), interval[k][0]), hi = std::min(el.hi(d), interval[k][1]);
+      if (hi <= lo) empty = true;
+      t0[k] = (lo - el.lo(d)) / (el.hi(d) - el.lo(d));
+      t1[k] = (hi - el.lo(d)) / (el.hi(d) - el.lo(d));
+    }
+    if (empty) continue;
     std::vector<int> g(tangential.size(), 0);
     while (true) {
       double t[3] = {0, 0, 0};
       double w = 1;
       t[side.direction] = side.end;
       for (std::size_t k = 0; k < tangential.size(); ++k) {
-        t[tangential[k]] = rules[k].points(g[k]);
-        w *= rules[k].weights(g[k]) * (el.hi(tangential[k]) - el.lo(tangential[k]));
+        t[tangential[k]] = t0[k] + (t1[k] - t0[k]) * rules[k].points(g[k]);
+        w *= rules[k].weights(g[k]) * (t1[k] - t0[k]) * (el.hi(tangential[k]) - el.lo(tangential[k]));
       }
       evaluator.evaluate(el, t, v);
       Eigen::VectorXd n;

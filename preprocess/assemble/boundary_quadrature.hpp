@@ -4,6 +4,7 @@
 #include "assemble/analysis_space.hpp"
 #include "assemble/elasticity.hpp"
 
+#include <array>
 #include <vector>
 
 namespace isosid::prep {
@@ -16,9 +17,14 @@ struct BoundaryPoint {
   Eigen::VectorXd R;                            ///< functions of the element at the point
 };
 
+/// Parametric interval per tangential direction (in the order of the directions).
+using SideInterval = std::vector<std::array<double, 2>>;
+
 /// `points_per_direction` Gauss points in each tangential direction of every element on the
-/// side (p+1 of that direction when 0).
+/// side (p+1 of that direction when 0). With an interval, each element's tangential range is
+/// clipped to it and the rule mapped onto the intersection, so the points integrate exactly
+/// over the interval.
 std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Elasticity& elasticity, PatchSide side,
-                                           int points_per_direction = 0);
+                                           int points_per_direction = 0, const SideInterval& interval = {});
 
 }  // namespace isosid::prep

@@ -10,18 +10,7 @@ namespace {
 std::vector<BoundaryPoint> selected_points(const BodyModel& body, const ContactSurfaceSpec& spec) {
   const auto side = body.refined.side(spec.side);
   if (!side) throw format::InputError(body.spec.file, "contact_surface " + spec.name, "unknown side '" + spec.side + "'");
-  std::vector<int> tangential;
-  for (int d = 0; d < body.space.param_dim(); ++d)
-    if (d != side->direction) tangential.push_back(d);
-  std::vector<BoundaryPoint> out;
-  for (BoundaryPoint& bp : boundary_points(body.space, body.elasticity, *side, spec.points_per_direction)) {
-    bool inside = true;
-    for (std::size_t k = 0; k < spec.interval.size() && k < tangential.size(); ++k) {
-      const double u = bp.xi(tangential[k]);
-      inside = inside && u >= spec.interval[k][0] && u <= spec.interval[k][1];
-    }
-    if (inside) out.push_back(std::move(bp));
-  }
+  std::vector<BoundaryPoint> out = boundary_points(body.space, body.elasticity, *side, spec.points_per_direction, spec.interval);
   if (out.empty())
     throw format::InputError(body.spec.file, "contact_surface " + spec.name, "no Gauss point lies in the interval");
   return out;

@@ -132,3 +132,63 @@ TEST_CASE("the seed beam model's first twelve elastic frequencies are converged 
   // first bending mode in the 10 mm direction: Euler-Bernoulli 1209 Hz, shear lowers it ~1 %
   CHECK(base(0) == Approx(1199.8).epsilon(1e-3));
 }
+
+TEST_CASE("isosid-prep writes a SID beside the model and reports it as JSON", "[model][sid]") {
+  const test::ScratchDir dir("prep-sid");
+  std::string text = kValid;
+  text += R"(
+[[contact_surface]]
+name = "contact"
+side = "top"
+[reduction]
+method = "craig-bampton"
+normal_modes = 3
+interface_surface = "contact"
+interface_points = 3
+interface_center = [0.5]
+[[node]]
+name = "tip"
+parameter = [1.0, 0.5]
+)";
+  std::ofstream(dir.path("block.model.toml")) << text;
+  const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q --json " + dir.path("block.model.toml"));
+  REQUIRE(r.exit_status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["output"] == dir.path("block.sid.h5"));
+  CHECK(j["nq"] == 3 + 6 - 3);  // 3 normal + 3 points x 2 DOFs - 3 rigid-body directions
+  CHECK(j["n_low"] == 3);
+  CHECK(j["n_high"] == 3);
+  for (const char* stage : {"refine", "assembly", "mass", "reduction", "sid_terms", "write"}) CHECK(j["timings_s"].contains(stage));
+  const auto info = test::run_program(std::string(ISOSID_INFO_EXE) + " --json " + dir.path("block.sid.h5"));
+  REQUIRE(info.exit_status == 0);
+  const auto sid = nlohmann::json::parse(info.out);
+  CHECK(sid["mass"].get<double>() == Approx(7850.0 * 0.1 * 0.02 * 0.01).epsilon(1e-12));
+  CHECK(sid["nq"] == 6);
+  CHECK(sid["nodes"][0]["name"] == "tip");
+  CHECK(sid["contact_surfaces"][0]["points"] == 4 * 3);
+}
+
+TEST_CASE("reduction settings are validated", "[model][sid]") {
+  const test::ScratchDir dir("prep-sid-bad");
+  const std::string base = std::string(kValid) + "\n[[contact_surface]]\nname = \"contact\"\nside = \"top\"\n";
+  struct Case {
+    std::string extra, expected;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"[reduction]\nmethod = \"guyan\"\n", "reduction.method: unknown method"},
+           {"[reduction]\nmethod = \"craig-bampton\"\nnormal_modes = 3\ninterface_surface = \"nope\"\ninterface_points = 2\ninterface_center = [0.5]\n",
+            "reduction.interface_surface: no contact_surface named 'nope'"},
+           {"[reduction]\nmethod = \"modal\"\ninterface_points = 2\n", "reduction.interface_points: only used by method"},
+           {"[damping]\nkappa = -1\n", "damping.kappa: must not be negative"},
+           {"[damping]\nf1 = 100.0\n", "damping.f2: give both f1 and f2"},
+           {"[[node]]\nname = \"n\"\nparameter = [2.0, 0.5]\n", "node[0].parameter: outside"},
+           {"[[contact_surface]]\nname = \"contact\"\nside = \"left\"\n", "contact_surface[1].name: duplicate name"},
+       }) {
+    std::ofstream(dir.path("m.model.toml")) << base + c.extra;
+    const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("m.model.toml"));
+    INFO(c.extra);
+    CHECK(r.exit_status == 2);
+    CHECK_THAT(r.err, Contains(c.expected));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+}
