@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <algorithm>
 #include <numeric>
 
 namespace isosid::format::h5 {
@@ -83,11 +84,25 @@ void Writer::write_doubles(const std::string& path, const std::vector<hsize_t>& 
                            const std::string& units) {
   Handle lcpl = intermediate_groups();
   Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
-  Handle ds(H5Dcreate2(file_.get(), path.c_str(), H5T_IEEE_F64LE, space.get(), lcpl.get(), H5P_DEFAULT,
+  const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
+  // Large datasets (Taylor M1 tensors of big bases are mostly zeros for symmetric bodies) are
+  // stored chunked with shuffle + deflate; readers decompress transparently.
+  Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  if (count >= (hsize_t{1} << 16) && !dims.empty()) {
+    std::vector<hsize_t> chunk = dims;
+    hsize_t inner = 1;
+    for (std::size_t d = 1; d < dims.size(); ++d) inner *= dims[d];
+    chunk[0] = std::max<hsize_t>(1, std::min<hsize_t>(dims[0], (hsize_t{1} << 17) / std::max<hsize_t>(inner, 1)));
+    if (inner <= (hsize_t{1} << 26)) {  // chunks must stay below 4 GiB
+      H5Pset_chunk(dcpl.get(), int(chunk.size()), chunk.data());
+      H5Pset_shuffle(dcpl.get());
+      H5Pset_deflate(dcpl.get(), 4);
+    }
+  }
+  Handle ds(H5Dcreate2(file_.get(), path.c_str(), H5T_IEEE_F64LE, space.get(), lcpl.get(), dcpl.get(),
                        H5P_DEFAULT),
             H5Dclose);
   if (!ds.valid()) fail(path, "cannot create dataset");
-  const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
   if (count > 0 && H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
     fail(path, "cannot write dataset");
   ds.reset();
