@@ -1,5 +1,5 @@
 // HDF5 I/O helpers; see hdf5_file.hpp.
-#include "hdf5_file.hpp"
+#include "isosid/format/hdf5_file.hpp"
 
 #include "isosid/format/error.hpp"
 

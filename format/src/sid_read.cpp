@@ -1,5 +1,5 @@
 // Reads and validates a SID from HDF5 (layout in format/README.md).
-#include "hdf5_file.hpp"
+#include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "isosid/format/sid_validate.hpp"

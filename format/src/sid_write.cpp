@@ -1,5 +1,5 @@
 // Writes a SID to HDF5 (layout in format/README.md) through an atomic temporary file.
-#include "hdf5_file.hpp"
+#include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/atomic_output.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "isosid/format/sid_validate.hpp"

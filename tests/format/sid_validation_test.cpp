@@ -7,6 +7,7 @@
 #include "support/run_program.hpp"
 
 #include <catch2/catch.hpp>
+#include <functional>
 #include <filesystem>
 #include <fstream>
 
@@ -126,4 +127,31 @@ TEST_CASE("a dataset of the wrong rank is refused with its shape", "[format][val
   test::replace_dataset(file, "/refmod/mass", Eigen::MatrixXd::Constant(1, 1, 2.0));
   CHECK_THROWS_WITH(format::read_sid(file), Catch::Matchers::Contains("/refmod/mass") &&
                                                 Catch::Matchers::Contains("expected a scalar, found shape (1, 1)"));
+}
+
+TEST_CASE("isosid-info exits 2 with one line for every damaged SID", "[format][validation][tools]") {
+  const test::ScratchDir dir("damaged-cli");
+  const std::vector<std::function<void(const std::string&)>> damages = {
+      [](const std::string& f) { test::replace_integer(f, "/isosid/version", 2); },
+      [](const std::string& f) { test::remove_object(f, "/terms/Me/M0"); },
+      [](const std::string& f) { test::replace_dataset(f, "/terms/Ke/M0", Eigen::MatrixXd::Identity(2, 2)); },
+      [](const std::string& f) { test::replace_scalar(f, "/refmod/mass", std::nan("")); },
+      [](const std::string& f) { test::replace_scalar(f, "/refmod/mass", -1.0); },
+      [](const std::string& f) {
+        Eigen::MatrixXd me = Eigen::MatrixXd::Identity(4, 4);
+        me(0, 1) = 1;
+        test::replace_dataset(f, "/terms/Me/M0", me);
+      },
+      [&](const std::string& f) { test::truncate_copy(f, f + ".cut", 0.6), std::filesystem::rename(f + ".cut", f); },
+  };
+  for (std::size_t k = 0; k < damages.size(); ++k) {
+    const std::string file = dir.path("d" + std::to_string(k) + ".sid.h5");
+    format::write_sid(test::lumped_sid(test::random_lumped_body(10, 4, 11)), file);
+    damages[k](file);
+    const auto r = test::run_program(std::string(ISOSID_INFO_EXE) + " " + file);
+    INFO("damage " << k << ": " << r.err);
+    CHECK(r.exit_status == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err.find(file) != std::string::npos);
+  }
 }

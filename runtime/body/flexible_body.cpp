@@ -1,0 +1,251 @@
+// Floating-frame equations of motion from SID terms; see flexible_body.hpp.
+#include "body/flexible_body.hpp"
+
+#include "isosid/format/error.hpp"
+
+#include <cmath>
+
+namespace isosid::run {
+
+using Eigen::Index;
+using Eigen::Matrix3d;
+using Eigen::MatrixXd;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+
+Matrix3d skew(const Vector3d& v) {
+  Matrix3d s;
+  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return s;
+}
+
+Matrix3d tait_bryan_matrix(const Vector3d& a) {
+  return (Eigen::AngleAxisd(a.x(), Vector3d::UnitX()) * Eigen::AngleAxisd(a.y(), Vector3d::UnitY()) *
+          Eigen::AngleAxisd(a.z(), Vector3d::UnitZ()))
+      .toRotationMatrix();
+}
+
+Vector3d tait_bryan_angles(const Matrix3d& A) {
+  const double beta = std::asin(std::clamp(A(0, 2), -1.0, 1.0));
+  return {std::atan2(-A(1, 2), A(2, 2)), beta, std::atan2(-A(0, 1), A(0, 0))};
+}
+
+FlexibleBody::FlexibleBody(const FlexibleBodySpec& spec, format::Sid sid, Dimension dimension)
+    : name_(spec.name), sid_(std::move(sid)), spec_(spec) {
+  const Index n = nq();
+  // the Schur-complement solve below relies on the SID's normal form Me = I
+  if ((sid_.Me.M0 - MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff() > 1e-8)
+    throw format::InputError(spec.sid_file, "/terms/Me/M0", "the runtime needs mass-normalized modes (Me = I)");
+  const bool axisymmetric_sid = sid_.analysis == format::AnalysisType::Axisymmetric;
+  if ((dimension == Dimension::Axisymmetric) != axisymmetric_sid)
+    throw format::InputError(spec.sid_file, "/body/analysis_type",
+                             "a " + format::to_string(sid_.analysis) + " body in a " + to_string(dimension) + " scene");
+  if (dimension == Dimension::Planar && sid_.dim() != 2)
+    throw format::InputError(spec.sid_file, "/body/analysis_type", "a solid body in a planar scene");
+  if (dimension == Dimension::Axisymmetric) locked_ = {true, false, true, true, true, true};  // only along the axis
+  if (dimension == Dimension::Planar) locked_ = {false, false, true, true, true, false};      // in the x-y plane
+  const char* names[6] = {"x", "y", "z", "rx", "ry", "rz"};
+  for (const std::string& l : spec.locked)
+    for (int i = 0; i < 6; ++i)
+      if (l == names[i]) locked_[std::size_t(i)] = true;
+  rotates_ = !(locked_[3] && locked_[4] && locked_[5]);
+  n_dynamic_ = n;
+  if (spec.high_modes == "quasistatic") {
+    n_dynamic_ = sid_.refmod.n_low;
+    if (spec.quasistatic_above_hz > 0) {
+      n_dynamic_ = 0;
+      while (n_dynamic_ < n && sid_.refmod.frequencies_hz(n_dynamic_) <= spec.quasistatic_above_hz) ++n_dynamic_;
+    }
+  }
+  q_high_ = VectorXd::Zero(n - n_dynamic_);
+  q_full_ = VectorXd::Zero(n);
+  qdot_full_ = VectorXd::Zero(n);
+  if (spec.q0.size() && spec.q0.size() != n_dynamic_)
+    throw format::InputError(spec.sid_file, spec.name + ".q0", "needs " + std::to_string(n_dynamic_) + " entries (the integrated modes)");
+  if (spec.qdot0.size() && spec.qdot0.size() != n_dynamic_)
+    throw format::InputError(spec.sid_file, spec.name + ".qdot0", "needs " + std::to_string(n_dynamic_) + " entries (the integrated modes)");
+}
+
+void FlexibleBody::initial_state(double* y) const {
+  double* s = y + offset_;
+  Eigen::Map<Vector3d>(s + 0) = spec_.position;
+  const Eigen::Quaterniond p(tait_bryan_matrix(spec_.tait_bryan));
+  s[3] = p.w(), s[4] = p.x(), s[5] = p.y(), s[6] = p.z();
+  const Index nd = n_dynamic_;
+  Eigen::Map<VectorXd>(s + 7, nd) = spec_.q0.size() ? spec_.q0 : VectorXd::Zero(nd);
+  Vector3d v = spec_.velocity, w = spec_.angular_velocity;
+  for (int a = 0; a < 3; ++a) {
+    if (locked_[std::size_t(a)]) v(a) = 0;
+    if (locked_[std::size_t(3 + a)]) w(a) = 0;
+  }
+  Eigen::Map<Vector3d>(s + 7 + nd) = v;
+  Eigen::Map<Vector3d>(s + 10 + nd) = w;
+  Eigen::Map<VectorXd>(s + 13 + nd, nd) = spec_.qdot0.size() ? spec_.qdot0 : VectorXd::Zero(nd);
+}
+
+const VectorXd& FlexibleBody::q(const double* y) const {
+  q_full_.head(n_dynamic_) = Eigen::Map<const VectorXd>(y + offset_ + 7, n_dynamic_);
+  q_full_.tail(nq() - n_dynamic_) = q_high_;
+  return q_full_;
+}
+
+const VectorXd& FlexibleBody::qdot(const double* y) const {
+  qdot_full_.head(n_dynamic_) = Eigen::Map<const VectorXd>(y + offset_ + 13 + n_dynamic_, n_dynamic_);
+  return qdot_full_;  // quasistatic modes: zero
+}
+
+Eigen::Quaterniond FlexibleBody::orientation(const double* y) const {
+  const double* p = y + offset_ + 3;
+  return Eigen::Quaterniond(p[0], p[1], p[2], p[3]).normalized();
+}
+
+double FlexibleBody::derivatives(const double* y, const GeneralizedForce& applied, const Vector3d& gravity, double* ydot) const {
+  const Index n = nq(), nd = n_dynamic_;
+  const VectorXd& qv = q(y);
+  const VectorXd& qd = qdot(y);
+  const Vector3d w = omega(y);
+  const Eigen::Quaterniond p = orientation(y);
+  const Matrix3d A = p.toRotationMatrix();
+  double* d = ydot + offset_;
+
+  // kinematics: r' = v, p' = 1/2 p (0, omega) with a pull back onto |p| = 1, q' = qdot
+  Eigen::Map<Vector3d>(d + 0) = v(y);
+  const double* pr = y + offset_ + 3;
+  const double norm2 = pr[0] * pr[0] + pr[1] * pr[1] + pr[2] * pr[2] + pr[3] * pr[3];
+  const Eigen::Quaterniond pdot = Eigen::Quaterniond(pr[0], pr[1], pr[2], pr[3]) * Eigen::Quaterniond(0, w.x(), w.y(), w.z());
+  const double k = 10.0 * (1.0 - norm2) * std::max(1.0, w.norm());  // drift correction
+  d[3] = 0.5 * pdot.w() + k * pr[0], d[4] = 0.5 * pdot.x() + k * pr[1], d[5] = 0.5 * pdot.y() + k * pr[2],
+  d[6] = 0.5 * pdot.z() + k * pr[3];
+  Eigen::Map<VectorXd>(d + 7, nd) = qd.head(nd);
+
+  // mass matrix blocks at q (SID Taylor terms)
+  const double m = sid_.refmod.mass;
+  const Vector3d mc = sid_.mdCM.at(qv);
+  MatrixXd B(n, 6);  // [Ct, Cr]
+  B.leftCols(3) = sid_.Ct.order() ? sid_.Ct.at(qv) : sid_.Ct.M0;
+  Eigen::Matrix<double, 6, 6> A6 = Eigen::Matrix<double, 6, 6>::Zero();
+  A6.topLeftCorner<3, 3>() = m * Matrix3d::Identity();
+  A6.topRightCorner<3, 3>() = skew(mc).transpose();
+  A6.bottomLeftCorner<3, 3>() = skew(mc);
+
+  // right-hand side h = h_omega + h_g - h_e + applied (body components)
+  const Vector3d gK = A.transpose() * gravity;
+  Eigen::Matrix<double, 6, 1> hr;
+  hr.head<3>() = m * gK + applied.force;
+  hr.tail<3>() = mc.cross(gK) + applied.torque;
+  VectorXd hq = -(sid_.Ke.M0 * qv + sid_.De.M0 * qd + sid_.ksigma.M0.col(0)) + applied.elastic;
+  if (B.leftCols(3).size()) hq += B.leftCols(3) * gK;
+  if (rotates_) {
+    B.rightCols(3) = sid_.Cr.order() ? sid_.Cr.at(qv) : sid_.Cr.M0;
+    A6.bottomRightCorner<3, 3>() = sid_.J.at(qv);
+    const Matrix3d W = skew(w);
+    hr.head<3>() += -W * W * mc - 2 * W * (B.leftCols(3).transpose() * qd);
+    // Gr(q, qdot) = sum_k (Gr0_k + sum_j Gr1_kj q_j) qdot_k
+    Matrix3d Gr = Matrix3d::Zero();
+    for (Index kk = 0; kk < n; ++kk) {
+      Matrix3d block = sid_.Gr.M0.middleCols(3 * kk, 3);
+      for (std::size_t j = 0; j < sid_.Gr.M1.size(); ++j) block += sid_.Gr.M1[j].middleCols(3 * kk, 3) * qv(Index(j));
+      Gr += block * qd(kk);
+    }
+    hr.tail<3>() += -W * (A6.bottomRightCorner<3, 3>() * w) - Gr * w;
+    MatrixXd Ge = MatrixXd::Zero(n, 3);
+    for (Index j = 0; j < n; ++j) Ge += sid_.Ge.M0.middleCols(3 * j, 3) * qd(j);
+    Eigen::Matrix<double, 6, 1> wq;
+    wq << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
+    hq += -Ge * w - sid_.Oe.at(qv) * wq;
+  } else {
+    B.rightCols(3).setZero();
+    A6.bottomRightCorner<3, 3>() = sid_.J.M0;
+  }
+
+  // with Me = I: (A6 - B^T B) x = hr - B^T hq on the unlocked rigid DOFs, then qddot = hq - B x,
+  // over the dynamic modes only (quasistatic modes carry no inertia)
+  const auto Bd = B.topRows(nd);
+  const auto hd = hq.head(nd);
+  Eigen::Matrix<double, 6, 1> x = Eigen::Matrix<double, 6, 1>::Zero();
+  const Eigen::Matrix<double, 6, 6> S = A6 - Bd.transpose() * Bd;
+  const Eigen::Matrix<double, 6, 1> rhs = hr - Bd.transpose() * hd;
+  int free_dofs[6], nf = 0;
+  for (int i = 0; i < 6; ++i)
+    if (!locked_[std::size_t(i)]) free_dofs[nf++] = i;
+  if (nf > 0) {
+    Eigen::MatrixXd Sf(nf, nf);
+    Eigen::VectorXd rf(nf);
+    for (int i = 0; i < nf; ++i) {
+      rf(i) = rhs(free_dofs[i]);
+      for (int j = 0; j < nf; ++j) Sf(i, j) = S(free_dofs[i], free_dofs[j]);
+    }
+    const Eigen::VectorXd xf = Sf.ldlt().solve(rf);
+    for (int i = 0; i < nf; ++i) x(free_dofs[i]) = xf(i);
+  }
+  Eigen::Map<Vector3d>(d + 7 + nd) = A * x.head<3>();  // v' = A a_K
+  Eigen::Map<Vector3d>(d + 10 + nd) = x.tail<3>();
+  Eigen::Map<VectorXd>(d + 13 + nd, nd) = hd - Bd * x;
+  return qd.dot(sid_.De.M0 * qd);
+}
+
+double FlexibleBody::kinetic_energy(const double* y) const {
+  const VectorXd& qv = q(y);
+  const VectorXd& qd = qdot(y);
+  const Vector3d vK = orientation(y).toRotationMatrix().transpose() * v(y), w = omega(y);
+  const double m = sid_.refmod.mass;
+  const Vector3d mc = sid_.mdCM.at(qv);
+  const MatrixXd Ct = sid_.Ct.order() ? sid_.Ct.at(qv) : sid_.Ct.M0;
+  double T = 0.5 * m * vK.squaredNorm() + 0.5 * qd.squaredNorm() + vK.dot(Ct.transpose() * qd);
+  if (rotates_) {
+    const MatrixXd Cr = sid_.Cr.order() ? sid_.Cr.at(qv) : sid_.Cr.M0;
+    T += 0.5 * w.dot(sid_.J.at(qv) * w) + vK.dot(skew(mc).transpose() * w) + w.dot(Cr.transpose() * qd);
+  }
+  return T;
+}
+
+double FlexibleBody::elastic_energy(const double* y) const {
+  const VectorXd& qv = q(y);
+  return 0.5 * qv.dot(sid_.Ke.M0 * qv);
+}
+
+double FlexibleBody::gravity_potential(const double* y, const Vector3d& gravity) const {
+  const Vector3d mc = sid_.mdCM.at(q(y));
+  return -gravity.dot(sid_.refmod.mass * r(y) + orientation(y).toRotationMatrix() * mc);
+}
+
+Vector3d FlexibleBody::body_point(const VectorXd& c, const Eigen::Ref<const MatrixXd>& Psi, const double* y) const {
+  Vector3d P = Vector3d::Zero();
+  P.head(c.size()) = c + Psi * q(y);
+  return P;
+}
+
+Vector3d FlexibleBody::point_velocity(const Vector3d& P, const Eigen::Ref<const MatrixXd>& Psi, const double* y) const {
+  Vector3d u = Vector3d::Zero();
+  u.head(Psi.rows()) = Psi * qdot(y);
+  return v(y) + orientation(y).toRotationMatrix() * (omega(y).cross(P) + u);
+}
+
+void FlexibleBody::apply_force(const Vector3d& F_world, const Vector3d& P, const Eigen::Ref<const MatrixXd>& Psi,
+                               const Matrix3d& A, GeneralizedForce& f) const {
+  const Vector3d FK = A.transpose() * F_world;
+  f.force += FK;
+  f.torque += P.cross(FK);
+  f.elastic.noalias() += Psi.transpose() * FK.head(Psi.rows());
+}
+
+std::pair<Vector3d, Vector3d> FlexibleBody::node_state(const format::Node& node, const double* y) const {
+  const Matrix3d A = orientation(y).toRotationMatrix();
+  const Vector3d P = node.origin.M0.col(0) + node.phi * q(y);
+  const Vector3d vel = v(y) + A * (omega(y).cross(P) + node.phi * qdot(y));
+  return {r(y) + A * P, vel};
+}
+
+const format::Node* FlexibleBody::node(const std::string& name) const {
+  for (const auto& n : sid_.nodes)
+    if (n.name == name) return &n;
+  return nullptr;
+}
+
+const format::ContactSurface* FlexibleBody::contact_surface(const std::string& name) const {
+  for (const auto& c : sid_.contact_surfaces)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+}  // namespace isosid::run

@@ -1,0 +1,97 @@
+// A flexible body in the floating frame of reference formulation, fed only by its SID:
+// state r (world), unit quaternion, q; velocities v (world), omega (body frame), qdot.
+// Equations of motion: shared/research/sid-and-ffrf.md section 2 (MBSim updateMb, CADyn).
+#pragma once
+#include "isosid/format/sid.hpp"
+#include "scene/scene.hpp"
+
+#include <Eigen/Dense>
+#include <array>
+
+namespace isosid::run {
+
+/// Generalized forces in body components: on the frame (force, torque about the origin) and
+/// on the elastic coordinates.
+struct GeneralizedForce {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), torque = Eigen::Vector3d::Zero();
+  Eigen::VectorXd elastic;
+  void reset(Eigen::Index nq) {
+    force.setZero();
+    torque.setZero();
+    elastic.setZero(nq);
+  }
+};
+
+class FlexibleBody {
+public:
+  FlexibleBody(const FlexibleBodySpec& spec, format::Sid sid, Dimension dimension);
+
+  const std::string& name() const { return name_; }
+  const format::Sid& sid() const { return sid_; }
+  Eigen::Index nq() const { return sid_.nq(); }
+  /// Modes integrated in time (the leading ones); the rest are quasistatic, held outside the state.
+  Eigen::Index n_dynamic() const { return n_dynamic_; }
+  Eigen::Index n_quasistatic() const { return nq() - n_dynamic_; }
+  /// Entries in the state vector: 7 + n_dynamic positions, then 6 + n_dynamic velocities.
+  Eigen::Index state_size() const { return 13 + 2 * n_dynamic_; }
+  void set_offset(Eigen::Index offset) { offset_ = offset; }
+  Eigen::Index offset() const { return offset_; }
+
+  void initial_state(double* y) const;
+
+  // --- views of the state (y is the whole system state) ---
+  Eigen::Map<const Eigen::Vector3d> r(const double* y) const { return Eigen::Map<const Eigen::Vector3d>(y + offset_); }
+  Eigen::Quaterniond orientation(const double* y) const;
+  /// All nq elastic coordinates: the dynamic ones from y, the quasistatic ones as last set.
+  const Eigen::VectorXd& q(const double* y) const;
+  /// Elastic velocities (zero for quasistatic modes).
+  const Eigen::VectorXd& qdot(const double* y) const;
+  Eigen::Map<const Eigen::Vector3d> v(const double* y) const { return Eigen::Map<const Eigen::Vector3d>(y + offset_ + 7 + n_dynamic_); }
+  Eigen::Map<const Eigen::Vector3d> omega(const double* y) const { return Eigen::Map<const Eigen::Vector3d>(y + offset_ + 10 + n_dynamic_); }
+  /// The quasistatic modes' values (set by the quasistatic solve before each use of q).
+  Eigen::VectorXd& quasistatic_modes() const { return q_high_; }
+
+  /// Time derivative of this body's state under the applied forces `applied` (body frame)
+  /// and gravity (world); quasistatic modes carry no inertia (seed 001). Returns the
+  /// dissipated power of the modal damping.
+  double derivatives(const double* y, const GeneralizedForce& applied, const Eigen::Vector3d& gravity, double* ydot) const;
+
+  // --- energies ---
+  double kinetic_energy(const double* y) const;
+  double elastic_energy(const double* y) const;
+  double gravity_potential(const double* y, const Eigen::Vector3d& gravity) const;
+
+  // --- points of the body ---
+  /// Body-frame position (3D) of a point with reference position c (dim) and shape rows Psi.
+  Eigen::Vector3d body_point(const Eigen::VectorXd& c, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const double* y) const;
+  /// World velocity of that point.
+  Eigen::Vector3d point_velocity(const Eigen::Vector3d& body_point, const Eigen::Ref<const Eigen::MatrixXd>& Psi,
+                                 const double* y) const;
+  /// Adds a world force F at a body point with shape rows Psi to the generalized forces.
+  void apply_force(const Eigen::Vector3d& F_world, const Eigen::Vector3d& body_point,
+                   const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Matrix3d& A, GeneralizedForce& f) const;
+
+  /// Position and velocity (world) of a SID node.
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> node_state(const format::Node& node, const double* y) const;
+  const format::Node* node(const std::string& name) const;
+  const format::ContactSurface* contact_surface(const std::string& name) const;
+  const std::array<bool, 6>& locked() const { return locked_; }
+
+private:
+  std::string name_;
+  format::Sid sid_;
+  FlexibleBodySpec spec_;
+  std::array<bool, 6> locked_{};  ///< x y z rx ry rz (body-frame accelerations)
+  bool rotates_ = true;           ///< false if all rotations are locked: rotational terms vanish
+  Eigen::Index offset_ = 0;
+  Eigen::Index n_dynamic_ = 0;
+  mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
+};
+
+/// Rotation matrix of Tait-Bryan angles (x, y, z): Rx(a) Ry(b) Rz(c) (seed 000 eq. 20).
+Eigen::Matrix3d tait_bryan_matrix(const Eigen::Vector3d& angles);
+/// Inverse of tait_bryan_matrix (beta in [-pi/2, pi/2]).
+Eigen::Vector3d tait_bryan_angles(const Eigen::Matrix3d& A);
+Eigen::Matrix3d skew(const Eigen::Vector3d& v);
+
+}  // namespace isosid::run

@@ -1,0 +1,225 @@
+// Recording and reporting a run; see recorder.hpp.
+#include "output/recorder.hpp"
+
+#include "isosid/format/atomic_output.hpp"
+#include "isosid/format/error.hpp"
+#include "isosid/format/hdf5_file.hpp"
+
+#include <cmath>
+#include <optional>
+
+namespace isosid::run {
+
+Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(system), scene_(scene) {
+  const std::size_t nc = system.contacts().size();
+  contact_force_.resize(nc);
+  contact_points_.resize(nc);
+  contact_penetration_.resize(nc);
+  intervals_.resize(nc);
+  peak_force_.assign(nc, 0);
+  impulse_.assign(nc, 0);
+  max_penetration_.assign(nc, 0);
+  active_.assign(nc, false);
+  last_force_.assign(nc, 0);
+  for (const MonitorSpec& m : scene.monitors) {
+    const FlexibleBody& b = system.body(m.body);
+    const format::Node* node = b.node(m.node);
+    if (!node) throw format::InputError(scene.file, "monitor " + m.name, "the SID of '" + m.body + "' has no node '" + m.node + "'");
+    monitor_bodies_.push_back(&b);
+    monitor_nodes_.push_back(node);
+  }
+  monitor_values_.resize(scene.monitors.size());
+  monitor_reversal_.assign(scene.monitors.size(), -1);
+  monitor_initial_.resize(scene.monitors.size());
+  monitor_last_.resize(scene.monitors.size());
+}
+
+void Recorder::sample(double t, const double* y) {
+  time_.push_back(t);
+  body_states_.emplace_back(y, y + system_.size());
+  const auto states = system_.contact_states(y);
+  for (std::size_t k = 0; k < states.size(); ++k) {
+    for (int a = 0; a < 3; ++a) contact_force_[k].push_back(states[k].force(a));
+    contact_points_[k].push_back(states[k].active_points);
+    contact_penetration_[k].push_back(states[k].max_penetration);
+  }
+  const Energies e = system_.energies(y);
+  energies_.push_back({e.kinetic, e.elastic, e.gravity, e.penalty, e.dissipated, e.total()});
+  for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
+    const auto [pos, vel] = monitor_bodies_[m]->node_state(*monitor_nodes_[m], y);
+    const Eigen::Vector3d value = scene_.monitors[m].quantity == "velocity" ? vel : pos;
+    for (int a = 0; a < 3; ++a) monitor_values_[m].push_back(value(a));
+    if (time_.size() == 1) monitor_initial_[m] = monitor_last_[m] = value;
+  }
+}
+
+void Recorder::step(double t, const double* y) {
+  const auto states = system_.contact_states(y);
+  const double dt = t - last_step_t_;
+  for (std::size_t k = 0; k < states.size(); ++k) {
+    const double f = states[k].force.norm();
+    peak_force_[k] = std::max(peak_force_[k], f);
+    impulse_[k] += 0.5 * (f + last_force_[k]) * dt;  // trapezoid over accepted steps
+    last_force_[k] = f;
+    max_penetration_[k] = std::max(max_penetration_[k], states[k].max_penetration);
+  }
+  for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
+    if (scene_.monitors[m].quantity != "velocity" || monitor_reversal_[m] >= 0) continue;
+    const Eigen::Vector3d v = monitor_bodies_[m]->node_state(*monitor_nodes_[m], y).second;
+    const Eigen::Vector3d& v0 = monitor_initial_[m];
+    const double now = v.dot(v0), before = monitor_last_[m].dot(v0);
+    if (v0.squaredNorm() > 0 && now < 0 && before >= 0)  // linear interpolation of the sign change
+      monitor_reversal_[m] = last_step_t_ + dt * before / (before - now);
+    monitor_last_[m] = v;
+  }
+  last_step_t_ = t;
+}
+
+void Recorder::contact_event(int k, double t) {
+  auto& list = intervals_[std::size_t(k)];
+  if (!active_[std::size_t(k)])
+    list.push_back({t, -1});
+  else if (!list.empty())
+    list.back().end = t;
+  active_[std::size_t(k)] = !active_[std::size_t(k)];
+}
+
+double Recorder::max_relative_energy_error() const {
+  if (energies_.empty()) return 0;
+  const double e0 = energies_.front()[5];
+  double worst = 0;
+  for (const auto& e : energies_) worst = std::max(worst, std::abs(e[5] - e0));
+  return e0 != 0 ? worst / std::abs(e0) : worst;
+}
+
+void Recorder::write_results(const std::string& path) const {
+  format::AtomicOutput out(path);
+  {
+    format::h5::Writer w(out.temp_path());
+    const auto n = Eigen::Index(time_.size());
+    w.vector("/time", Eigen::Map<const Eigen::VectorXd>(time_.data(), n), "s");
+    for (const auto& b : system_.bodies()) {
+      const std::string g = "/bodies/" + b->name();
+      Eigen::MatrixXd r(n, 3), angles(n, 3), quat(n, 4), v(n, 3), w3(n, 3), q(n, b->nq()), qd(n, b->nq());
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const double* y = body_states_[std::size_t(i)].data();
+        r.row(i) = b->r(y).transpose();
+        const Eigen::Quaterniond p = b->orientation(y);
+        quat.row(i) << p.w(), p.x(), p.y(), p.z();
+        angles.row(i) = tait_bryan_angles(p.toRotationMatrix()).transpose();
+        v.row(i) = b->v(y).transpose();
+        w3.row(i) = b->omega(y).transpose();
+        q.row(i) = b->q(y).transpose();
+        qd.row(i) = b->qdot(y).transpose();
+      }
+      w.group(g);
+      w.matrix(g + "/position", r, "m");
+      w.matrix(g + "/quaternion", quat, "1");
+      w.matrix(g + "/tait_bryan", angles, "rad");
+      w.matrix(g + "/velocity", v, "m/s");
+      w.matrix(g + "/angular_velocity", w3, "rad/s");
+      w.matrix(g + "/q", q, "[q]");
+      w.matrix(g + "/qdot", qd, "[q]/s");
+    }
+    for (std::size_t k = 0; k < system_.contacts().size(); ++k) {
+      const std::string g = "/contacts/" + system_.contacts()[k].name();
+      w.group(g);
+      w.matrix(g + "/force", Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(contact_force_[k].data(), n, 3), "N");
+      w.vector(g + "/active_points", Eigen::Map<const Eigen::VectorXd>(contact_points_[k].data(), n), "1");
+      w.vector(g + "/max_penetration", Eigen::Map<const Eigen::VectorXd>(contact_penetration_[k].data(), n), "m");
+    }
+    Eigen::MatrixXd e(n, 6);
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (int c = 0; c < 6; ++c) e(i, c) = energies_[std::size_t(i)][std::size_t(c)];
+    w.group("/energy");
+    const char* names[6] = {"kinetic", "elastic", "gravity", "penalty", "dissipated", "total"};
+    for (int c = 0; c < 6; ++c) w.vector(std::string("/energy/") + names[c], e.col(c), "J");
+    for (std::size_t m = 0; m < monitor_values_.size(); ++m) {
+      const std::string g = "/monitors/" + scene_.monitors[m].name;
+      w.matrix(g, Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(monitor_values_[m].data(), n, 3),
+               scene_.monitors[m].quantity == "velocity" ? "m/s" : "m");
+    }
+    w.close();
+  }
+  out.commit();
+}
+
+nlohmann::json Recorder::summary(const IntegratorStats& stats, double wall_time, const double* y,
+                                 const std::string& status) const {
+  using nlohmann::json;
+  json j;
+  j["scene"] = scene_.file;
+  j["status"] = status;
+  j["wall_time_s"] = wall_time;
+  j["end_time_s"] = time_.empty() ? 0.0 : time_.back();
+  j["steps"] = stats.steps;
+  j["rejected_steps"] = stats.attempts - stats.steps;
+  j["rhs_evaluations"] = stats.rhs_evaluations;
+  j["newton_iterations"] = stats.newton_iterations + system_.quasistatic_iterations();
+  j["jacobian_setups"] = stats.jacobian_setups;
+  j["time_per_step_s"] = stats.steps ? wall_time / double(stats.steps) : 0.0;
+  j["contacts"] = json::array();
+  for (std::size_t k = 0; k < system_.contacts().size(); ++k) {
+    json c;
+    c["name"] = system_.contacts()[k].name();
+    const auto& list = intervals_[k];
+    c["start_s"] = list.empty() ? json(nullptr) : json(list.front().start);
+    c["end_s"] = list.empty() || list.back().end < 0 ? json(nullptr) : json(list.back().end);
+    // one impact may open and close several times at onset (single Gauss points bouncing):
+    // the contact lasts from the first onset to the last release
+    c["duration_s"] = list.empty() || list.back().end < 0 ? json(nullptr) : json(list.back().end - list.front().start);
+    c["intervals"] = list.size();
+    c["peak_force_n"] = peak_force_[k];
+    c["impulse_ns"] = impulse_[k];
+    c["max_penetration_m"] = max_penetration_[k];
+    j["contacts"].push_back(c);
+  }
+  j["bodies"] = json::array();
+  for (const auto& b : system_.bodies()) {
+    const Eigen::Vector3d v = b->v(y), w = b->omega(y), r = b->r(y);
+    j["bodies"].push_back({{"name", b->name()},
+                           {"final_position", {r.x(), r.y(), r.z()}},
+                           {"final_velocity", {v.x(), v.y(), v.z()}},
+                           {"final_angular_velocity", {w.x(), w.y(), w.z()}}});
+  }
+  const double e0 = energies_.empty() ? 0.0 : energies_.front()[5], e1 = energies_.empty() ? 0.0 : energies_.back()[5];
+  j["energy"] = {{"initial_j", e0}, {"final_j", e1}, {"max_rel_error", max_relative_energy_error()},
+                 {"dissipated_j", energies_.empty() ? 0.0 : energies_.back()[4]}};
+  j["monitors"] = json::array();
+  for (std::size_t m = 0; m < monitor_values_.size(); ++m) {
+    const auto& v = monitor_values_[m];
+    json mon = {{"name", scene_.monitors[m].name}, {"quantity", scene_.monitors[m].quantity}};
+    if (!v.empty()) mon["final"] = {v[v.size() - 3], v[v.size() - 2], v[v.size() - 1]};
+    mon["reversal_s"] = monitor_reversal_[m] >= 0 ? json(monitor_reversal_[m]) : json(nullptr);
+    j["monitors"].push_back(mon);
+  }
+  // comparison with [reference]
+  json cmp = json::object();
+  auto measured = [&](const std::string& key) -> std::optional<double> {
+    const auto& c = j["contacts"];
+    const auto& b = j["bodies"][0];
+    if (key == "peak_force_n" && !c.empty()) return c[0]["peak_force_n"].get<double>();
+    if (key == "contact_time_s" && !c.empty() && !c[0]["duration_s"].is_null()) return c[0]["duration_s"].get<double>();
+    if (key == "contact_end_s" && !c.empty() && !c[0]["end_s"].is_null()) return c[0]["end_s"].get<double>();
+    if (key == "rebound_velocity_m_s") return Eigen::Vector3d(b["final_velocity"][0], b["final_velocity"][1], b["final_velocity"][2]).norm();
+    if (key == "final_velocity_x_m_s") return b["final_velocity"][0].get<double>();
+    if (key == "final_velocity_y_m_s") return b["final_velocity"][1].get<double>();
+    if (key == "final_velocity_z_m_s") return b["final_velocity"][2].get<double>();
+    if (key == "final_angular_velocity_rad_s") return b["final_angular_velocity"][2].get<double>();
+    if (key == "wave_arrival_s" && !j["monitors"].empty() && !j["monitors"][0]["reversal_s"].is_null())
+      return j["monitors"][0]["reversal_s"].get<double>();
+    return std::nullopt;
+  };
+  for (const auto& [key, ref] : scene_.reference) {
+    const auto value = measured(key);
+    json entry = {{"reference", ref}};
+    entry["value"] = value ? json(*value) : json(nullptr);
+    entry["rel_error"] = value && ref != 0 ? json(std::abs(*value - ref) / std::abs(ref)) : json(nullptr);
+    if (value && ref == 0) entry["abs_error"] = std::abs(*value);
+    cmp[key] = entry;
+  }
+  j["reference"] = cmp;
+  return j;
+}
+
+}  // namespace isosid::run

@@ -1,0 +1,58 @@
+// Everything a run reports: time series at the output interval (states, contact forces,
+// energies, monitors), per-step contact statistics (onset, release, peak force, impulse),
+// monitor reversals, and the comparison with the scene's reference values.
+#pragma once
+#include "scene/scene.hpp"
+#include "solve/multibody_system.hpp"
+#include "solve/time_integrator.hpp"
+
+#include <array>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace isosid::run {
+
+struct ContactInterval {
+  double start = 0, end = -1;  ///< end < 0: still in contact
+};
+
+class Recorder {
+public:
+  Recorder(const MultibodySystem& system, const Scene& scene);
+
+  /// Time-series sample (called at output times and at events).
+  void sample(double t, const double* y);
+  /// Per accepted step: peak force, impulse, monitor reversals.
+  void step(double t, const double* y);
+  /// A contact's gap changed sign at t (onset or release).
+  void contact_event(int contact, double t);
+
+  /// results.h5: written to a temporary file and renamed (never half-written).
+  void write_results(const std::string& path) const;
+  nlohmann::json summary(const IntegratorStats& stats, double wall_time, const double* y_final,
+                         const std::string& status) const;
+  double max_relative_energy_error() const;
+
+private:
+  const MultibodySystem& system_;
+  const Scene& scene_;
+  // time series
+  std::vector<double> time_;
+  std::vector<std::vector<double>> body_states_;  ///< per sample: all states
+  std::vector<std::vector<double>> contact_force_, contact_points_, contact_penetration_;
+  std::vector<std::array<double, 6>> energies_;   ///< kinetic, elastic, gravity, penalty, dissipated, total
+  std::vector<std::vector<double>> monitor_values_;  ///< per monitor: 3 per sample
+  // per-step statistics
+  std::vector<std::vector<ContactInterval>> intervals_;
+  std::vector<double> peak_force_, impulse_, max_penetration_;
+  std::vector<bool> active_;
+  double last_step_t_ = 0;
+  std::vector<double> last_force_;
+  std::vector<double> monitor_reversal_;            ///< first sign change against the initial value
+  std::vector<Eigen::Vector3d> monitor_initial_, monitor_last_;
+  std::vector<const format::Node*> monitor_nodes_;
+  std::vector<const FlexibleBody*> monitor_bodies_;
+};
+
+}  // namespace isosid::run

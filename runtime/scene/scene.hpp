@@ -1,0 +1,77 @@
+// A scene: what isosid-run simulates (bodies from SIDs, fixed surfaces, contacts, gravity,
+// monitors, integrator settings) and the reference values the results are compared with.
+#pragma once
+#include <Eigen/Dense>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace isosid::run {
+
+enum class Dimension { Planar, Axisymmetric, Solid };
+enum class IntegratorKind { DormandPrince, Implicit };
+
+struct SimulationSettings {
+  Dimension dimension = Dimension::Solid;
+  double end_time = 0;          ///< s
+  IntegratorKind integrator = IntegratorKind::DormandPrince;
+  double rtol = 1e-6, atol = 1e-9;
+  double max_step = 0;          ///< s, 0: unlimited
+  double output_interval = 0;   ///< s
+};
+
+struct FlexibleBodySpec {
+  std::string name;
+  std::string sid_file;         ///< absolute or relative to the scene file, resolved
+  std::string model_file;       ///< optional: rebuild the SID from it when missing or stale
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d tait_bryan = Eigen::Vector3d::Zero();  ///< rad, x-y-z (seed 000 eq. 20)
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();    ///< m/s, world frame
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< rad/s, body frame
+  Eigen::VectorXd q0, qdot0;    ///< initial elastic state (empty: zero)
+  std::vector<std::string> locked;  ///< extra locked DOFs: x y z rx ry rz
+  /// How the high-frequency modes move: "dynamic" (integrated, damped by De) or
+  /// "quasistatic" (solved from the static sub-problem each evaluation; seed 001).
+  std::string high_modes = "dynamic";
+  double quasistatic_above_hz = -1;  ///< > 0: modes above this frequency are the high ones
+};
+
+struct PlaneSpec {
+  std::string name;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< unit, pointing out of the surface
+};
+
+struct ContactSpec {
+  std::string name;
+  std::string body, surface;    ///< slave: a flexible body and a contact surface of its SID
+  std::string target;           ///< master: a fixed surface
+  double penalty = 0;           ///< N/m^3 (pressure per penetration)
+  double friction = 0;          ///< Coulomb coefficient
+  double regularization = 1e-6; ///< m/s, velocity below which friction is regularized
+};
+
+struct MonitorSpec {
+  std::string name;
+  std::string body, node;
+  std::string quantity = "velocity";  ///< position | velocity
+};
+
+struct Scene {
+  std::string file;
+  SimulationSettings simulation;
+  std::vector<FlexibleBodySpec> bodies;
+  std::vector<PlaneSpec> planes;
+  std::vector<ContactSpec> contacts;
+  std::vector<MonitorSpec> monitors;
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+  std::map<std::string, double> reference;  ///< [reference] values, e.g. peak_force_n
+};
+
+/// Reads and validates a scene file; paths are resolved relative to it.
+Scene read_scene_file(const std::string& path);
+
+std::string to_string(Dimension d);
+
+}  // namespace isosid::run

@@ -1,0 +1,51 @@
+// The simulated system: flexible bodies, fixed surfaces and contacts, as one first-order ODE
+// y' = f(t, y) whose last entry integrates the dissipated energy (modal damping + friction),
+// so that the energy balance can be checked to integration accuracy.
+#pragma once
+#include "body/flexible_body.hpp"
+#include "contact/plane_contact.hpp"
+#include "scene/scene.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace isosid::run {
+
+struct Energies {
+  double kinetic = 0, elastic = 0, gravity = 0, penalty = 0, dissipated = 0;
+  double total() const { return kinetic + elastic + gravity + penalty + dissipated; }
+};
+
+class MultibodySystem {
+public:
+  MultibodySystem(const Scene& scene, std::vector<format::Sid> sids);
+
+  Eigen::Index size() const { return size_; }
+  void initial_state(double* y) const;
+  /// Right-hand side; reuses preallocated force buffers (no allocation per call).
+  void rhs(double t, const double* y, double* ydot) const;
+  /// One gap function per contact (for event location): the smallest signed gap.
+  void gaps(const double* y, double* g) const;
+  /// Contact states and energies at y (for output).
+  std::vector<ContactState> contact_states(const double* y) const;
+  Energies energies(const double* y) const;
+
+  const std::vector<std::unique_ptr<FlexibleBody>>& bodies() const { return bodies_; }
+  const std::vector<PlaneContact>& contacts() const { return contacts_; }
+  const FlexibleBody& body(const std::string& name) const;
+  /// Newton iterations of the quasistatic modes so far.
+  long quasistatic_iterations() const { return quasistatic_iterations_; }
+
+private:
+  /// Solves every body's quasistatic modes for state y (they depend on the contacts).
+  void update_quasistatic(const double* y) const;
+  std::vector<std::unique_ptr<FlexibleBody>> bodies_;
+  std::vector<PlaneContact> contacts_;
+  Eigen::Vector3d gravity_;
+  Eigen::Index size_ = 0;
+  mutable std::vector<GeneralizedForce> forces_;
+  std::vector<std::vector<const PlaneContact*>> body_contacts_;  ///< contacts of each body
+  mutable long quasistatic_iterations_ = 0;
+};
+
+}  // namespace isosid::run

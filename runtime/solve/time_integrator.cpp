@@ -1,0 +1,145 @@
+// ARKODE wrappers; see time_integrator.hpp.
+#include "solve/time_integrator.hpp"
+
+#include "isosid/format/error.hpp"
+
+#include <arkode/arkode_arkstep.h>
+#include <arkode/arkode_erkstep.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <cmath>
+
+namespace isosid::run {
+
+struct TimeIntegrator::Impl {
+  const MultibodySystem& system;
+  bool implicit;
+  SUNContext context = nullptr;
+  N_Vector y = nullptr;
+  void* memory = nullptr;
+  SUNMatrix matrix = nullptr;
+  SUNLinearSolver linear_solver = nullptr;
+  TimeIntegrator* owner = nullptr;
+
+  Impl(const MultibodySystem& s, bool imp) : system(s), implicit(imp) {}
+  ~Impl() {
+    if (memory) implicit ? ARKStepFree(&memory) : ERKStepFree(&memory);
+    if (linear_solver) SUNLinSolFree(linear_solver);
+    if (matrix) SUNMatDestroy(matrix);
+    if (y) N_VDestroy(y);
+    if (context) SUNContext_Free(&context);
+  }
+
+  static int rhs(realtype t, N_Vector y, N_Vector ydot, void* data) {
+    const Impl* self = static_cast<const Impl*>(data);
+    const double* yy = N_VGetArrayPointer(y);
+    for (Eigen::Index i = 0; i < N_VGetLength(y); ++i)
+      if (!std::isfinite(yy[i])) return 1;  // recoverable: the step is retried smaller
+    self->system.rhs(t, yy, N_VGetArrayPointer(ydot));
+    return 0;
+  }
+  static int roots(realtype, N_Vector y, realtype* g, void* data) {
+    static_cast<const Impl*>(data)->system.gaps(N_VGetArrayPointer(y), g);
+    return 0;
+  }
+  static int post_step(realtype t, N_Vector y, void* data) {
+    const Impl* self = static_cast<const Impl*>(data);
+    if (self->owner->step_callback_) self->owner->step_callback_(t, N_VGetArrayPointer(y));
+    return 0;
+  }
+};
+
+namespace {
+void check(int flag, const char* what) {
+  if (flag < 0) throw format::ComputationError(std::string("SUNDIALS: ") + what + " failed (flag " + std::to_string(flag) + ")");
+}
+}  // namespace
+
+TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSettings& s, Eigen::VectorXd y0)
+    : impl_(std::make_unique<Impl>(system, s.integrator == IntegratorKind::Implicit)), y_(std::move(y0)) {
+  Impl& m = *impl_;
+  m.owner = this;
+  check(SUNContext_Create(nullptr, &m.context), "context");
+  m.y = N_VMake_Serial(y_.size(), y_.data(), m.context);  // shares y_'s storage
+  const int n_roots = int(system.contacts().size());
+  if (m.implicit) {
+    m.memory = ARKStepCreate(nullptr, Impl::rhs, 0.0, m.y, m.context);
+    if (!m.memory) throw format::ComputationError("SUNDIALS: ARKStepCreate failed");
+    check(ARKStepSetUserData(m.memory, &m), "user data");
+    check(ARKStepSStolerances(m.memory, s.rtol, s.atol), "tolerances");
+    check(ARKStepSetMaxStep(m.memory, s.max_step), "max step");
+    check(ARKStepSetMaxNumSteps(m.memory, 50'000'000), "max steps");
+    check(ARKStepSetStopTime(m.memory, s.end_time), "stop time");
+    // a stiffly accurate, L-stable ESDIRK of order 3: damps the high Craig-Bampton modes
+    check(ARKStepSetTableNum(m.memory, ARKODE_ESDIRK324L2SA_4_2_3, ARKODE_ERK_NONE), "table");
+    m.matrix = SUNDenseMatrix(y_.size(), y_.size(), m.context);
+    m.linear_solver = SUNLinSol_Dense(m.y, m.matrix, m.context);
+    check(ARKStepSetLinearSolver(m.memory, m.linear_solver, m.matrix), "linear solver");
+    check(ARKStepSetPostprocessStepFn(m.memory, Impl::post_step), "post-step hook");
+    if (n_roots) {
+      check(ARKStepRootInit(m.memory, n_roots, Impl::roots), "root finding");
+      check(ARKStepSetNoInactiveRootWarn(m.memory), "root warnings");
+    }
+  } else {
+    m.memory = ERKStepCreate(Impl::rhs, 0.0, m.y, m.context);
+    if (!m.memory) throw format::ComputationError("SUNDIALS: ERKStepCreate failed");
+    check(ERKStepSetUserData(m.memory, &m), "user data");
+    check(ERKStepSetTableNum(m.memory, ARKODE_DORMAND_PRINCE_7_4_5), "Dormand-Prince table");
+    check(ERKStepSStolerances(m.memory, s.rtol, s.atol), "tolerances");
+    check(ERKStepSetMaxStep(m.memory, s.max_step), "max step");
+    check(ERKStepSetMaxNumSteps(m.memory, 50'000'000), "max steps");
+    check(ERKStepSetStopTime(m.memory, s.end_time), "stop time");
+    check(ERKStepSetPostprocessStepFn(m.memory, Impl::post_step), "post-step hook");
+    if (n_roots) {
+      check(ERKStepRootInit(m.memory, n_roots, Impl::roots), "root finding");
+      check(ERKStepSetNoInactiveRootWarn(m.memory), "root warnings");
+    }
+  }
+}
+
+TimeIntegrator::~TimeIntegrator() = default;
+
+std::vector<int> TimeIntegrator::advance(double tout, double& t) {
+  Impl& m = *impl_;
+  realtype reached = t;
+  const int flag = m.implicit ? ARKStepEvolve(m.memory, tout, m.y, &reached, ARK_NORMAL)
+                              : ERKStepEvolve(m.memory, tout, m.y, &reached, ARK_NORMAL);
+  t = reached;
+  if (flag < 0)
+    throw format::ComputationError("time integration failed at t = " + std::to_string(reached) + " s (SUNDIALS flag " +
+                                   std::to_string(flag) + (flag == -4 ? ": error test failed repeatedly, the step size "
+                                                                        "fell to its minimum (penalty too stiff?)" : "") + ")");
+  std::vector<int> changed;
+  if (flag == ARK_ROOT_RETURN) {
+    std::vector<int> info(m.system.contacts().size());
+    m.implicit ? ARKStepGetRootInfo(m.memory, info.data()) : ERKStepGetRootInfo(m.memory, info.data());
+    for (std::size_t k = 0; k < info.size(); ++k)
+      if (info[k] != 0) changed.push_back(int(k));
+  }
+  return changed;
+}
+
+IntegratorStats TimeIntegrator::stats() const {
+  const Impl& m = *impl_;
+  IntegratorStats s;
+  long fe = 0, fi = 0;
+  if (m.implicit) {
+    ARKStepGetNumSteps(m.memory, &s.steps);
+    ARKStepGetNumStepAttempts(m.memory, &s.attempts);
+    ARKStepGetNumRhsEvals(m.memory, &fe, &fi);
+    s.rhs_evaluations = fe + fi;
+    ARKStepGetNumErrTestFails(m.memory, &s.error_test_failures);
+    ARKStepGetNumNonlinSolvIters(m.memory, &s.newton_iterations);
+    ARKStepGetNumLinSolvSetups(m.memory, &s.jacobian_setups);
+  } else {
+    ERKStepGetNumSteps(m.memory, &s.steps);
+    ERKStepGetNumStepAttempts(m.memory, &s.attempts);
+    ERKStepGetNumRhsEvals(m.memory, &s.rhs_evaluations);
+    ERKStepGetNumErrTestFails(m.memory, &s.error_test_failures);
+  }
+  return s;
+}
+
+}  // namespace isosid::run

@@ -1,0 +1,42 @@
+// SUNDIALS ARKODE time integration of a MultibodySystem: explicit Dormand-Prince 5(4)
+// (ERKStep) or an implicit DIRK method with a dense Newton solver (ARKStep), both adaptive
+// with a maximum step, and with root finding on the contact gaps so that contact onset and
+// release are located.
+#pragma once
+#include "scene/scene.hpp"
+#include "solve/multibody_system.hpp"
+
+#include <functional>
+#include <memory>
+
+namespace isosid::run {
+
+struct IntegratorStats {
+  long steps = 0, attempts = 0, rhs_evaluations = 0, error_test_failures = 0;
+  long newton_iterations = 0, jacobian_setups = 0;
+};
+
+class TimeIntegrator {
+public:
+  TimeIntegrator(const MultibodySystem& system, const SimulationSettings& settings, Eigen::VectorXd y0);
+  ~TimeIntegrator();
+  TimeIntegrator(const TimeIntegrator&) = delete;
+  TimeIntegrator& operator=(const TimeIntegrator&) = delete;
+
+  /// Called after every accepted step with (t, y).
+  void on_step(std::function<void(double, const double*)> callback) { step_callback_ = std::move(callback); }
+
+  /// Advances toward tout. Returns the contacts whose gap changed sign (empty if tout was
+  /// reached); t and y() hold the state reached. Throws ComputationError on failure.
+  std::vector<int> advance(double tout, double& t);
+  const Eigen::VectorXd& y() const { return y_; }
+  IntegratorStats stats() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  Eigen::VectorXd y_;
+  std::function<void(double, const double*)> step_callback_;
+};
+
+}  // namespace isosid::run

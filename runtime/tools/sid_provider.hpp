@@ -1,0 +1,14 @@
+// Loads the SIDs of a scene; a body that names its model file gets its SID (re)built by
+// running isosid-prep as a subprocess when the SID is missing or older than the model, so
+// the runtime links no preprocessing code.
+#pragma once
+#include "isosid/format/sid.hpp"
+#include "scene/scene.hpp"
+
+#include <vector>
+
+namespace isosid::run {
+
+std::vector<format::Sid> load_sids(const Scene& scene, bool quiet);
+
+}  // namespace isosid::run
