@@ -17,6 +17,14 @@ inline prep::ModelSpec spec_for(prep::NurbsPatch patch, format::AnalysisType typ
   return s;
 }
 
+/// Elevation to `degrees`, then every span split into `parts` (per direction).
+inline prep::RefinementSpec uniform(std::vector<int> degrees, std::vector<int> parts) {
+  prep::RefinementSpec r;
+  r.degrees = std::move(degrees);
+  r.subdivisions = std::move(parts);
+  return r;
+}
+
 /// Nodes on any side of the body.
 inline std::vector<int> boundary_nodes(const prep::BodyModel& b) {
   std::vector<int> all;

@@ -11,13 +11,6 @@ using namespace isosid;
 using format::AnalysisType;
 
 namespace {
-prep::RefinementSpec uniform(std::vector<int> degrees, std::vector<int> parts) {
-  prep::RefinementSpec r;
-  r.degrees = std::move(degrees);
-  r.subdivisions = std::move(parts);
-  return r;
-}
-
 struct Spectrum {
   prep::ModalResult modes;
   double scale;
@@ -42,22 +35,22 @@ void check_rigid_modes(const Spectrum& s, int expected) {
 TEST_CASE("free bodies have 3 (2D), 6 (3D) and 1 (axisymmetric) rigid-body modes", "[modal]") {
   SECTION("plane strain disk") {
     const auto b = prep::build_body(test::spec_for(prep::primitives::disk(0.1), AnalysisType::PlaneStrain, 2.1e11, 0.3, 7850,
-                                                   uniform({4, 4}, {3, 3})));
+                                                   test::uniform({4, 4}, {3, 3})));
     check_rigid_modes(lowest(b, 8), 3);
   }
   SECTION("plane stress rectangle") {
     const auto b = prep::build_body(test::spec_for(prep::primitives::rectangle(0.3, 0.1), AnalysisType::PlaneStress, 7e10,
-                                                   0.33, 2700, uniform({2, 2}, {6, 2})));
+                                                   0.33, 2700, test::uniform({2, 2}, {6, 2})));
     check_rigid_modes(lowest(b, 8), 3);
   }
   SECTION("3D ball (revolved half-disk with merged axis and seam)") {
     const auto b = prep::build_body(test::spec_for(prep::primitives::ball(0.01), AnalysisType::Solid, 7.28e10, 0.33, 2789,
-                                                   uniform({2, 2, 2}, {2, 2, 1})));
+                                                   test::uniform({2, 2, 2}, {2, 2, 1})));
     check_rigid_modes(lowest(b, 10), 6);
   }
   SECTION("axisymmetric sphere") {
     const auto b = prep::build_body(test::spec_for(prep::primitives::half_disk(0.01), AnalysisType::Axisymmetric, 7.28e10,
-                                                   0.33, 2789, uniform({4, 3}, {3, 3})));
+                                                   0.33, 2789, test::uniform({4, 3}, {3, 3})));
     const auto s = lowest(b, 6);
     check_rigid_modes(s, 1);
     // Lamb's n = 2 spheroidal mode: omega r / c_s = 2.64 for nu = 0.33 -> 131.6 kHz; a coarse
@@ -74,7 +67,7 @@ TEST_CASE("free-free bar with nu = 0: longitudinal frequencies against n c / 2l"
   const double l = 1.0, E = 2e11, rho = 8000, c = std::sqrt(E / rho);
   const int N = 40;
   auto b = prep::build_body(test::spec_for(prep::primitives::rectangle(l, 0.02), AnalysisType::PlaneStress, E, 0.0,
-                                           rho, uniform({2, 1}, {N, 1})));
+                                           rho, test::uniform({2, 1}, {N, 1})));
   // u_y = 0 everywhere leaves modes symmetric (longitudinal) or antisymmetric through the
   // thickness, which the discrete operator does not couple: no mixing with bending modes.
   for (int n = 0; n < b.dofs.node_count(); ++n) b.dofs.fix(n, 1);
@@ -126,7 +119,7 @@ TEST_CASE("free-free bar with nu = 0: longitudinal frequencies against n c / 2l"
 
 TEST_CASE("Spectra shift-invert with CHOLMOD agrees with a dense generalized eigen solver", "[modal]") {
   const auto b = prep::build_body(test::spec_for(prep::primitives::disk(0.1), AnalysisType::PlaneStrain, 2.1e11, 0.3, 7850,
-                                                 uniform({3, 3}, {3, 3})));
+                                                 test::uniform({3, 3}, {3, 3})));
   const auto s = lowest(b, 12);
   const auto sys = prep::assemble_system(b.space, b.dofs, b.elasticity);
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Eigen::MatrixXd(sys.K), Eigen::MatrixXd(sys.M));

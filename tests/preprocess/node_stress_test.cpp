@@ -11,18 +11,9 @@
 using namespace isosid;
 using format::AnalysisType;
 
-namespace {
-prep::RefinementSpec uniform(std::vector<int> degrees, std::vector<int> parts) {
-  prep::RefinementSpec r;
-  r.degrees = std::move(degrees);
-  r.subdivisions = std::move(parts);
-  return r;
-}
-}  // namespace
-
 TEST_CASE("node phi and psi of a rigid rotation (3D)", "[sid][nodes]") {
   const auto b = prep::build_body(test::spec_for(prep::primitives::box(0.2, 0.1, 0.05), AnalysisType::Solid, 2.1e11, 0.3,
-                                                 7850, uniform({2, 2, 2}, {2, 2, 1})));
+                                                 7850, test::uniform({2, 2, 2}, {2, 2, 1})));
   // one "mode": infinitesimal rotation theta about the axis e, u = theta e x x
   const Eigen::Vector3d e = Eigen::Vector3d(1, -2, 0.5).normalized();
   Eigen::MatrixXd Phi(b.dofs.total_dofs(), 1);
@@ -37,7 +28,7 @@ TEST_CASE("node phi and psi of a rigid rotation (3D)", "[sid][nodes]") {
 
 TEST_CASE("node psi of an axisymmetric section is a rotation about z", "[sid][nodes]") {
   const auto b = prep::build_body(test::spec_for(prep::primitives::half_disk(0.01), AnalysisType::Axisymmetric, 7e10, 0.3,
-                                                 2700, uniform({3, 2}, {2, 2})));
+                                                 2700, test::uniform({3, 2}, {2, 2})));
   // u_r = 0, u_y = s r: shear of the section, rotation about z by s/2
   const double s = 1e-3;
   Eigen::MatrixXd Phi = Eigen::MatrixXd::Zero(b.dofs.total_dofs(), 1);
@@ -50,7 +41,7 @@ TEST_CASE("node psi of an axisymmetric section is a rotation about z", "[sid][no
 TEST_CASE("stress rows: uniform dilatation, and hoop = radial stress on the axis", "[sid][stress]") {
   const double E = 7e10, nu = 0.3;
   const auto b = prep::build_body(test::spec_for(prep::primitives::half_disk(0.01), AnalysisType::Axisymmetric, E, nu,
-                                                 2700, uniform({3, 2}, {2, 2})));
+                                                 2700, test::uniform({3, 2}, {2, 2})));
   // u = eps x (u_r = eps r, u_z = eps z): strain eps in rr, zz, tt; stress E eps / (1 - 2 nu)
   const double eps = 1e-4;
   Eigen::MatrixXd Phi(b.dofs.total_dofs(), 1);

@@ -17,13 +17,6 @@ using format::AnalysisType;
 
 namespace {
 
-prep::RefinementSpec uniform(std::vector<int> degrees, std::vector<int> parts) {
-  prep::RefinementSpec r;
-  r.degrees = std::move(degrees);
-  r.subdivisions = std::move(parts);
-  return r;
-}
-
 struct Fixture {
   prep::BodyModel body;
   prep::SystemMatrices sys;
@@ -71,7 +64,7 @@ void check_basis(const Fixture& f, const prep::ReducedBasis& r) {
 TEST_CASE("modal, Craig-Bampton and full bases are orthonormal, diagonal and in a Buckens frame", "[reduction]") {
   SECTION("free plane-strain disk") {
     const Fixture f = fixture(test::spec_for(prep::primitives::disk(0.1), AnalysisType::PlaneStrain, 2.1e11, 0.3, 7850,
-                                             uniform({3, 3}, {3, 3})));
+                                             test::uniform({3, 3}, {3, 3})));
     REQUIRE(f.rigid.cols() == 3);
     prep::ReductionRequest modal{"modal", 8, {}, ""};
     const auto m = prep::reduce(f.sys.K, f.sys.M, f.rigid, modal, f.scale);
@@ -90,7 +83,7 @@ TEST_CASE("modal, Craig-Bampton and full bases are orthonormal, diagonal and in 
   }
   SECTION("axisymmetric half-disk with the radial DOF fixed on the axis") {
     const Fixture f = fixture(test::spec_for(prep::primitives::half_disk(0.01), AnalysisType::Axisymmetric, 7.28e10, 0.33,
-                                             2789, uniform({3, 2}, {3, 3})));
+                                             2789, test::uniform({3, 2}, {3, 3})));
     REQUIRE(f.rigid.cols() == 1);
     prep::ReductionRequest cb{"craig-bampton", 4, interface_of(f.body, "lower"), ""};
     const auto c = prep::reduce(f.sys.K, f.sys.M, f.rigid, cb, f.scale);
@@ -101,7 +94,7 @@ TEST_CASE("modal, Craig-Bampton and full bases are orthonormal, diagonal and in 
 
 TEST_CASE("Craig-Bampton reproduces the full static deflection under interface loads", "[reduction]") {
   auto spec = test::spec_for(prep::primitives::rectangle(0.2, 0.02), AnalysisType::PlaneStress, 2.1e11, 0.3, 7850,
-                             uniform({3, 3}, {8, 2}));
+                             test::uniform({3, 3}, {8, 2}));
   spec.fixed = {{"left", {0, 1}}};
   const Fixture f = fixture(spec);
   REQUIRE(f.rigid.cols() == 0);  // clamped: no rigid-body field is admissible
@@ -122,7 +115,7 @@ TEST_CASE("Craig-Bampton reproduces the full static deflection under interface l
 TEST_CASE("Craig-Bampton eigenvalues bound the full ones from above and become exact with all interior modes",
           "[reduction]") {
   auto spec = test::spec_for(prep::primitives::rectangle(0.2, 0.02), AnalysisType::PlaneStress, 2.1e11, 0.3, 7850,
-                             uniform({2, 2}, {6, 1}));
+                             test::uniform({2, 2}, {6, 1}));
   spec.fixed = {{"left", {0, 1}}};
   const Fixture f = fixture(spec);
   const Eigen::MatrixXd Kd = f.sys.K, Md = f.sys.M;
