@@ -2,7 +2,6 @@
 #include "assemble/analysis_space.hpp"
 
 #include "assemble/bernstein.hpp"
-#include "refine/degree_elevation.hpp"
 
 #include <Eigen/LU>
 #include <cmath>

@@ -4,7 +4,6 @@
 #include "contact/quasistatic_modes.hpp"
 #include "isosid/format/error.hpp"
 
-#include <algorithm>
 
 namespace isosid::run {
 
@@ -26,7 +25,10 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   body_contacts_.resize(bodies_.size());
   for (const PlaneContact& c : contacts_)
     for (std::size_t i = 0; i < bodies_.size(); ++i)
-      if (bodies_[i].get() == &c.body()) body_contacts_[i].push_back(&c);
+      if (bodies_[i].get() == &c.body()) {
+        body_contacts_[i].push_back(&c);
+        contact_body_.push_back(i);
+      }
 }
 
 void MultibodySystem::update_quasistatic(const double* y) const {
@@ -49,10 +51,8 @@ void MultibodySystem::rhs(double, const double* y, double* ydot) const {
   update_quasistatic(y);
   for (std::size_t i = 0; i < bodies_.size(); ++i) forces_[i].reset(bodies_[i]->nq());
   double dissipation = 0;
-  for (const PlaneContact& c : contacts_) {
-    const std::size_t i = std::size_t(std::find_if(bodies_.begin(), bodies_.end(), [&](const auto& b) { return b.get() == &c.body(); }) - bodies_.begin());
-    dissipation += c.apply(y, forces_[i]).friction_power;
-  }
+  for (std::size_t k = 0; k < contacts_.size(); ++k)
+    dissipation += contacts_[k].apply(y, forces_[contact_body_[k]]).friction_power;
   for (std::size_t i = 0; i < bodies_.size(); ++i) dissipation += bodies_[i]->derivatives(y, forces_[i], gravity_, ydot);
   ydot[size_ - 1] = dissipation;
 }

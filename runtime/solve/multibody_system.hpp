@@ -45,6 +45,7 @@ private:
   Eigen::Index size_ = 0;
   mutable std::vector<GeneralizedForce> forces_;
   std::vector<std::vector<const PlaneContact*>> body_contacts_;  ///< contacts of each body
+  std::vector<std::size_t> contact_body_;                        ///< body index of each contact
   mutable long quasistatic_iterations_ = 0;
 };
 
