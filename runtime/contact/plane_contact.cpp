@@ -80,6 +80,18 @@ void PlaneContact::add_quasistatic_terms(const double* y, Eigen::Index first, Ei
   }
 }
 
+double PlaneContact::penalty_energy(const double* y) const {
+  const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
+  const Eigen::Vector3d r = body_.r(y);
+  double energy = 0;
+  for (Eigen::Index g = 0; g < surface_.points(); ++g) {
+    const auto Psi = surface_.Psi.middleRows(g * dim_, dim_);
+    const double gap = plane_.normal.dot(r + A * body_.body_point(surface_.position.row(g).transpose(), Psi, y) - plane_.point);
+    if (gap < 0) energy += 0.5 * spec_.penalty * gap * gap * surface_.weight(g);
+  }
+  return energy;
+}
+
 double PlaneContact::min_gap(const double* y) const {
   const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
   const Eigen::Vector3d r = body_.r(y);

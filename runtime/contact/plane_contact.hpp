@@ -28,6 +28,9 @@ public:
   /// forces Psi_h^T F_K to `force` and -d(Psi_h^T F_K)/dq_h (the contact stiffness, incl. the
   /// normal-force dependence of friction) to `stiffness`, at the body's current mode values.
   void add_quasistatic_terms(const double* y, Eigen::Index first, Eigen::VectorXd& force, Eigen::MatrixXd& stiffness) const;
+  /// Penalty energy sum 1/2 c_p g^2 w at y (with the body's current quasistatic modes).
+  double penalty_energy(const double* y) const;
+  bool frictionless() const { return spec_.friction == 0; }
   /// Smallest signed gap over the contact points (negative: penetration), for event location.
   double min_gap(const double* y) const;
 
