@@ -30,6 +30,7 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
   }
   monitor_values_.resize(scene.monitors.size());
   monitor_reversal_.assign(scene.monitors.size(), -1);
+  monitor_arrival_.assign(scene.monitors.size(), -1);
   monitor_initial_.resize(scene.monitors.size());
   monitor_last_.resize(scene.monitors.size());
 }
@@ -67,8 +68,13 @@ void Recorder::step(double t, const double* y) {
     if (scene_.monitors[m].quantity != "velocity" || monitor_reversal_[m] >= 0) continue;
     const Eigen::Vector3d v = monitor_bodies_[m]->node_state(*monitor_nodes_[m], y).second;
     const Eigen::Vector3d& v0 = monitor_initial_[m];
+    const double v0v0 = v0.squaredNorm();
     const double now = v.dot(v0), before = monitor_last_[m].dot(v0);
-    if (v0.squaredNorm() > 0 && now < 0 && before >= 0)  // linear interpolation of the sign change
+    // arrival of a wave front: the velocity first leaves its initial value by 1 % (interpolated)
+    const double change_now = 1 - now / std::max(v0v0, 1e-300), change_before = 1 - before / std::max(v0v0, 1e-300);
+    if (v0v0 > 0 && monitor_arrival_[m] < 0 && change_now > 0.01 && change_before <= 0.01)
+      monitor_arrival_[m] = last_step_t_ + dt * (0.01 - change_before) / (change_now - change_before);
+    if (v0v0 > 0 && now < 0 && before >= 0)  // reversal: linear interpolation of the sign change
       monitor_reversal_[m] = last_step_t_ + dt * before / (before - now);
     monitor_last_[m] = v;
   }
@@ -190,6 +196,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, double wall_time,
     const auto& v = monitor_values_[m];
     json mon = {{"name", scene_.monitors[m].name}, {"quantity", scene_.monitors[m].quantity}};
     if (!v.empty()) mon["final"] = {v[v.size() - 3], v[v.size() - 2], v[v.size() - 1]};
+    mon["arrival_s"] = monitor_arrival_[m] >= 0 ? json(monitor_arrival_[m]) : json(nullptr);
     mon["reversal_s"] = monitor_reversal_[m] >= 0 ? json(monitor_reversal_[m]) : json(nullptr);
     j["monitors"].push_back(mon);
   }
@@ -206,8 +213,8 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, double wall_time,
     if (key == "final_velocity_y_m_s") return b["final_velocity"][1].get<double>();
     if (key == "final_velocity_z_m_s") return b["final_velocity"][2].get<double>();
     if (key == "final_angular_velocity_rad_s") return b["final_angular_velocity"][2].get<double>();
-    if (key == "wave_arrival_s" && !j["monitors"].empty() && !j["monitors"][0]["reversal_s"].is_null())
-      return j["monitors"][0]["reversal_s"].get<double>();
+    if (key == "wave_arrival_s" && !j["monitors"].empty() && !j["monitors"][0]["arrival_s"].is_null())
+      return j["monitors"][0]["arrival_s"].get<double>();
     return std::nullopt;
   };
   for (const auto& [key, ref] : scene_.reference) {

@@ -50,6 +50,7 @@ private:
   double last_step_t_ = 0;
   std::vector<double> last_force_;
   std::vector<double> monitor_reversal_;            ///< first sign change against the initial value
+  std::vector<double> monitor_arrival_;             ///< first departure by 1 % of the initial value (a wave front)
   std::vector<Eigen::Vector3d> monitor_initial_, monitor_last_;
   std::vector<const format::Node*> monitor_nodes_;
   std::vector<const FlexibleBody*> monitor_bodies_;
