@@ -21,16 +21,22 @@ PlaneContact::PlaneContact(const ContactSpec& spec, const FlexibleBody& body, co
     throw format::InputError(spec.name, "target", "an axisymmetric body can only touch planes normal to its axis (y)");
 }
 
-ContactState PlaneContact::apply(const double* y, GeneralizedForce& f) const {
-  ContactState s;
+template <class F>
+void PlaneContact::for_each_point(const double* y, F&& f) const {
   const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
   const Eigen::Vector3d r = body_.r(y);
-  const Eigen::Vector3d& n = plane_.normal;
   for (Eigen::Index g = 0; g < surface_.points(); ++g) {
     const auto Psi = surface_.Psi.middleRows(g * dim_, dim_);
     const Eigen::Vector3d P = body_.body_point(surface_.position.row(g).transpose(), Psi, y);
-    const double gap = n.dot(r + A * P - plane_.point);
-    if (gap >= 0) continue;
+    f(g, Psi, P, plane_.normal.dot(r + A * P - plane_.point), A);
+  }
+}
+
+ContactState PlaneContact::apply(const double* y, GeneralizedForce& f) const {
+  ContactState s;
+  const Eigen::Vector3d& n = plane_.normal;
+  for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, double gap, const Eigen::Matrix3d& A) {
+    if (gap >= 0) return;
     const double w = surface_.weight(g);
     const double fn = -spec_.penalty * gap * w;  // > 0
     Eigen::Vector3d F = fn * n;
@@ -47,22 +53,17 @@ ContactState PlaneContact::apply(const double* y, GeneralizedForce& f) const {
     ++s.active_points;
     s.max_penetration = std::max(s.max_penetration, -gap);
     s.penalty_energy += 0.5 * spec_.penalty * gap * gap * w;
-  }
+  });
   return s;
 }
 
 void PlaneContact::add_quasistatic_terms(const double* y, Eigen::Index first, Eigen::VectorXd& force,
                                          Eigen::MatrixXd& stiffness) const {
-  const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
-  const Eigen::Vector3d r = body_.r(y);
   const Eigen::Vector3d& n = plane_.normal;
-  const Eigen::Vector3d nK = A.transpose() * n;
   const Eigen::Index nh = body_.nq() - first;
-  for (Eigen::Index g = 0; g < surface_.points(); ++g) {
-    const auto Psi = surface_.Psi.middleRows(g * dim_, dim_);
-    const Eigen::Vector3d P = body_.body_point(surface_.position.row(g).transpose(), Psi, y);
-    const double gap = n.dot(r + A * P - plane_.point);
-    if (gap >= 0) continue;
+  for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, double gap, const Eigen::Matrix3d& A) {
+    if (gap >= 0) return;
+    const Eigen::Vector3d nK = A.transpose() * n;
     const double w = surface_.weight(g), fn = -spec_.penalty * gap * w;
     const auto Psi_h = Psi.rightCols(nh);
     const Eigen::RowVectorXd dgap = nK.head(dim_).transpose() * Psi_h;  // d gap / d q_h
@@ -77,31 +78,23 @@ void PlaneContact::add_quasistatic_terms(const double* y, Eigen::Index first, Ei
     }
     force.noalias() += Psi_h.transpose() * FK.head(dim_);
     stiffness.noalias() -= (Psi_h.transpose() * dF_dgap_K) * dgap;
-  }
+  });
 }
 
 double PlaneContact::penalty_energy(const double* y) const {
-  const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
-  const Eigen::Vector3d r = body_.r(y);
   double energy = 0;
-  for (Eigen::Index g = 0; g < surface_.points(); ++g) {
-    const auto Psi = surface_.Psi.middleRows(g * dim_, dim_);
-    const double gap = plane_.normal.dot(r + A * body_.body_point(surface_.position.row(g).transpose(), Psi, y) - plane_.point);
+  for_each_point(y, [&](Eigen::Index g, const auto&, const Eigen::Vector3d&, double gap, const Eigen::Matrix3d&) {
     if (gap < 0) energy += 0.5 * spec_.penalty * gap * gap * surface_.weight(g);
-  }
+  });
   return energy;
 }
 
 double PlaneContact::min_gap(const double* y) const {
-  const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
-  const Eigen::Vector3d r = body_.r(y);
-  double gap = INFINITY;
-  for (Eigen::Index g = 0; g < surface_.points(); ++g) {
-    const auto Psi = surface_.Psi.middleRows(g * dim_, dim_);
-    const Eigen::Vector3d P = body_.body_point(surface_.position.row(g).transpose(), Psi, y);
-    gap = std::min(gap, plane_.normal.dot(r + A * P - plane_.point));
-  }
-  return gap;
+  double smallest = INFINITY;
+  for_each_point(y, [&](Eigen::Index, const auto&, const Eigen::Vector3d&, double gap, const Eigen::Matrix3d&) {
+    smallest = std::min(smallest, gap);
+  });
+  return smallest;
 }
 
 }  // namespace isosid::run

@@ -35,6 +35,10 @@ public:
   double min_gap(const double* y) const;
 
 private:
+  /// Calls f(g, Psi_g, P, gap, A) for every contact point: body-frame position P, signed gap.
+  template <class F>
+  void for_each_point(const double* y, F&& f) const;
+
   ContactSpec spec_;
   const FlexibleBody& body_;
   const format::ContactSurface& surface_;
