@@ -33,6 +33,7 @@ void run_prep(const std::string& model, const std::string& sid, bool quiet) {
   const pid_t pid = ::fork();
   if (pid < 0) throw format::ComputationError("cannot start isosid-prep");
   if (pid == 0) {
+    ::dup2(STDERR_FILENO, STDOUT_FILENO);  // isosid-run's stdout carries only its own output (--json)
     std::vector<const char*> args = {prep.c_str(), model.c_str(), "-o", sid.c_str()};
     if (quiet) args.push_back("-q");
     args.push_back(nullptr);

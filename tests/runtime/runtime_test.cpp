@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -136,4 +137,39 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
     CHECK_THAT(r.err, Contains(c.expected));
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   }
+}
+
+namespace {
+/// Copies a seed scene and its model into a scratch folder (the SID is built there by
+/// isosid-run through isosid-prep) and runs it.
+json run_seed_scene(const test::ScratchDir& dir, const std::string& scene, const std::string& model) {
+  const std::string models = ISOSID_MODELS_DIR;
+  for (const std::string& f : {scene, model}) std::filesystem::copy_file(models + "/" + f, dir.path(f));
+  const auto r = test::run_program("ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_RUN_EXE + " -q --json " +
+                                   dir.path(scene) + " -o " + dir.path("out"));
+  INFO(r.err);
+  REQUIRE(r.exit_status == 0);
+  return json::parse(r.out);
+}
+double rel_error(const json& s, const std::string& key) { return s["reference"][key]["rel_error"].get<double>(); }
+}  // namespace
+
+TEST_CASE("scene A: sphere on sphere (Hertz) with the Craig-Bampton sphere", "[runtime][seed]") {
+  const test::ScratchDir dir("scene-a");
+  const json s = run_seed_scene(dir, "sphere_hertz.scene.toml", "sphere_axisym.model.toml");
+  CHECK(rel_error(s, "contact_time_s") < 0.02);        // acceptance: 2 % (measured 1.2 %)
+  CHECK(rel_error(s, "rebound_velocity_m_s") < 0.005);  // acceptance: rebound energy 0.5 %
+  // acceptance asks 2 % on the peak force; today's model gives 2.4 % (issue 5 stays open),
+  // so this guards the current state against regression
+  CHECK(rel_error(s, "peak_force_n") < 0.03);
+  CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-5);
+}
+
+TEST_CASE("scene C: rotating disk with friction (momentum balance)", "[runtime][seed]") {
+  const test::ScratchDir dir("scene-c");
+  const json s = run_seed_scene(dir, "cylinder_friction.scene.toml", "disk_plane_strain.model.toml");
+  // acceptance: final velocity and angular velocity within 2 % of the momentum balance
+  CHECK(rel_error(s, "final_velocity_x_m_s") < 0.02);
+  CHECK(rel_error(s, "final_velocity_y_m_s") < 0.02);
+  CHECK(rel_error(s, "final_angular_velocity_rad_s") < 0.02);
 }
