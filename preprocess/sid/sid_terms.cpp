@@ -1,47 +1,15 @@
 // Body integrals and SID terms; see sid_terms.hpp.
 #include "sid/sid_terms.hpp"
 
+#include "sid/body_integrals.hpp"
+
 #include <array>
 #include <cmath>
 
 namespace isosid::prep {
-namespace {
 
 using Eigen::Index;
 using Eigen::MatrixXd;
-using format::AnalysisType;
-
-/// How section components combine into 3D integrals: int F_a G_b dm = w F_i^T M_s G_j.
-struct Pair {
-  int a, b;
-  double w;
-  int i, j;
-};
-struct Single {
-  int b;
-  double w;
-  int j;
-};
-
-std::vector<Pair> pairs_of(AnalysisType t) {
-  if (t == AnalysisType::Axisymmetric)  // x = r cos, z = r sin: cos^2 and sin^2 average to 1/2
-    return {{0, 0, 0.5, 0, 0}, {2, 2, 0.5, 0, 0}, {1, 1, 1.0, 1, 1}};
-  std::vector<Pair> p;
-  const int d = t == AnalysisType::Solid ? 3 : 2;
-  for (int a = 0; a < d; ++a)
-    for (int b = 0; b < d; ++b) p.push_back({a, b, 1.0, a, b});
-  return p;
-}
-
-std::vector<Single> singles_of(AnalysisType t) {
-  if (t == AnalysisType::Axisymmetric) return {{1, 1.0, 1}};  // x, z parts average to zero
-  std::vector<Single> s;
-  const int d = t == AnalysisType::Solid ? 3 : 2;
-  for (int b = 0; b < d; ++b) s.push_back({b, 1.0, b});
-  return s;
-}
-
-}  // namespace
 
 format::Damping rayleigh_damping(double kappa, double f1, double f2) {
   format::Damping d;
@@ -59,17 +27,15 @@ void fill_inertia_terms(format::Sid& sid, const Eigen::SparseMatrix<double>& Ms,
   std::vector<MatrixXd> Phi_c(std::size_t(dim), MatrixXd(n, nq));
   for (Index node = 0; node < n; ++node)
     for (Index i = 0; i < dim; ++i) Phi_c[std::size_t(i)].row(node) = Phi_nodal.row(node * dim + i);
-  const MatrixXd MX = Ms * X;
   std::vector<MatrixXd> MPhi;
   for (const MatrixXd& p : Phi_c) MPhi.push_back(Ms * p);
   const Eigen::RowVectorXd ones_M = Eigen::RowVectorXd::Ones(n) * Ms;
 
-  const auto pairs = pairs_of(sid.analysis);
-  const auto singles = singles_of(sid.analysis);
-  sid.refmod.mass = ones_M.sum();
+  const auto pairs = section_pairs(sid.analysis);
+  const auto singles = section_singles(sid.analysis);
+  const RigidIntegrals rigid = rigid_integrals(Ms, X, sid.analysis);
+  sid.refmod.mass = rigid.mass;
 
-  Eigen::Vector3d rdm = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d rrdm = Eigen::Matrix3d::Zero();
   MatrixXd C1 = MatrixXd::Zero(3, nq);                              // int Phi dm
   std::array<std::array<Eigen::RowVectorXd, 3>, 3> R;               // R[a][b](k) = int c_a Phi_bk dm
   std::array<std::array<MatrixXd, 3>, 3> P;                         // P[a][b](j,k) = int Phi_aj Phi_bk dm
@@ -78,12 +44,8 @@ void fill_inertia_terms(format::Sid& sid, const Eigen::SparseMatrix<double>& Ms,
       R[a][b] = Eigen::RowVectorXd::Zero(nq);
       P[a][b] = MatrixXd::Zero(nq, nq);
     }
-  for (const Single& s : singles) {
-    rdm(s.b) += s.w * ones_M * X.col(s.j);
-    C1.row(s.b) += s.w * ones_M * Phi_c[std::size_t(s.j)];
-  }
-  for (const Pair& p : pairs) {
-    rrdm(p.a, p.b) += p.w * X.col(p.i).dot(MX.col(p.j));
+  for (const SectionSingle& s : singles) C1.row(s.b) += s.w * ones_M * Phi_c[std::size_t(s.j)];
+  for (const SectionPair& p : pairs) {
     R[p.a][p.b] += p.w * X.col(p.i).transpose() * MPhi[std::size_t(p.j)];
     P[p.a][p.b] += p.w * Phi_c[std::size_t(p.i)].transpose() * MPhi[std::size_t(p.j)];
   }
@@ -95,9 +57,9 @@ void fill_inertia_terms(format::Sid& sid, const Eigen::SparseMatrix<double>& Ms,
   };
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
 
-  sid.mdCM.M0 = rdm;
+  sid.mdCM.M0 = rigid.first_moment;
   sid.mdCM.M1.assign(std::size_t(nq), MatrixXd(3, 1));
-  sid.J.M0 = rrdm.trace() * I - rrdm;
+  sid.J.M0 = rigid.inertia();
   sid.J.M1.assign(std::size_t(nq), MatrixXd(3, 3));
   sid.Ct.M0 = C1.transpose();
   sid.Ct.M1.clear();  // no geometric stiffening
