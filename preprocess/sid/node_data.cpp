@@ -3,16 +3,9 @@
 
 #include "assemble/point_operator.hpp"
 #include "isosid/format/error.hpp"
+#include "isosid/format/skew.hpp"
 
 namespace isosid::prep {
-
-namespace {
-Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
-}  // namespace
 
 format::Node node_at(const BodyModel& body, const NodeSpec& spec, const Eigen::MatrixXd& Phi_nodal) {
   int e = 0;
@@ -42,7 +35,7 @@ format::Node node_at(const BodyModel& body, const NodeSpec& spec, const Eigen::M
     n.origin.M1.push_back(n.phi.col(k));
   }
   n.AP.M0 = Eigen::Matrix3d::Identity();
-  for (Eigen::Index k = 0; k < nq; ++k) n.AP.M1.push_back(skew(n.psi.col(k)));
+  for (Eigen::Index k = 0; k < nq; ++k) n.AP.M1.push_back(format::skew(n.psi.col(k)));
   return n;
 }
 

@@ -2,6 +2,7 @@
 #include "body/flexible_body.hpp"
 
 #include "isosid/format/error.hpp"
+#include "isosid/format/skew.hpp"
 
 #include <cmath>
 
@@ -12,12 +13,7 @@ using Eigen::Matrix3d;
 using Eigen::MatrixXd;
 using Eigen::Vector3d;
 using Eigen::VectorXd;
-
-Matrix3d skew(const Vector3d& v) {
-  Matrix3d s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
+using format::skew;
 
 Matrix3d tait_bryan_matrix(const Vector3d& a) {
   return (Eigen::AngleAxisd(a.x(), Vector3d::UnitX()) * Eigen::AngleAxisd(a.y(), Vector3d::UnitY()) *

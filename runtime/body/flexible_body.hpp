@@ -92,6 +92,5 @@ private:
 Eigen::Matrix3d tait_bryan_matrix(const Eigen::Vector3d& angles);
 /// Inverse of tait_bryan_matrix (beta in [-pi/2, pi/2]).
 Eigen::Vector3d tait_bryan_angles(const Eigen::Matrix3d& A);
-Eigen::Matrix3d skew(const Eigen::Vector3d& v);
 
 }  // namespace isosid::run

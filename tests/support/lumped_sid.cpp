@@ -2,6 +2,8 @@
 // shared/research/sid-and-ffrf.md (MBSim's fbt_lma), used as an independent reference.
 #include "support/lumped_sid.hpp"
 
+#include "isosid/format/skew.hpp"
+
 #include <random>
 
 namespace isosid::test {
@@ -11,12 +13,6 @@ using Eigen::Matrix3d;
 using Eigen::MatrixXd;
 using Eigen::Vector3d;
 using Eigen::VectorXd;
-
-Matrix3d skew(const Vector3d& v) {
-  Matrix3d s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
 
 MatrixXd random_matrix(Index r, Index c, std::mt19937& gen) {
   std::uniform_real_distribution<double> u(-1, 1);
@@ -138,7 +134,7 @@ format::Sid lumped_sid(const LumpedBody& body) {
   node.psi = (body.Phi.middleRows(3, 3) - body.Phi.topRows(3)) / 0.05;
   for (Index k = 0; k < nq; ++k) node.origin.M1.push_back(node.phi.col(k));
   node.AP.M0 = Matrix3d::Identity();
-  for (Index k = 0; k < nq; ++k) node.AP.M1.push_back(skew(node.psi.col(k)));
+  for (Index k = 0; k < nq; ++k) node.AP.M1.push_back(format::skew(node.psi.col(k)));
   s.nodes.push_back(node);
 
   // contact points: the first four points; master patch: a bilinear 2x2 patch on points 0..3
