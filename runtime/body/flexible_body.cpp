@@ -222,7 +222,7 @@ void FlexibleBody::apply_force(const Vector3d& F_world, const Vector3d& P, const
   const Vector3d FK = A.transpose() * F_world;
   f.force += FK;
   f.torque += P.cross(FK);
-  f.elastic.noalias() += Psi.transpose() * FK.head(Psi.rows());
+  add_elastic_force(Psi, FK, f.elastic);
 }
 
 std::pair<Vector3d, Vector3d> FlexibleBody::node_state(const format::Node& node, const double* y) const {

@@ -88,6 +88,13 @@ private:
   mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
 };
 
+/// out += Psi^T F for shape rows Psi (dim x n, dim <= 3) and the first dim components of a
+/// body-frame force F: the generalized elastic force of a point load. Row by row, which also
+/// keeps GCC 12's -Warray-bounds quiet about vectorized reads of a partial fixed-size vector.
+inline void add_elastic_force(const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Vector3d& F, Eigen::VectorXd& out) {
+  for (Eigen::Index a = 0; a < Psi.rows(); ++a) out.noalias() += F(a) * Psi.row(a).transpose();
+}
+
 /// Rotation matrix of Tait-Bryan angles (x, y, z): Rx(a) Ry(b) Rz(c) (seed 000 eq. 20).
 Eigen::Matrix3d tait_bryan_matrix(const Eigen::Vector3d& angles);
 /// Inverse of tait_bryan_matrix (beta in [-pi/2, pi/2]).

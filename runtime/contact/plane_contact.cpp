@@ -76,7 +76,7 @@ void PlaneContact::add_quasistatic_terms(const double* y, Eigen::Index first, Ei
       FK += fn * (A.transpose() * dir);
       dF_dgap_K += -spec_.penalty * w * (A.transpose() * dir).head(dim_);
     }
-    force.noalias() += Psi_h.transpose() * FK.head(dim_);
+    add_elastic_force(Psi_h, FK, force);
     stiffness.noalias() -= (Psi_h.transpose() * dF_dgap_K) * dgap;
   });
 }
