@@ -44,7 +44,7 @@ void Recorder::sample(double t, const double* y) {
     contact_points_[k].push_back(states[k].active_points);
     contact_penetration_[k].push_back(states[k].max_penetration);
   }
-  const Energies e = system_.energies(y);
+  const Energies e = system_.energies(y, states);
   energies_.push_back({e.kinetic, e.elastic, e.gravity, e.penalty, e.dissipated, e.total()});
   for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
     const auto [pos, vel] = monitor_bodies_[m]->node_state(*monitor_nodes_[m], y);

@@ -26,9 +26,10 @@ public:
   void rhs(double t, const double* y, double* ydot) const;
   /// One gap function per contact (for event location): the smallest signed gap.
   void gaps(const double* y, double* g) const;
-  /// Contact states and energies at y (for output).
+  /// Contact states at y (for output); also brings the quasistatic modes up to date for y.
   std::vector<ContactState> contact_states(const double* y) const;
-  Energies energies(const double* y) const;
+  /// Energies at y, given `states` = contact_states(y) (evaluated once for both).
+  Energies energies(const double* y, const std::vector<ContactState>& states) const;
 
   const std::vector<std::unique_ptr<FlexibleBody>>& bodies() const { return bodies_; }
   const std::vector<PlaneContact>& contacts() const { return contacts_; }
