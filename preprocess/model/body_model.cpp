@@ -28,8 +28,8 @@ NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& r) {
   return p;
 }
 
-double body_size(const BodyModel& body) {
-  return (body.refined.points.colwise().maxCoeff() - body.refined.points.colwise().minCoeff()).norm();
+double patch_size(const NurbsPatch& patch) {
+  return (patch.points.colwise().maxCoeff() - patch.points.colwise().minCoeff()).norm();
 }
 
 std::vector<int> side_nodes(const BodyModel& body, PatchSide side) {
@@ -45,7 +45,7 @@ std::vector<int> side_nodes(const BodyModel& body, PatchSide side) {
 BodyModel build_body(const ModelSpec& spec) {
   NurbsPatch refined = refine_patch(spec.patch, spec.refinement);
   AnalysisSpace space = tensor_space(refined);
-  const double size = (refined.points.colwise().maxCoeff() - refined.points.colwise().minCoeff()).norm();  // body_size() before the body exists
+  const double size = patch_size(refined);
   const int dim = format::spatial_dim(spec.analysis);
   DofMap dofs(space, dim, 1e-10 * size);
   BodyModel body{spec, std::move(refined), std::move(space), Elasticity(spec.analysis, spec.material, spec.thickness),

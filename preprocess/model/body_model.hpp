@@ -24,8 +24,9 @@ BodyModel build_body(const ModelSpec& spec);
 /// Applies the refinement of a spec to a patch (elevation first, then knot insertion).
 NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& refinement);
 
-/// Diagonal of the refined control net's bounding box: the body's size for scales and tolerances.
-double body_size(const BodyModel& body);
+/// Diagonal of a control net's bounding box: a body's size for scales and tolerances.
+double patch_size(const NurbsPatch& patch);
+inline double body_size(const BodyModel& body) { return patch_size(body.refined); }
 
 /// Nodes whose functions do not vanish on the side.
 std::vector<int> side_nodes(const BodyModel& body, PatchSide side);
