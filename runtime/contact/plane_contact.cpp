@@ -32,6 +32,16 @@ void PlaneContact::for_each_point(const double* y, F&& f) const {
   }
 }
 
+Eigen::Vector3d PlaneContact::sliding_velocity(const Eigen::Vector3d& P, const Eigen::Ref<const Eigen::MatrixXd>& Psi,
+                                               const double* y) const {
+  const Eigen::Vector3d vp = body_.point_velocity(P, Psi, y);
+  return vp - plane_.normal.dot(vp) * plane_.normal;
+}
+
+Eigen::Vector3d PlaneContact::friction_per_normal_force(const Eigen::Vector3d& vt) const {
+  return -spec_.friction * vt / std::sqrt(vt.squaredNorm() + spec_.regularization * spec_.regularization);
+}
+
 ContactState PlaneContact::apply(const double* y, GeneralizedForce& f) const {
   ContactState s;
   const Eigen::Vector3d& n = plane_.normal;
@@ -41,10 +51,8 @@ ContactState PlaneContact::apply(const double* y, GeneralizedForce& f) const {
     const double fn = -spec_.penalty * gap * w;  // > 0
     Eigen::Vector3d F = fn * n;
     if (spec_.friction > 0) {
-      const Eigen::Vector3d vp = body_.point_velocity(P, Psi, y);
-      const Eigen::Vector3d vt = vp - n.dot(vp) * n;
-      // regularized Coulomb: mu fn in the direction opposing sliding, linear below `regularization`
-      const Eigen::Vector3d Ft = -spec_.friction * fn * vt / std::sqrt(vt.squaredNorm() + spec_.regularization * spec_.regularization);
+      const Eigen::Vector3d vt = sliding_velocity(P, Psi, y);
+      const Eigen::Vector3d Ft = fn * friction_per_normal_force(vt);
       F += Ft;
       s.friction_power -= Ft.dot(vt);
     }
@@ -70,9 +78,7 @@ void PlaneContact::add_quasistatic_terms(const double* y, Eigen::Index first, Ei
     Eigen::Vector3d FK = fn * nK;
     Eigen::VectorXd dF_dgap_K = -spec_.penalty * w * nK.head(dim_);       // d F_K / d gap
     if (spec_.friction > 0) {
-      const Eigen::Vector3d vp = body_.point_velocity(P, Psi, y);
-      const Eigen::Vector3d vt = vp - n.dot(vp) * n;
-      const Eigen::Vector3d dir = -spec_.friction * vt / std::sqrt(vt.squaredNorm() + spec_.regularization * spec_.regularization);
+      const Eigen::Vector3d dir = friction_per_normal_force(sliding_velocity(P, Psi, y));
       FK += fn * (A.transpose() * dir);
       dF_dgap_K += -spec_.penalty * w * (A.transpose() * dir).head(dim_);
     }

@@ -38,6 +38,11 @@ private:
   /// Calls f(g, Psi_g, P, gap, A) for every contact point: body-frame position P, signed gap.
   template <class F>
   void for_each_point(const double* y, F&& f) const;
+  /// World velocity of a contact point along the plane.
+  Eigen::Vector3d sliding_velocity(const Eigen::Vector3d& P, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const double* y) const;
+  /// Regularized Coulomb friction force per unit normal force: -mu vt / sqrt(|vt|^2 + eps^2),
+  /// mu in the direction opposing sliding, linear below the regularization velocity eps.
+  Eigen::Vector3d friction_per_normal_force(const Eigen::Vector3d& vt) const;
 
   ContactSpec spec_;
   const FlexibleBody& body_;
