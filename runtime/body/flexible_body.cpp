@@ -130,7 +130,7 @@ double FlexibleBody::derivatives(const double* y, const GeneralizedForce& applie
   hr.head<3>() = m * gK + applied.force;
   hr.tail<3>() = mc.cross(gK) + applied.torque;
   VectorXd hq = -(sid_.Ke.M0 * qv + sid_.De.M0 * qd + sid_.ksigma.M0.col(0)) + applied.elastic;
-  if (B.leftCols(3).size()) hq += B.leftCols(3) * gK;
+  hq += B.leftCols(3) * gK;  // Ct g: gravity on the modes
   if (rotates_) {
     B.rightCols(3) = sid_.Cr.order() ? sid_.Cr.at(qv) : sid_.Cr.M0;
     A6.bottomRightCorner<3, 3>() = sid_.J.at(qv);
