@@ -1,7 +1,7 @@
 // A single NURBS patch (curve, surface or volume) with exact rational evaluation, and its
 // boundary sides. Control points are stored with the first parametric direction fastest.
 #pragma once
-#include "geometry/bspline_basis.hpp"
+#include "isosid/format/bspline_basis.hpp"
 
 #include <Eigen/Dense>
 #include <map>
@@ -10,6 +10,15 @@
 #include <vector>
 
 namespace isosid::prep {
+
+// the B-spline basis lives in format/ (the runtime evaluates master patches with it)
+using format::basis_count;
+using format::basis_derivatives;
+using format::basis_functions;
+using format::find_span;
+using format::KnotVector;
+using format::unique_knots;
+using format::validate_knot_vector;
 
 /// A boundary side: the face where parameter `direction` is at its lower (end 0) or upper (end 1) bound.
 struct PatchSide {

@@ -1,7 +1,7 @@
 // Order elevation of a B-spline space: the degree rises by t and every distinct knot's
 // multiplicity rises by t, so the continuity is kept and the old space is a subspace.
 #pragma once
-#include "geometry/bspline_basis.hpp"
+#include "geometry/nurbs_patch.hpp"
 
 #include <Eigen/Dense>
 

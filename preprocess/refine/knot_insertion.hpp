@@ -1,7 +1,7 @@
 // Knot insertion of many knots in one sweep (The NURBS Book A5.4, RefineKnotVectCurve),
 // on rows of homogeneous control points, and its matrix form.
 #pragma once
-#include "geometry/bspline_basis.hpp"
+#include "geometry/nurbs_patch.hpp"
 
 #include <Eigen/Dense>
 

@@ -1,5 +1,5 @@
 // NURBS geometry: basis properties and the exactness of the primitives (REFERENCE.md G).
-#include "geometry/bspline_basis.hpp"
+#include "geometry/nurbs_patch.hpp"
 #include "geometry/primitives.hpp"
 
 #include <catch2/catch.hpp>

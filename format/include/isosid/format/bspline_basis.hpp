@@ -1,11 +1,12 @@
-// B-spline basis functions and derivatives on open knot vectors
+// B-spline basis functions and derivatives on open knot vectors, shared by the preprocessor
+// (geometry, refinement) and the runtime (master patches of flexible contact targets)
 // (The NURBS Book, algorithms A2.1 FindSpan, A2.2 BasisFuns, A2.3 DersBasisFuns).
 #pragma once
 #include <Eigen/Dense>
 #include <string>
 #include <vector>
 
-namespace isosid::prep {
+namespace isosid::format {
 
 using KnotVector = Eigen::VectorXd;
 

@@ -1,11 +1,11 @@
 // B-spline basis evaluation; see bspline_basis.hpp.
-#include "geometry/bspline_basis.hpp"
+#include "isosid/format/bspline_basis.hpp"
 
 #include "isosid/format/error.hpp"
 
 #include <cmath>
 
-namespace isosid::prep {
+namespace isosid::format {
 
 int find_span(const KnotVector& U, int p, double u) {
   const int n = basis_count(U, p) - 1;
