@@ -7,60 +7,116 @@
 
 namespace isosid::run {
 
-int solve_quasistatic_modes(const FlexibleBody& body, const std::vector<const PlaneContact*>& contacts, const double* y) {
-  const Eigen::Index first = body.n_dynamic(), nh = body.n_quasistatic();
-  if (nh == 0) return 0;
-  Eigen::VectorXd& qh = body.quasistatic_modes();
-  const Eigen::MatrixXd Khh = body.sid().Ke.M0.bottomRightCorner(nh, nh);
-  auto residual = [&](Eigen::VectorXd& R, Eigen::MatrixXd* J) {
-    Eigen::VectorXd F = Eigen::VectorXd::Zero(nh);
-    Eigen::MatrixXd Kc = Eigen::MatrixXd::Zero(nh, nh);
-    for (const PlaneContact* c : contacts) c->add_quasistatic_terms(y, first, F, Kc);
-    R = Khh * qh - F;
-    if (J) *J = Khh + Kc;
-  };
+QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBody>>& bodies,
+                                   const std::vector<SurfaceContact>& contacts) {
+  Eigen::Index n = 0;
+  std::vector<Eigen::VectorXd> diagonals;
+  std::vector<Eigen::MatrixXd> blocks;
+  for (const auto& b : bodies) {
+    if (b->n_quasistatic() == 0) continue;
+    b->set_quasistatic_offset(n);
+    n += b->n_quasistatic();
+    bodies_.push_back(b.get());
+    names_ += (names_.empty() ? "'" : ", '") + b->name() + "'";
+    blocks.push_back(b->sid().Ke.M0.bottomRightCorner(b->n_quasistatic(), b->n_quasistatic()));
+    // Displacements below eps x the body's size are not resolved by the geometry: in modal
+    // units (sqrt(kg) m for mass-normalized modes) that is about 1e-16 sqrt(m) L. Without this
+    // floor Newton stalls at a kink of the penalty law when the solution is zero to round-off.
+    const double m = b->sid().refmod.mass;
+    floor_ = std::max(floor_, 1e-16 * std::sqrt(m) * std::sqrt(b->sid().J.M0.trace() / m));
+  }
+  stiffness_.resize(n);
+  bool diagonal = true;
+  Eigen::Index at = 0;
+  for (const Eigen::MatrixXd& K : blocks) {
+    stiffness_.segment(at, K.rows()) = K.diagonal();
+    const Eigen::MatrixXd off = K - Eigen::MatrixXd(K.diagonal().asDiagonal());
+    diagonal = diagonal && off.cwiseAbs().maxCoeff() <= 1e-12 * K.diagonal().cwiseAbs().maxCoeff();
+    at += K.rows();
+  }
+  if (!diagonal) {
+    dense_stiffness_ = Eigen::MatrixXd::Zero(n, n);
+    at = 0;
+    for (const Eigen::MatrixXd& K : blocks) dense_stiffness_.block(at, at, K.rows(), K.rows()) = K, at += K.rows();
+  }
+  if (n > 0 && stiffness_.minCoeff() <= 0)
+    throw format::InputError(names_, "quasistatic modes", "the high modes must have positive stiffness (rigid-body modes cannot be quasistatic)");
+  for (const SurfaceContact& c : contacts) {
+    const bool touches = c.body().n_quasistatic() > 0 || (c.target().body() && c.target().body()->n_quasistatic() > 0);
+    if (!touches) continue;
+    contacts_.push_back(&c);
+    conservative_ = conservative_ && c.frictionless();
+  }
+  z_.setZero(n);
+}
+
+void QuasistaticModes::scatter(const Eigen::VectorXd& z) const {
+  for (FloatingBody* b : bodies_) b->quasistatic_modes() = z.segment(b->quasistatic_offset(), b->n_quasistatic());
+}
+
+void QuasistaticModes::residual(const double* y, Eigen::VectorXd& R) const {
+  scatter(z_);
+  terms_.reset(size());
+  for (const SurfaceContact* c : contacts_) c->add_quasistatic_terms(y, terms_);
+  R = dense_stiffness_.size() ? Eigen::VectorXd(dense_stiffness_ * z_) : Eigen::VectorXd(stiffness_.cwiseProduct(z_));
+  R -= terms_.force;
+}
+
+void QuasistaticModes::solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  const Eigen::Index r = terms_.rank;
+  const auto U = terms_.U.leftCols(r), V = terms_.V.leftCols(r);
+  if (dense_stiffness_.size()) {
+    x = (dense_stiffness_ + U * V.transpose()).partialPivLu().solve(b);
+    return;
+  }
+  // Woodbury: (K + U V^T)^-1 b = K^-1 b - K^-1 U (I + V^T K^-1 U)^-1 V^T K^-1 b
+  scaled_b_ = b.cwiseQuotient(stiffness_);
+  scaled_U_ = U.array().colwise() / stiffness_.array();
+  small_ = Eigen::MatrixXd::Identity(r, r);
+  small_.noalias() += V.transpose() * scaled_U_;
+  x = scaled_b_;
+  if (r > 0) x.noalias() -= scaled_U_ * small_.partialPivLu().solve(V.transpose() * scaled_b_);
+}
+
+double QuasistaticModes::merit(const double* y, const Eigen::VectorXd& R) const {
+  if (!conservative_) return R.norm();
+  double pi = 0.5 * (dense_stiffness_.size() ? z_.dot(dense_stiffness_ * z_) : z_.dot(stiffness_.cwiseProduct(z_)));
+  for (const SurfaceContact* c : contacts_) pi += c->penalty_energy(y);
+  return pi;
+}
+
+int QuasistaticModes::solve(const double* y) const {
+  if (size() == 0) return 0;
+  for (FloatingBody* b : bodies_) z_.segment(b->quasistatic_offset(), b->n_quasistatic()) = b->quasistatic_modes();
   // Without friction the equilibrium minimizes the convex energy
-  // Pi(q_h) = 1/2 q_h^T Khh q_h + sum 1/2 c_p g^2 w, whose gradient is the residual R: Newton
-  // steps with an Armijo line search on Pi converge across active-set changes, where a line
-  // search on |R| stalls. With friction (not a potential) the search falls back to |R|.
-  bool conservative = true;
-  for (const PlaneContact* c : contacts) conservative = conservative && c->frictionless();
-  auto merit = [&](const Eigen::VectorXd& R) {
-    if (!conservative) return R.norm();
-    double pi = 0.5 * qh.dot(Khh * qh);
-    for (const PlaneContact* c : contacts) pi += c->penalty_energy(y);
-    return pi;
-  };
-  // Displacements below eps x the body's size are not resolved by the geometry: in modal
-  // units (sqrt(kg) m for mass-normalized modes) that is about 1e-16 sqrt(m) L. Without this
-  // floor Newton stalls at a kink of the penalty law when the solution is zero to round-off.
-  const double m = body.sid().refmod.mass;
-  const double floor = 1e-16 * std::sqrt(m) * std::sqrt(body.sid().J.M0.trace() / m);
-  Eigen::VectorXd R;
-  Eigen::MatrixXd J;
-  residual(R, &J);
+  // Pi(z) = 1/2 z^T K z + sum 1/2 c_p g^2 w, whose gradient is the residual R: Newton steps
+  // with an Armijo line search on Pi converge across active-set changes, where a line search
+  // on |R| stalls. With friction (not a potential) the search falls back to |R|.
+  residual(y, R_);
   for (int iteration = 1; iteration <= 60; ++iteration) {
-    const Eigen::VectorXd step = J.partialPivLu().solve(R);
-    const Eigen::VectorXd q_old = qh;
-    const double m_old = merit(R), slope = -R.dot(step);
+    solve_jacobian(R_, step_);
+    z_old_ = z_;
+    const double m_old = merit(y, R_), slope = -R_.dot(step_);
     double alpha = 1.0;
     for (int halving = 0; halving < 30; ++halving) {
-      qh = q_old - alpha * step;
-      residual(R, nullptr);
-      const double m_new = merit(R);
-      if ((conservative ? m_new <= m_old + 1e-4 * alpha * slope : m_new <= m_old) || halving == 29) break;
+      z_ = z_old_ - alpha * step_;
+      residual(y, R_);
+      const double m_new = merit(y, R_);
+      if ((conservative_ ? m_new <= m_old + 1e-4 * alpha * slope : m_new <= m_old) || halving == 29) break;
       alpha *= 0.5;
     }
-    residual(R, &J);
+    residual(y, R_);
     // converged when the update or the residual is at round-off relative to the solution
     // (an absolute tolerance would feed solver noise into the right-hand side, and the
     // step-size control would chase it)
-    const double force = (Khh * qh).norm();
-    if (alpha * step.norm() <= 1e-11 * qh.norm() + floor || R.norm() <= 1e-10 * force || (force == 0 && R.norm() == 0))
+    const double force = dense_stiffness_.size() ? (dense_stiffness_ * z_).norm() : stiffness_.cwiseProduct(z_).norm();
+    if (alpha * step_.norm() <= 1e-11 * z_.norm() + floor_ || R_.norm() <= 1e-10 * force || (force == 0 && R_.norm() == 0)) {
+      scatter(z_);
       return iteration;
+    }
   }
-  throw format::ComputationError("the quasistatic modes of '" + body.name() +
-                                 "' did not converge (Newton, 60 iterations): penalty too stiff for the contact resolution?");
+  throw format::ComputationError("the quasistatic modes of " + names_ +
+                                 " did not converge (Newton, 60 iterations): penalty too stiff for the contact resolution?");
 }
 
 }  // namespace isosid::run

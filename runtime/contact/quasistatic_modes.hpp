@@ -1,16 +1,49 @@
-// Quasistatic high-frequency modes (seed 001): instead of integrating the stiff constraint
-// modes, solve their static equilibrium Omega_h^2 q_h = Psi_h^T F(q) under the contact forces
-// at every evaluation, by Newton's method with the exact contact Jacobian.
+// Quasistatic high-frequency modes (seed 001): instead of integrating the stiff high modes,
+// solve their static equilibrium K_h z = f(z) under the contact forces at every evaluation,
+// by Newton's method with the exact contact Jacobian. All bodies are solved together, so a
+// contact between two flexible bodies couples their modes. The Jacobian K_h + U V^T (modal
+// stiffness plus one rank-one term per active point) is inverted with the Woodbury identity:
+// the cost grows with the number of active points, not with the number of modes.
 #pragma once
-#include "body/flexible_body.hpp"
-#include "contact/plane_contact.hpp"
+#include "body/floating_body.hpp"
+#include "contact/quasistatic_terms.hpp"
+#include "contact/surface_contact.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace isosid::run {
 
-/// Updates body.quasistatic_modes() for state y (warm-started from their last values);
-/// returns the Newton iterations. Throws ComputationError if Newton does not converge.
-int solve_quasistatic_modes(const FlexibleBody& body, const std::vector<const PlaneContact*>& contacts, const double* y);
+class QuasistaticModes {
+public:
+  /// Assigns every body with quasistatic modes its block of the stacked vector z.
+  QuasistaticModes(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const std::vector<SurfaceContact>& contacts);
+
+  /// Number of stacked quasistatic modes (0: nothing to solve).
+  Eigen::Index size() const { return stiffness_.size(); }
+  /// Updates the bodies' quasistatic modes for state y (warm-started from their last values);
+  /// returns the Newton iterations. Throws ComputationError (naming the bodies) on failure.
+  int solve(const double* y) const;
+
+private:
+  void scatter(const Eigen::VectorXd& z) const;
+  /// Residual K z - f(z) at the current z_, and the rank-one terms of its Jacobian.
+  void residual(const double* y, Eigen::VectorXd& R) const;
+  /// Solves (K + U V^T) x = b.
+  void solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  /// Newton's merit: the total potential energy when frictionless (its gradient is R), else |R|.
+  double merit(const double* y, const Eigen::VectorXd& R) const;
+
+  std::vector<FloatingBody*> bodies_;            ///< bodies with quasistatic modes
+  std::vector<const SurfaceContact*> contacts_;  ///< contacts touching one of them
+  Eigen::VectorXd stiffness_;                    ///< diagonal of K_h (the SID's normal form)
+  Eigen::MatrixXd dense_stiffness_;              ///< K_h if it is not diagonal (SIDs from elsewhere)
+  bool conservative_ = true;
+  double floor_ = 0;                             ///< unresolvable displacement, modal units
+  std::string names_;
+  mutable Eigen::VectorXd z_, R_, step_, z_old_, scaled_b_;
+  mutable Eigen::MatrixXd scaled_U_, small_;
+  mutable QuasistaticTerms terms_;
+};
 
 }  // namespace isosid::run

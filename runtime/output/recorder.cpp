@@ -4,11 +4,46 @@
 #include "isosid/format/atomic_output.hpp"
 #include "isosid/format/error.hpp"
 #include "isosid/format/hdf5_file.hpp"
+#include "contact/deformed_patch.hpp"
 
 #include <cmath>
 #include <optional>
 
 namespace isosid::run {
+
+namespace {
+/// A monitor on a master patch as a node: at a fixed parameter the patch point moves as
+/// X(u) + Psi(u) q, with Psi = sum R_i Phi_i, exactly like a SID node.
+format::Node surface_node(const FloatingBody& body, const MonitorSpec& m, const std::string& scene_file) {
+  const std::string field = "monitor " + m.name;
+  const format::ContactSurface* surface = body.contact_surface(m.surface);
+  if (!surface) throw format::InputError(scene_file, field, "the SID of '" + m.body + "' has no contact surface '" + m.surface + "'");
+  const format::MasterPatch* patch = nullptr;
+  for (const format::MasterPatch& p : body.sid().master_patches)
+    if (p.name == surface->master_patch) patch = &p;
+  if (!patch) throw format::InputError(scene_file, field, "the SID of '" + m.body + "' has no master patch for '" + m.surface + "'");
+  const int dim = body.sid().dim();
+  const DeformedPatch geometry(*patch, dim);
+  if (int(m.parameter.size()) != geometry.parameter_dim())
+    throw format::InputError(scene_file, field + ".parameter", "needs " + std::to_string(geometry.parameter_dim()) + " value(s)");
+  Eigen::Vector2d u = Eigen::Vector2d::Zero();
+  for (int d = 0; d < geometry.parameter_dim(); ++d) {
+    u(d) = m.parameter[std::size_t(d)];
+    if (u(d) < geometry.lower(d) || u(d) > geometry.upper(d))
+      throw format::InputError(scene_file, field + ".parameter", "outside the patch's parameter range");
+  }
+  DeformedPatch::Point point;
+  geometry.evaluate(u, point);
+  Eigen::MatrixXd Psi;
+  geometry.shape_rows(point, Psi);
+  format::Node node;
+  node.name = m.name;
+  node.origin.M0 = point.C;
+  node.phi = Eigen::MatrixXd::Zero(3, body.nq());
+  node.phi.topRows(dim) = Psi;
+  return node;
+}
+}  // namespace
 
 Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(system), scene_(scene) {
   const std::size_t nc = system.contacts().size();
@@ -21,12 +56,17 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
   max_penetration_.assign(nc, 0);
   active_.assign(nc, false);
   last_force_.assign(nc, 0);
+  monitor_nodes_.reserve(scene.monitors.size());
   for (const MonitorSpec& m : scene.monitors) {
-    const FlexibleBody& b = system.body(m.body);
-    const format::Node* node = b.node(m.node);
-    if (!node) throw format::InputError(scene.file, "monitor " + m.name, "the SID of '" + m.body + "' has no node '" + m.node + "'");
+    const FloatingBody& b = system.body(m.body);
+    if (m.surface.empty()) {
+      const format::Node* node = b.node(m.node);
+      if (!node) throw format::InputError(scene.file, "monitor " + m.name, "the SID of '" + m.body + "' has no node '" + m.node + "'");
+      monitor_nodes_.push_back(*node);
+    } else {
+      monitor_nodes_.push_back(surface_node(b, m, scene.file));
+    }
     monitor_bodies_.push_back(&b);
-    monitor_nodes_.push_back(node);
   }
   monitor_values_.resize(scene.monitors.size());
   monitor_reversal_.assign(scene.monitors.size(), -1);
@@ -47,7 +87,7 @@ void Recorder::sample(double t, const double* y) {
   const Energies e = system_.energies(y, states);
   energies_.push_back({e.kinetic, e.elastic, e.gravity, e.penalty, e.dissipated, e.total()});
   for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
-    const auto [pos, vel] = monitor_bodies_[m]->node_state(*monitor_nodes_[m], y);
+    const auto [pos, vel] = monitor_bodies_[m]->node_state(monitor_nodes_[m], y);
     const Eigen::Vector3d value = scene_.monitors[m].quantity == "velocity" ? vel : pos;
     for (int a = 0; a < 3; ++a) monitor_values_[m].push_back(value(a));
     if (time_.size() == 1) monitor_initial_[m] = monitor_last_[m] = value;
@@ -66,7 +106,7 @@ void Recorder::step(double t, const double* y) {
   }
   for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
     if (scene_.monitors[m].quantity != "velocity" || monitor_reversal_[m] >= 0) continue;
-    const Eigen::Vector3d v = monitor_bodies_[m]->node_state(*monitor_nodes_[m], y).second;
+    const Eigen::Vector3d v = monitor_bodies_[m]->node_state(monitor_nodes_[m], y).second;
     const Eigen::Vector3d& v0 = monitor_initial_[m];
     const double v0v0 = v0.squaredNorm();
     const double now = v.dot(v0), before = monitor_last_[m].dot(v0);

@@ -52,8 +52,8 @@ private:
   std::vector<double> monitor_reversal_;            ///< first sign change against the initial value
   std::vector<double> monitor_arrival_;             ///< first departure by 1 % of the initial value (a wave front)
   std::vector<Eigen::Vector3d> monitor_initial_, monitor_last_;
-  std::vector<const format::Node*> monitor_nodes_;
-  std::vector<const FlexibleBody*> monitor_bodies_;
+  std::vector<format::Node> monitor_nodes_;         ///< SID nodes, or master-patch points as nodes
+  std::vector<const FloatingBody*> monitor_bodies_;
 };
 
 }  // namespace isosid::run

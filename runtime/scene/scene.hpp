@@ -21,9 +21,20 @@ struct SimulationSettings {
   double output_interval = 0;   ///< s
 };
 
-struct FlexibleBodySpec {
+/// The shape and inertia of a rigid body (its frame at the centre of mass, on the principal axes).
+struct RigidShape {
+  enum class Kind { Sphere, Box } kind = Kind::Sphere;
+  double radius = 0;                                          ///< m, sphere
+  Eigen::Vector3d half_extents = Eigen::Vector3d::Zero();     ///< m, box
+  double mass = 0;                                            ///< kg
+  Eigen::Vector3d principal_inertia = Eigen::Vector3d::Zero();  ///< kg m^2
+};
+
+/// A body of the scene: flexible (from a SID) or rigid (`rigid` set, no SID).
+struct BodySpec {
   std::string name;
-  std::string sid_file;         ///< absolute or relative to the scene file, resolved
+  std::optional<RigidShape> rigid;
+  std::string sid_file;         ///< flexible: absolute or relative to the scene file, resolved
   std::string model_file;       ///< optional: rebuild the SID from it when missing or stale
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   Eigen::Vector3d tait_bryan = Eigen::Vector3d::Zero();  ///< rad, x-y-z (seed 000 eq. 20)
@@ -37,34 +48,44 @@ struct FlexibleBodySpec {
   double quasistatic_above_hz = -1;  ///< > 0: modes above this frequency are the high ones
 };
 
-struct PlaneSpec {
+/// An analytic surface: fixed in the world, or the surface of a rigid body (in its frame).
+struct ShapeSpec {
+  enum class Kind { Plane, Sphere, Cylinder, Box } kind = Kind::Plane;
   std::string name;
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< unit, pointing out of the surface
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< plane: a point; sphere: centre; cylinder: a point on the axis
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< plane: unit, pointing out of the solid; cylinder: unit axis
+  double radius = 0;                                  ///< sphere, cylinder, m
+  Eigen::Vector3d half_extents = Eigen::Vector3d::Zero();  ///< box (centred on point, axis-aligned), m
 };
 
 struct ContactSpec {
   std::string name;
   std::string body, surface;    ///< slave: a flexible body and a contact surface of its SID
-  std::string target;           ///< master: a fixed surface
+  std::string target;           ///< master: a fixed surface, a rigid body or a flexible body
+  std::string target_surface;   ///< flexible master: the contact surface whose master patch is used
   double penalty = 0;           ///< N/m^3 (pressure per penetration)
   double friction = 0;          ///< Coulomb coefficient
   double regularization = 1e-6; ///< m/s, velocity below which friction is regularized
 };
 
+/// A monitored point: a SID node, or a parameter on a contact surface's master patch.
 struct MonitorSpec {
   std::string name;
   std::string body, node;
+  std::string surface;                ///< with `parameter`: the contact surface whose master patch holds the point
+  std::vector<double> parameter;      ///< master-patch parameter(s) of the point
   std::string quantity = "velocity";  ///< position | velocity
 };
 
 struct Scene {
   std::string file;
   SimulationSettings simulation;
-  std::vector<FlexibleBodySpec> bodies;
-  std::vector<PlaneSpec> planes;
+  std::vector<BodySpec> bodies;        ///< flexible bodies first, then rigid ones
+  std::vector<ShapeSpec> fixed_surfaces;
   std::vector<ContactSpec> contacts;
   std::vector<MonitorSpec> monitors;
+  const BodySpec* body(const std::string& name) const;
+  const ShapeSpec* fixed_surface(const std::string& name) const;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   std::map<std::string, double> reference;  ///< [reference] values, e.g. peak_force_n
 };

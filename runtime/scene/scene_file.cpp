@@ -3,6 +3,7 @@
 
 #include "isosid/format/toml_fields.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 
@@ -17,6 +18,82 @@ Eigen::Vector3d vec3(const TomlView& t, const std::string& key, const Eigen::Vec
   const auto v = t.numbers(key);
   if (v.size() != 3) t.fail(key, "needs three components");
   return {v[0], v[1], v[2]};
+}
+
+Eigen::Vector3d unit_vector(const TomlView& t, const std::string& key, const Eigen::Vector3d& fallback) {
+  const Eigen::Vector3d n = vec3(t, key, fallback);
+  if (n.norm() < 1e-12) t.fail(key, "must not be zero");
+  return n.normalized();
+}
+
+/// Name, initial motion and locked DOFs, common to flexible and rigid bodies.
+BodySpec read_motion(const TomlView& b, const std::string& name) {
+  BodySpec f;
+  f.name = name;
+  f.position = vec3(b, "position", f.position);
+  f.tait_bryan = vec3(b, "orientation", f.tait_bryan);
+  f.velocity = vec3(b, "velocity", f.velocity);
+  f.angular_velocity = vec3(b, "angular_velocity", f.angular_velocity);
+  if (b.has("locked"))
+    for (const std::string& l : b.strings("locked")) {
+      if (l != "x" && l != "y" && l != "z" && l != "rx" && l != "ry" && l != "rz") b.fail("locked", "unknown DOF '" + l + "'");
+      f.locked.push_back(l);
+    }
+  return f;
+}
+
+/// Shape, mass (from `mass` or `density`) and principal inertia (given, or of the solid shape).
+RigidShape read_rigid_shape(const TomlView& b, Dimension dimension) {
+  RigidShape r;
+  const std::string shape = b.string("shape");
+  double volume = 0;
+  Eigen::Vector3d unit_inertia;  // per unit mass
+  if (shape == "sphere") {
+    r.kind = RigidShape::Kind::Sphere;
+    r.radius = b.positive("radius");
+    if (b.has("size")) b.fail("size", "a sphere has a radius, not a size");
+    volume = 4.0 / 3.0 * M_PI * std::pow(r.radius, 3);
+    unit_inertia.setConstant(0.4 * r.radius * r.radius);
+  } else if (shape == "box") {
+    if (dimension == Dimension::Axisymmetric) b.fail("shape", "a box is not axisymmetric");
+    if (b.has("radius")) b.fail("radius", "a box has a size, not a radius");
+    const Eigen::Vector3d size = vec3(b, "size", Eigen::Vector3d::Zero());
+    if (size.minCoeff() <= 0) b.fail("size", "all three edge lengths must be > 0");
+    r.kind = RigidShape::Kind::Box;
+    r.half_extents = size / 2;
+    volume = size.prod();
+    const Eigen::Vector3d s2 = size.cwiseAbs2();
+    unit_inertia = Eigen::Vector3d(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y()) / 12.0;
+  } else {
+    b.fail("shape", "unknown shape '" + shape + "' (sphere, box)");
+  }
+  if (b.has("mass") == b.has("density")) b.fail("mass", "give either a mass or a density");
+  r.mass = b.has("mass") ? b.positive("mass") : b.positive("density") * volume;
+  r.principal_inertia = r.mass * unit_inertia;
+  if (b.has("inertia")) {
+    r.principal_inertia = vec3(b, "inertia", r.principal_inertia);
+    const Eigen::Vector3d& I = r.principal_inertia;
+    if (I.minCoeff() <= 0 || I.x() > I.y() + I.z() || I.y() > I.x() + I.z() || I.z() > I.x() + I.y())
+      b.fail("inertia", "principal moments must be > 0 and satisfy the triangle inequality");
+  }
+  return r;
+}
+
+/// Fixed surfaces a planar or axisymmetric scene can hold: its bodies stay in the x-y plane
+/// (planar) or on the y axis (axisymmetric), so a surface must keep that symmetry.
+void check_fits_dimension(const ShapeSpec& s, Dimension dimension, const TomlView& top) {
+  const Eigen::Vector3d &p = s.point, &n = s.normal;
+  std::string problem;
+  if (dimension == Dimension::Axisymmetric) {
+    if (s.kind == ShapeSpec::Kind::Plane && std::abs(std::abs(n.y()) - 1) > 1e-12) problem = "a plane must be normal to the axis (y)";
+    if (s.kind == ShapeSpec::Kind::Sphere && (p.x() != 0 || p.z() != 0)) problem = "a sphere must be centred on the axis (x = z = 0)";
+    if (s.kind == ShapeSpec::Kind::Cylinder) problem = "a cylinder across the axis is not axisymmetric";
+  } else if (dimension == Dimension::Planar) {
+    if (s.kind == ShapeSpec::Kind::Plane && std::abs(n.z()) > 1e-12) problem = "a plane must be normal to the x-y plane";
+    if (s.kind == ShapeSpec::Kind::Sphere && p.z() != 0) problem = "a sphere must be centred in the x-y plane";
+    if (s.kind == ShapeSpec::Kind::Cylinder && std::abs(std::abs(n.z()) - 1) > 1e-12) problem = "a cylinder axis must be z";
+  }
+  if (!problem.empty()) throw format::InputError(top.file(), s.name, problem + " in a " + to_string(dimension) + " scene");
 }
 
 std::string resolve(const std::string& scene_file, const std::string& path) {
@@ -63,10 +140,23 @@ std::string to_string(Dimension d) {
   return "?";
 }
 
+const BodySpec* Scene::body(const std::string& name) const {
+  for (const BodySpec& b : bodies)
+    if (b.name == name) return &b;
+  return nullptr;
+}
+
+const ShapeSpec* Scene::fixed_surface(const std::string& name) const {
+  for (const ShapeSpec& s : fixed_surfaces)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
 Scene read_scene_file(const std::string& path) {
   const toml::table root = format::parse_toml_file(path);
   const TomlView top(root, path);
-  top.allow_only({"simulation", "flexible_body", "fixed_plane", "contact", "monitor", "reference"});
+  top.allow_only({"simulation", "flexible_body", "rigid_body", "fixed_plane", "fixed_sphere", "fixed_cylinder", "contact",
+                  "monitor", "reference"});
   Scene scene;
   scene.file = path;
   scene.simulation = read_simulation(top.table("simulation"));
@@ -80,16 +170,11 @@ Scene read_scene_file(const std::string& path) {
   for (const TomlView& b : top.tables("flexible_body")) {
     b.allow_only({"name", "sid", "model", "position", "orientation", "velocity", "angular_velocity", "q0", "qdot0", "locked",
                   "high_modes", "quasistatic_above_hz"});
-    FlexibleBodySpec f;
-    f.name = unique(b);
+    BodySpec f = read_motion(b, unique(b));
     f.sid_file = resolve(path, b.string("sid"));
     f.model_file = resolve(path, b.string("model", ""));
     if (!f.model_file.empty() && !fs::is_regular_file(f.model_file)) b.fail("model", "file not found: " + f.model_file);
     if (f.model_file.empty() && !fs::is_regular_file(f.sid_file)) b.fail("sid", "file not found: " + f.sid_file);
-    f.position = vec3(b, "position", f.position);
-    f.tait_bryan = vec3(b, "orientation", f.tait_bryan);
-    f.velocity = vec3(b, "velocity", f.velocity);
-    f.angular_velocity = vec3(b, "angular_velocity", f.angular_velocity);
     if (b.has("q0")) {
       const auto v = b.numbers("q0");
       f.q0 = Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(v.size()));
@@ -98,11 +183,6 @@ Scene read_scene_file(const std::string& path) {
       const auto v = b.numbers("qdot0");
       f.qdot0 = Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(v.size()));
     }
-    if (b.has("locked"))
-      for (const std::string& l : b.strings("locked")) {
-        if (l != "x" && l != "y" && l != "z" && l != "rx" && l != "ry" && l != "rz") b.fail("locked", "unknown DOF '" + l + "'");
-        f.locked.push_back(l);
-      }
     f.high_modes = b.string("high_modes", f.high_modes);
     if (f.high_modes != "dynamic" && f.high_modes != "quasistatic") b.fail("high_modes", "must be dynamic or quasistatic");
     f.quasistatic_above_hz = b.positive("quasistatic_above_hz", -1);
@@ -111,45 +191,79 @@ Scene read_scene_file(const std::string& path) {
     scene.bodies.push_back(f);
   }
   if (scene.bodies.empty()) top.fail("flexible_body", "a scene needs at least one flexible body");
+  for (const TomlView& b : top.tables("rigid_body")) {
+    b.allow_only({"name", "shape", "radius", "size", "density", "mass", "inertia", "position", "orientation", "velocity",
+                  "angular_velocity", "locked"});
+    BodySpec r = read_motion(b, unique(b));
+    r.rigid = read_rigid_shape(b, scene.simulation.dimension);
+    if (scene.simulation.dimension == Dimension::Axisymmetric && (r.position.x() != 0 || r.position.z() != 0))
+      b.fail("position", "an axisymmetric scene needs its bodies on the axis (x = z = 0)");
+    scene.bodies.push_back(r);
+  }
   for (const TomlView& p : top.tables("fixed_plane")) {
     p.allow_only({"name", "point", "normal"});
-    PlaneSpec s;
-    s.name = unique(p);
+    ShapeSpec s{ShapeSpec::Kind::Plane, unique(p)};
     s.point = vec3(p, "point", s.point);
-    const Eigen::Vector3d n = vec3(p, "normal", s.normal);
-    if (n.norm() < 1e-12) p.fail("normal", "must not be zero");
-    s.normal = n.normalized();
-    scene.planes.push_back(s);
+    s.normal = unit_vector(p, "normal", s.normal);
+    scene.fixed_surfaces.push_back(s);
   }
+  for (const TomlView& p : top.tables("fixed_sphere")) {
+    p.allow_only({"name", "center", "radius"});
+    ShapeSpec s{ShapeSpec::Kind::Sphere, unique(p)};
+    s.point = vec3(p, "center", s.point);
+    s.radius = p.positive("radius");
+    scene.fixed_surfaces.push_back(s);
+  }
+  for (const TomlView& p : top.tables("fixed_cylinder")) {
+    p.allow_only({"name", "point", "axis", "radius"});
+    ShapeSpec s{ShapeSpec::Kind::Cylinder, unique(p)};
+    s.point = vec3(p, "point", s.point);
+    s.normal = unit_vector(p, "axis", Eigen::Vector3d::UnitZ());
+    s.radius = p.positive("radius");
+    scene.fixed_surfaces.push_back(s);
+  }
+  for (const ShapeSpec& s : scene.fixed_surfaces) check_fits_dimension(s, scene.simulation.dimension, top);
   for (const TomlView& c : top.tables("contact")) {
-    c.allow_only({"name", "body", "surface", "target", "penalty", "friction", "regularization"});
+    c.allow_only({"name", "body", "surface", "target", "target_surface", "penalty", "friction", "regularization"});
     ContactSpec s;
     s.name = unique(c);
     s.body = c.string("body");
     s.surface = c.string("surface");
     s.target = c.string("target");
+    s.target_surface = c.string("target_surface", "");
     s.penalty = c.positive("penalty");
     s.friction = c.number("friction", 0.0);
     if (s.friction < 0 || s.friction > 10) c.fail("friction", "must lie in [0, 10]");
     s.regularization = c.positive("regularization", s.regularization);
-    bool body_found = false, target_found = false;
-    for (const auto& b : scene.bodies) body_found = body_found || b.name == s.body;
-    for (const auto& p : scene.planes) target_found = target_found || p.name == s.target;
-    if (!body_found) c.fail("body", "no flexible_body named '" + s.body + "'");
-    if (!target_found) c.fail("target", "no fixed_plane named '" + s.target + "'");
+    const BodySpec* slave = scene.body(s.body);
+    if (!slave || slave->rigid) c.fail("body", "no flexible_body named '" + s.body + "' (the slave side carries the contact points)");
+    const BodySpec* master = scene.body(s.target);
+    if (!master && !scene.fixed_surface(s.target)) c.fail("target", "no fixed surface or body named '" + s.target + "'");
+    if (master == slave) c.fail("target", "a body cannot be its own contact target");
+    if (master && !master->rigid && s.target_surface.empty())
+      c.fail("target_surface", "a flexible target needs the contact surface whose master patch it offers");
+    if ((!master || master->rigid) && !s.target_surface.empty())
+      c.fail("target_surface", "only a flexible target has contact surfaces");
     scene.contacts.push_back(s);
   }
   for (const TomlView& m : top.tables("monitor")) {
-    m.allow_only({"name", "body", "node", "quantity"});
+    m.allow_only({"name", "body", "node", "surface", "parameter", "quantity"});
     MonitorSpec s;
     s.name = unique(m);
     s.body = m.string("body");
-    s.node = m.string("node");
+    if (m.has("node") == m.has("surface")) m.fail("node", "give either a node or a surface and a parameter");
+    s.node = m.string("node", "");
+    s.surface = m.string("surface", "");
+    if (!s.surface.empty()) {
+      s.parameter = m.numbers("parameter");
+      if (s.parameter.empty() || s.parameter.size() > 2) m.fail("parameter", "needs one or two master-patch parameters");
+    } else if (m.has("parameter")) {
+      m.fail("parameter", "only used with a surface");
+    }
     s.quantity = m.string("quantity", s.quantity);
     if (s.quantity != "velocity" && s.quantity != "position") m.fail("quantity", "must be velocity or position");
-    bool found = false;
-    for (const auto& b : scene.bodies) found = found || b.name == s.body;
-    if (!found) m.fail("body", "no flexible_body named '" + s.body + "'");
+    const BodySpec* body = scene.body(s.body);
+    if (!body || body->rigid) m.fail("body", "no flexible_body named '" + s.body + "'");
     scene.monitors.push_back(s);
   }
   scene.gravity = vec3(top.table("simulation"), "gravity", scene.gravity);

@@ -1,46 +1,53 @@
 // Assembly of the system ODE; see multibody_system.hpp.
 #include "solve/multibody_system.hpp"
 
-#include "contact/quasistatic_modes.hpp"
+#include "body/rigid_body_sid.hpp"
+#include "contact/master_patch_target.hpp"
+#include "contact/shape_target.hpp"
 #include "isosid/format/error.hpp"
-
 
 namespace isosid::run {
 
 MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> sids) : gravity_(scene.gravity) {
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-    auto b = std::make_unique<FlexibleBody>(scene.bodies[i], std::move(sids[i]), scene.simulation.dimension);
+  std::size_t next_sid = 0;
+  for (const BodySpec& spec : scene.bodies) {
+    format::Sid sid = spec.rigid ? rigid_body_sid(spec, scene.simulation.dimension) : std::move(sids.at(next_sid++));
+    auto b = std::make_unique<FloatingBody>(spec, std::move(sid), scene.simulation.dimension);
     b->set_offset(size_);
     size_ += b->state_size();
     bodies_.push_back(std::move(b));
   }
   size_ += 1;  // dissipated energy
+  contacts_.reserve(scene.contacts.size());
   for (const ContactSpec& c : scene.contacts) {
-    const PlaneSpec* plane = nullptr;
-    for (const PlaneSpec& p : scene.planes)
-      if (p.name == c.target) plane = &p;
-    contacts_.emplace_back(c, body(c.body), *plane);
+    if (const ShapeSpec* fixed = scene.fixed_surface(c.target)) {
+      targets_.push_back(std::make_unique<ShapeTarget>(*fixed));
+      target_body_.push_back(-1);
+    } else {
+      const std::size_t m = body_index(c.target);
+      const BodySpec& spec = *scene.body(c.target);
+      if (spec.rigid)
+        targets_.push_back(std::make_unique<ShapeTarget>(rigid_body_shape(spec), *bodies_[m]));
+      else
+        targets_.push_back(std::make_unique<MasterPatchTarget>(*bodies_[m], c.target_surface, c.name));
+      target_body_.push_back(long(m));
+    }
+    slave_body_.push_back(body_index(c.body));
+    contacts_.emplace_back(c, *bodies_[slave_body_.back()], *targets_.back());
   }
+  quasistatic_ = std::make_unique<QuasistaticModes>(bodies_, contacts_);
   forces_.resize(bodies_.size());
-  body_contacts_.resize(bodies_.size());
-  for (const PlaneContact& c : contacts_)
-    for (std::size_t i = 0; i < bodies_.size(); ++i)
-      if (bodies_[i].get() == &c.body()) {
-        body_contacts_[i].push_back(&c);
-        contact_body_.push_back(i);
-      }
 }
 
-void MultibodySystem::update_quasistatic(const double* y) const {
+std::size_t MultibodySystem::body_index(const std::string& name) const {
   for (std::size_t i = 0; i < bodies_.size(); ++i)
-    if (bodies_[i]->n_quasistatic() > 0) quasistatic_iterations_ += solve_quasistatic_modes(*bodies_[i], body_contacts_[i], y);
-}
-
-const FlexibleBody& MultibodySystem::body(const std::string& name) const {
-  for (const auto& b : bodies_)
-    if (b->name() == name) return *b;
+    if (bodies_[i]->name() == name) return i;
   throw format::InputError("scene", name, "no such body");
 }
+
+const FloatingBody& MultibodySystem::body(const std::string& name) const { return *bodies_[body_index(name)]; }
+
+void MultibodySystem::update_quasistatic(const double* y) const { quasistatic_iterations_ += quasistatic_->solve(y); }
 
 void MultibodySystem::initial_state(double* y) const {
   for (const auto& b : bodies_) b->initial_state(y);
@@ -51,8 +58,10 @@ void MultibodySystem::rhs(double, const double* y, double* ydot) const {
   update_quasistatic(y);
   for (std::size_t i = 0; i < bodies_.size(); ++i) forces_[i].reset(bodies_[i]->nq());
   double dissipation = 0;
-  for (std::size_t k = 0; k < contacts_.size(); ++k)
-    dissipation += contacts_[k].apply(y, forces_[contact_body_[k]]).friction_power;
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    GeneralizedForce* reaction = target_body_[k] >= 0 ? &forces_[std::size_t(target_body_[k])] : nullptr;
+    dissipation += contacts_[k].apply(y, forces_[slave_body_[k]], reaction).friction_power;
+  }
   for (std::size_t i = 0; i < bodies_.size(); ++i) dissipation += bodies_[i]->derivatives(y, forces_[i], gravity_, ydot);
   ydot[size_ - 1] = dissipation;
 }
@@ -74,9 +83,9 @@ std::vector<ContactState> MultibodySystem::contact_states(const double* y) const
   update_quasistatic(y);
   std::vector<ContactState> out;
   GeneralizedForce scratch;
-  for (const PlaneContact& c : contacts_) {
+  for (const SurfaceContact& c : contacts_) {
     scratch.reset(c.body().nq());
-    out.push_back(c.apply(y, scratch));
+    out.push_back(c.apply(y, scratch, nullptr));
   }
   return out;
 }

@@ -1,9 +1,11 @@
-// The simulated system: flexible bodies, fixed surfaces and contacts, as one first-order ODE
-// y' = f(t, y) whose last entry integrates the dissipated energy (modal damping + friction),
-// so that the energy balance can be checked to integration accuracy.
+// The simulated system: flexible and rigid bodies, fixed surfaces and contacts, as one
+// first-order ODE y' = f(t, y) whose last entry integrates the dissipated energy (modal
+// damping + friction), so that the energy balance can be checked to integration accuracy.
 #pragma once
-#include "body/flexible_body.hpp"
-#include "contact/plane_contact.hpp"
+#include "body/floating_body.hpp"
+#include "contact/contact_target.hpp"
+#include "contact/quasistatic_modes.hpp"
+#include "contact/surface_contact.hpp"
 #include "scene/scene.hpp"
 
 #include <memory>
@@ -18,11 +20,12 @@ struct Energies {
 
 class MultibodySystem {
 public:
+  /// `sids`: one per flexible body of the scene, in order (rigid bodies get theirs here).
   MultibodySystem(const Scene& scene, std::vector<format::Sid> sids);
 
   Eigen::Index size() const { return size_; }
   void initial_state(double* y) const;
-  /// Right-hand side; reuses preallocated force buffers (no allocation per call).
+  /// Right-hand side; reuses preallocated force buffers.
   void rhs(double t, const double* y, double* ydot) const;
   /// One gap function per contact (for event location): the smallest signed gap.
   void gaps(const double* y, double* g) const;
@@ -31,22 +34,26 @@ public:
   /// Energies at y, given `states` = contact_states(y) (evaluated once for both).
   Energies energies(const double* y, const std::vector<ContactState>& states) const;
 
-  const std::vector<std::unique_ptr<FlexibleBody>>& bodies() const { return bodies_; }
-  const std::vector<PlaneContact>& contacts() const { return contacts_; }
-  const FlexibleBody& body(const std::string& name) const;
+  const std::vector<std::unique_ptr<FloatingBody>>& bodies() const { return bodies_; }
+  const std::vector<SurfaceContact>& contacts() const { return contacts_; }
+  const FloatingBody& body(const std::string& name) const;
   /// Newton iterations of the quasistatic modes so far.
   long quasistatic_iterations() const { return quasistatic_iterations_; }
 
 private:
+  std::size_t body_index(const std::string& name) const;
   /// Solves every body's quasistatic modes for state y (they depend on the contacts).
   void update_quasistatic(const double* y) const;
-  std::vector<std::unique_ptr<FlexibleBody>> bodies_;
-  std::vector<PlaneContact> contacts_;
+
+  std::vector<std::unique_ptr<FloatingBody>> bodies_;
+  std::vector<std::unique_ptr<ContactTarget>> targets_;
+  std::vector<SurfaceContact> contacts_;
+  std::vector<std::size_t> slave_body_;    ///< body index of each contact's slave
+  std::vector<long> target_body_;          ///< body index of each contact's target, -1: fixed
+  std::unique_ptr<QuasistaticModes> quasistatic_;
   Eigen::Vector3d gravity_;
   Eigen::Index size_ = 0;
   mutable std::vector<GeneralizedForce> forces_;
-  std::vector<std::vector<const PlaneContact*>> body_contacts_;  ///< contacts of each body
-  std::vector<std::size_t> contact_body_;                        ///< body index of each contact
   mutable long quasistatic_iterations_ = 0;
 };
 

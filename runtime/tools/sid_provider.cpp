@@ -52,7 +52,8 @@ void run_prep(const std::string& model, const std::string& sid, bool quiet) {
 
 std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
   std::vector<format::Sid> sids;
-  for (const FlexibleBodySpec& b : scene.bodies) {
+  for (const BodySpec& b : scene.bodies) {
+    if (b.rigid) continue;  // rigid bodies have no SID
     std::error_code ec;
     if (!b.model_file.empty()) {
       const bool stale = !fs::exists(b.sid_file, ec) || fs::last_write_time(b.sid_file, ec) < fs::last_write_time(b.model_file, ec);

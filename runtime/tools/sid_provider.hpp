@@ -9,6 +9,7 @@
 
 namespace isosid::run {
 
+/// The SIDs of the scene's flexible bodies, in order; stale or missing ones are rebuilt first.
 std::vector<format::Sid> load_sids(const Scene& scene, bool quiet);
 
 }  // namespace isosid::run

@@ -126,7 +126,14 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
       {replace(kImpact, "[[fixed_plane]]", "[[fixed_plane]]\ncolour = 1"), "fixed_plane[0].colour: unknown key"},
       {replace(kImpact, "dimension = \"axisymmetric\"", "dimension = \"planar\""), "axisymmetric body in a planar scene"},
       {replace(kImpact, "surface = \"contact\"", "surface = \"rim\""), "has no contact surface 'rim'"},
-      {replace(kImpact, "target = \"ground\"", "target = \"wall\""), "contact[0].target: no fixed_plane named 'wall'"},
+      {replace(kImpact, "target = \"ground\"", "target = \"wall\""), "contact[0].target: no fixed surface or body named 'wall'"},
+      {replace(kImpact, "[[fixed_plane]]", "[[rigid_body]]\nname = \"block\"\nshape = \"box\"\nsize = [1, 1, 1]\ndensity = 1\n[[fixed_plane]]"),
+       "rigid_body[0].shape: a box is not axisymmetric"},
+      {replace(kImpact, "[[fixed_plane]]", "[[rigid_body]]\nname = \"ball\"\nshape = \"sphere\"\nradius = 0.01\nmass = 1\ndensity = 1\n[[fixed_plane]]"),
+       "rigid_body[0].mass: give either a mass or a density"},
+      {replace(kImpact, "[[fixed_plane]]", "[[fixed_sphere]]\nname = \"knob\"\ncenter = [0.1, 0, 0]\nradius = 0.01\n[[fixed_plane]]"),
+       "knob: a sphere must be centred on the axis"},
+      {replace(kImpact, "target = \"ground\"", "target = \"sphere\""), "contact[0].target: a body cannot be its own contact target"},
       {replace(kImpact, "end_time = 100e-6", "end_time = nan"), "simulation.end_time: must be finite"},
   };
   for (const Case& c : cases) {

@@ -1,5 +1,6 @@
-// A flexible body in the floating frame of reference formulation, fed only by its SID:
-// state r (world), unit quaternion, q; velocities v (world), omega (body frame), qdot.
+// A body in the floating frame of reference formulation, fed only by its SID: state r
+// (world), unit quaternion, q; velocities v (world), omega (body frame), qdot. A rigid body
+// is the same frame with no elastic coordinates (its SID comes from rigid_body_sid()).
 // Equations of motion: shared/research/sid-and-ffrf.md section 2 (MBSim updateMb, CADyn).
 #pragma once
 #include "isosid/format/sid.hpp"
@@ -22,9 +23,9 @@ struct GeneralizedForce {
   }
 };
 
-class FlexibleBody {
+class FloatingBody {
 public:
-  FlexibleBody(const FlexibleBodySpec& spec, format::Sid sid, Dimension dimension);
+  FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dimension);
 
   const std::string& name() const { return name_; }
   const format::Sid& sid() const { return sid_; }
@@ -50,6 +51,9 @@ public:
   Eigen::Map<const Eigen::Vector3d> omega(const double* y) const { return Eigen::Map<const Eigen::Vector3d>(y + offset_ + 10 + n_dynamic_); }
   /// The quasistatic modes' values (set by the quasistatic solve before each use of q).
   Eigen::VectorXd& quasistatic_modes() const { return q_high_; }
+  /// Where this body's quasistatic modes start in the system's stacked quasistatic vector.
+  Eigen::Index quasistatic_offset() const { return quasistatic_offset_; }
+  void set_quasistatic_offset(Eigen::Index offset) { quasistatic_offset_ = offset; }
 
   /// Time derivative of this body's state under the applied forces `applied` (body frame)
   /// and gravity (world); quasistatic modes carry no inertia (seed 001). Returns the
@@ -80,18 +84,19 @@ public:
 private:
   std::string name_;
   format::Sid sid_;
-  FlexibleBodySpec spec_;
+  BodySpec spec_;
   std::array<bool, 6> locked_{};  ///< x y z rx ry rz (body-frame accelerations)
   bool rotates_ = true;           ///< false if all rotations are locked: rotational terms vanish
   Eigen::Index offset_ = 0;
   Eigen::Index n_dynamic_ = 0;
+  Eigen::Index quasistatic_offset_ = 0;
   mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
 };
 
 /// out += Psi^T F for shape rows Psi (dim x n, dim <= 3) and the first dim components of a
 /// body-frame force F: the generalized elastic force of a point load. Row by row, which also
 /// keeps GCC 12's -Warray-bounds quiet about vectorized reads of a partial fixed-size vector.
-inline void add_elastic_force(const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Vector3d& F, Eigen::VectorXd& out) {
+inline void add_elastic_force(const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Vector3d& F, Eigen::Ref<Eigen::VectorXd> out) {
   for (Eigen::Index a = 0; a < Psi.rows(); ++a) out.noalias() += F(a) * Psi.row(a).transpose();
 }
 

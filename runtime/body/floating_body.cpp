@@ -1,5 +1,5 @@
 // Floating-frame equations of motion from SID terms; see flexible_body.hpp.
-#include "body/flexible_body.hpp"
+#include "body/floating_body.hpp"
 
 #include "isosid/format/error.hpp"
 #include "isosid/format/skew.hpp"
@@ -26,7 +26,7 @@ Vector3d tait_bryan_angles(const Matrix3d& A) {
   return {std::atan2(-A(1, 2), A(2, 2)), beta, std::atan2(-A(0, 1), A(0, 0))};
 }
 
-FlexibleBody::FlexibleBody(const FlexibleBodySpec& spec, format::Sid sid, Dimension dimension)
+FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dimension)
     : name_(spec.name), sid_(std::move(sid)), spec_(spec) {
   const Index n = nq();
   // the Schur-complement solve below relies on the SID's normal form Me = I
@@ -62,7 +62,7 @@ FlexibleBody::FlexibleBody(const FlexibleBodySpec& spec, format::Sid sid, Dimens
     throw format::InputError(spec.sid_file, spec.name + ".qdot0", "needs " + std::to_string(n_dynamic_) + " entries (the integrated modes)");
 }
 
-void FlexibleBody::initial_state(double* y) const {
+void FloatingBody::initial_state(double* y) const {
   double* s = y + offset_;
   Eigen::Map<Vector3d>(s + 0) = spec_.position;
   const Eigen::Quaterniond p(tait_bryan_matrix(spec_.tait_bryan));
@@ -79,23 +79,23 @@ void FlexibleBody::initial_state(double* y) const {
   Eigen::Map<VectorXd>(s + 13 + nd, nd) = spec_.qdot0.size() ? spec_.qdot0 : VectorXd::Zero(nd);
 }
 
-const VectorXd& FlexibleBody::q(const double* y) const {
+const VectorXd& FloatingBody::q(const double* y) const {
   q_full_.head(n_dynamic_) = Eigen::Map<const VectorXd>(y + offset_ + 7, n_dynamic_);
   q_full_.tail(nq() - n_dynamic_) = q_high_;
   return q_full_;
 }
 
-const VectorXd& FlexibleBody::qdot(const double* y) const {
+const VectorXd& FloatingBody::qdot(const double* y) const {
   qdot_full_.head(n_dynamic_) = Eigen::Map<const VectorXd>(y + offset_ + 13 + n_dynamic_, n_dynamic_);
   return qdot_full_;  // quasistatic modes: zero
 }
 
-Eigen::Quaterniond FlexibleBody::orientation(const double* y) const {
+Eigen::Quaterniond FloatingBody::orientation(const double* y) const {
   const double* p = y + offset_ + 3;
   return Eigen::Quaterniond(p[0], p[1], p[2], p[3]).normalized();
 }
 
-double FlexibleBody::derivatives(const double* y, const GeneralizedForce& applied, const Vector3d& gravity, double* ydot) const {
+double FloatingBody::derivatives(const double* y, const GeneralizedForce& applied, const Vector3d& gravity, double* ydot) const {
   const Index n = nq(), nd = n_dynamic_;
   const VectorXd& qv = q(y);
   const VectorXd& qd = qdot(y);
@@ -180,7 +180,7 @@ double FlexibleBody::derivatives(const double* y, const GeneralizedForce& applie
   return qd.dot(sid_.De.M0 * qd);
 }
 
-double FlexibleBody::kinetic_energy(const double* y) const {
+double FloatingBody::kinetic_energy(const double* y) const {
   const VectorXd& qv = q(y);
   const VectorXd& qd = qdot(y);
   const Vector3d vK = orientation(y).toRotationMatrix().transpose() * v(y), w = omega(y);
@@ -195,29 +195,29 @@ double FlexibleBody::kinetic_energy(const double* y) const {
   return T;
 }
 
-double FlexibleBody::elastic_energy(const double* y) const {
+double FloatingBody::elastic_energy(const double* y) const {
   const VectorXd& qv = q(y);
   return 0.5 * qv.dot(sid_.Ke.M0 * qv);
 }
 
-double FlexibleBody::gravity_potential(const double* y, const Vector3d& gravity) const {
+double FloatingBody::gravity_potential(const double* y, const Vector3d& gravity) const {
   const Vector3d mc = sid_.mdCM.at(q(y));
   return -gravity.dot(sid_.refmod.mass * r(y) + orientation(y).toRotationMatrix() * mc);
 }
 
-Vector3d FlexibleBody::body_point(const VectorXd& c, const Eigen::Ref<const MatrixXd>& Psi, const double* y) const {
+Vector3d FloatingBody::body_point(const VectorXd& c, const Eigen::Ref<const MatrixXd>& Psi, const double* y) const {
   Vector3d P = Vector3d::Zero();
   P.head(c.size()) = c + Psi * q(y);
   return P;
 }
 
-Vector3d FlexibleBody::point_velocity(const Vector3d& P, const Eigen::Ref<const MatrixXd>& Psi, const double* y) const {
+Vector3d FloatingBody::point_velocity(const Vector3d& P, const Eigen::Ref<const MatrixXd>& Psi, const double* y) const {
   Vector3d u = Vector3d::Zero();
   u.head(Psi.rows()) = Psi * qdot(y);
   return v(y) + orientation(y).toRotationMatrix() * (omega(y).cross(P) + u);
 }
 
-void FlexibleBody::apply_force(const Vector3d& F_world, const Vector3d& P, const Eigen::Ref<const MatrixXd>& Psi,
+void FloatingBody::apply_force(const Vector3d& F_world, const Vector3d& P, const Eigen::Ref<const MatrixXd>& Psi,
                                const Matrix3d& A, GeneralizedForce& f) const {
   const Vector3d FK = A.transpose() * F_world;
   f.force += FK;
@@ -225,20 +225,20 @@ void FlexibleBody::apply_force(const Vector3d& F_world, const Vector3d& P, const
   add_elastic_force(Psi, FK, f.elastic);
 }
 
-std::pair<Vector3d, Vector3d> FlexibleBody::node_state(const format::Node& node, const double* y) const {
+std::pair<Vector3d, Vector3d> FloatingBody::node_state(const format::Node& node, const double* y) const {
   const Matrix3d A = orientation(y).toRotationMatrix();
   const Vector3d P = node.origin.M0.col(0) + node.phi * q(y);
   const Vector3d vel = v(y) + A * (omega(y).cross(P) + node.phi * qdot(y));
   return {r(y) + A * P, vel};
 }
 
-const format::Node* FlexibleBody::node(const std::string& name) const {
+const format::Node* FloatingBody::node(const std::string& name) const {
   for (const auto& n : sid_.nodes)
     if (n.name == name) return &n;
   return nullptr;
 }
 
-const format::ContactSurface* FlexibleBody::contact_surface(const std::string& name) const {
+const format::ContactSurface* FloatingBody::contact_surface(const std::string& name) const {
   for (const auto& c : sid_.contact_surfaces)
     if (c.name == name) return &c;
   return nullptr;

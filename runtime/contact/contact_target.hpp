@@ -1,0 +1,35 @@
+// The master side of a contact: what the slave's Gauss points are projected on. A fixed
+// analytic surface, the surface of a rigid body, or the deformed master patch of a flexible
+// body; body targets receive the reaction of every contact force.
+#pragma once
+#include "body/floating_body.hpp"
+
+namespace isosid::run {
+
+/// The closest point of a target to a slave point.
+struct TargetPoint {
+  double gap = 0;                                       ///< signed distance, m (negative: penetration)
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();    ///< world unit normal, out of the target
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();   ///< world velocity of the target's material point
+  Eigen::Vector3d body_point = Eigen::Vector3d::Zero(); ///< body targets: the point in the body frame
+  Eigen::MatrixXd Psi;                                  ///< body targets: dim x nq shape rows at the point
+};
+
+class ContactTarget {
+public:
+  virtual ~ContactTarget() = default;
+  virtual const std::string& name() const = 0;
+  /// The body carrying the target (it receives the reactions), or nullptr for a fixed surface.
+  virtual const FloatingBody* body() const { return nullptr; }
+  /// Prepares the evaluations at state y (pose, deformed geometry, bounds).
+  virtual void update(const double* y) const = 0;
+  /// A lower bound of the gap of every point within `radius` of the world point `center`:
+  /// > 0 means none of them can touch (the broad phase).
+  virtual double clearance(const Eigen::Vector3d& center, double radius) const = 0;
+  /// Closest point to the world point x at the state of the last update(). `hint` holds the
+  /// warm start of iterative projections (NaN: none yet) and is updated. Returns false when
+  /// x is no candidate (far from the target, or beside its edge).
+  virtual bool project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d& hint) const = 0;
+};
+
+}  // namespace isosid::run

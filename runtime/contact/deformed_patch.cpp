@@ -1,0 +1,88 @@
+// Evaluation of a deformed master patch; see deformed_patch.hpp.
+#include "contact/deformed_patch.hpp"
+
+#include "isosid/format/bspline_basis.hpp"
+
+#include <algorithm>
+
+namespace isosid::run {
+
+DeformedPatch::DeformedPatch(const format::MasterPatch& patch, int dim) : patch_(patch), dim_(dim), net_(patch.control_points) {
+  std::vector<std::vector<double>> mids(2, std::vector<double>{0.0});
+  for (int d = 0; d < parameter_dim(); ++d) {
+    const std::vector<double> k = format::unique_knots(patch.knots[std::size_t(d)]);
+    mids[std::size_t(d)].clear();
+    for (std::size_t i = 0; i + 1 < k.size(); ++i) mids[std::size_t(d)].push_back(0.5 * (k[i] + k[i + 1]));
+  }
+  for (double v : mids[1])
+    for (double u : mids[0]) midpoints_.emplace_back(u, v);
+}
+
+void DeformedPatch::deform(const Eigen::VectorXd& q) {
+  const Eigen::Index ncp = patch_.control_points.rows();
+  for (Eigen::Index i = 0; i < ncp; ++i)
+    for (int a = 0; a < dim_; ++a) net_(i, a) = patch_.control_points(i, a) + patch_.Phi.row(i * dim_ + a).dot(q);
+}
+
+void DeformedPatch::evaluate(const Eigen::Vector2d& u, Point& out) const {
+  // B-spline derivatives per direction, then the rational quotient rule for
+  // C = A / W with A = sum N w P, W = sum N w (The NURBS Book, eq. 4.8 and A4.4)
+  const int pd = parameter_dim();
+  int span[2] = {0, 0}, p[2] = {0, 0};
+  Eigen::MatrixXd N[2] = {Eigen::MatrixXd::Zero(3, 1), Eigen::MatrixXd::Zero(3, 1)};
+  N[1](0, 0) = 1;  // a curve: a constant second direction
+  for (int d = 0; d < pd; ++d) {
+    const auto& U = patch_.knots[std::size_t(d)];
+    const double t = std::clamp(u(d), lower(d), upper(d));
+    p[d] = patch_.degrees[std::size_t(d)];
+    span[d] = format::find_span(U, p[d], t);
+    N[d] = format::basis_derivatives(U, p[d], span[d], t, 2);  // rows: value, first, second derivative
+  }
+  const int n_u = format::basis_count(patch_.knots[0], p[0]);
+  // derivative index k: 0 value, 1 d/du, 2 d/dv, 3 uu, 4 uv, 5 vv (u-order, v-order)
+  static constexpr int order_u[6] = {0, 1, 0, 2, 1, 0}, order_v[6] = {0, 0, 1, 0, 1, 2};
+  Eigen::Vector3d A[6];
+  double W[6] = {0, 0, 0, 0, 0, 0};
+  for (auto& a : A) a.setZero();
+  out.control_points.clear();
+  out.R.clear();
+  std::vector<double> Nw;  // N w of each control point, for R
+  for (int b = 0; b <= p[1]; ++b)
+    for (int a = 0; a <= p[0]; ++a) {
+      const int i = (span[0] - p[0] + a) + n_u * (pd > 1 ? span[1] - p[1] + b : 0);
+      const double w = patch_.weights(i);
+      Eigen::Vector3d P = Eigen::Vector3d::Zero();
+      P.head(dim_) = net_.row(i).transpose();
+      for (int k = 0; k < (pd > 1 ? 6 : 3); ++k) {
+        const int ku = pd > 1 ? order_u[k] : k, kv = pd > 1 ? order_v[k] : 0;
+        const double Nk = N[0](ku, a) * N[1](kv, b) * w;
+        W[k] += Nk;
+        A[k] += Nk * P;
+      }
+      out.control_points.push_back(i);
+      Nw.push_back(N[0](0, a) * N[1](0, b) * w);
+    }
+  const double W0 = W[0];
+  out.C = A[0] / W0;
+  out.R.resize(Nw.size());
+  for (std::size_t j = 0; j < Nw.size(); ++j) out.R[j] = Nw[j] / W0;
+  if (pd == 1) {
+    out.dC[0] = (A[1] - W[1] * out.C) / W0;
+    out.ddC[0] = (A[2] - 2 * W[1] * out.dC[0] - W[2] * out.C) / W0;
+    out.dC[1].setZero(), out.ddC[1].setZero(), out.ddC[2].setZero();
+    return;
+  }
+  out.dC[0] = (A[1] - W[1] * out.C) / W0;
+  out.dC[1] = (A[2] - W[2] * out.C) / W0;
+  out.ddC[0] = (A[3] - 2 * W[1] * out.dC[0] - W[3] * out.C) / W0;
+  out.ddC[1] = (A[4] - W[1] * out.dC[1] - W[2] * out.dC[0] - W[4] * out.C) / W0;
+  out.ddC[2] = (A[5] - 2 * W[2] * out.dC[1] - W[5] * out.C) / W0;
+}
+
+void DeformedPatch::shape_rows(const Point& point, Eigen::MatrixXd& Psi) const {
+  Psi.setZero(dim_, patch_.Phi.cols());
+  for (std::size_t j = 0; j < point.R.size(); ++j)
+    Psi.noalias() += point.R[j] * patch_.Phi.middleRows(Eigen::Index(point.control_points[j]) * dim_, dim_);
+}
+
+}  // namespace isosid::run

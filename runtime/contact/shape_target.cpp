@@ -1,0 +1,40 @@
+// Analytic contact targets; see shape_target.hpp.
+#include "contact/shape_target.hpp"
+
+namespace isosid::run {
+
+void ShapeTarget::update(const double* y) const {
+  if (!body_) return;
+  A_ = body_->orientation(y).toRotationMatrix();
+  r_ = body_->r(y);
+}
+
+double ShapeTarget::clearance(const Eigen::Vector3d& center, double radius) const {
+  // the signed distance is 1-Lipschitz: no point of the ball comes closer than this
+  return shape_distance(shape_, A_.transpose() * (center - r_)).gap - radius;
+}
+
+bool ShapeTarget::project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d&) const {
+  const ShapeDistance d = shape_distance(shape_, A_.transpose() * (x - r_));
+  out.gap = d.gap;
+  out.normal = A_ * d.normal;
+  out.body_point = d.point;
+  if (body_) {
+    out.Psi.resize(body_->sid().dim(), 0);
+    out.velocity = body_->point_velocity(d.point, out.Psi, y);
+  } else {
+    out.velocity.setZero();
+  }
+  return true;
+}
+
+ShapeSpec rigid_body_shape(const BodySpec& body) {
+  ShapeSpec s;
+  s.name = body.name;
+  s.kind = body.rigid->kind == RigidShape::Kind::Sphere ? ShapeSpec::Kind::Sphere : ShapeSpec::Kind::Box;
+  s.radius = body.rigid->radius;
+  s.half_extents = body.rigid->half_extents;
+  return s;
+}
+
+}  // namespace isosid::run

@@ -1,0 +1,127 @@
+// Penalty contact of slave Gauss points against a target; see surface_contact.hpp.
+#include "contact/surface_contact.hpp"
+
+#include "isosid/format/error.hpp"
+
+#include <cmath>
+
+namespace isosid::run {
+
+namespace {
+const format::ContactSurface& find_surface(const ContactSpec& spec, const FloatingBody& body) {
+  const format::ContactSurface* s = body.contact_surface(spec.surface);
+  if (!s) throw format::InputError(spec.name, "surface", "the SID of '" + body.name() + "' has no contact surface '" + spec.surface + "'");
+  return *s;
+}
+}  // namespace
+
+SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body, const ContactTarget& target)
+    : spec_(spec), body_(body), target_(target), surface_(find_surface(spec, body)), dim_(body.sid().dim()) {
+  hints_.assign(std::size_t(surface_.points()), Eigen::Vector2d::Constant(NAN));
+  if (surface_.points() == 0) return;
+  bound_center_.head(dim_) = surface_.position.colwise().mean().transpose();
+  for (Eigen::Index g = 0; g < surface_.points(); ++g) {
+    bound_radius_ = std::max(bound_radius_, (surface_.position.row(g).transpose() - bound_center_.head(dim_)).norm());
+    bound_growth_ = std::max(bound_growth_, surface_.Psi.middleRows(g * dim_, dim_).norm());
+  }
+}
+
+template <class F>
+double SurfaceContact::for_each_point(const double* y, F&& f) const {
+  target_.update(y);
+  const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
+  const Eigen::Vector3d r = body_.r(y);
+  // broad phase: |Psi_g q| <= |Psi_g|_F |q| bounds every point's displacement
+  const double clearance = target_.clearance(r + A * bound_center_, bound_radius_ + bound_growth_ * body_.q(y).norm());
+  if (clearance > 0) return clearance;
+  for (Eigen::Index g = 0; g < surface_.points(); ++g) {
+    const auto Psi = surface_.Psi.middleRows(g * dim_, dim_);
+    const Eigen::Vector3d P = body_.body_point(surface_.position.row(g).transpose(), Psi, y);
+    if (target_.project(r + A * P, y, point_, hints_[std::size_t(g)])) f(g, Psi, P, A, point_);
+  }
+  return clearance;
+}
+
+Eigen::Vector3d SurfaceContact::friction_per_normal_force(const Eigen::Vector3d& vt) const {
+  return -spec_.friction * vt / std::sqrt(vt.squaredNorm() + spec_.regularization * spec_.regularization);
+}
+
+Eigen::Vector3d SurfaceContact::sliding_velocity(const Eigen::Vector3d& P, const Eigen::Ref<const Eigen::MatrixXd>& Psi,
+                                                 const double* y, const TargetPoint& t) const {
+  const Eigen::Vector3d v = body_.point_velocity(P, Psi, y) - t.velocity;
+  return v - t.normal.dot(v) * t.normal;
+}
+
+ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_force, GeneralizedForce* target_force) const {
+  ContactState s;
+  const FloatingBody* master = target_.body();
+  const Eigen::Matrix3d A_master = master ? master->orientation(y).toRotationMatrix() : Eigen::Matrix3d::Identity();
+  for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
+    if (t.gap >= 0) return;
+    const double w = surface_.weight(g);
+    const double fn = -spec_.penalty * t.gap * w;  // > 0
+    Eigen::Vector3d F = fn * t.normal;
+    if (spec_.friction > 0) {
+      const Eigen::Vector3d vt = sliding_velocity(P, Psi, y, t);
+      const Eigen::Vector3d Ft = fn * friction_per_normal_force(vt);
+      F += Ft;
+      s.friction_power -= Ft.dot(vt);
+    }
+    body_.apply_force(F, P, Psi, A, slave_force);
+    if (master && target_force) master->apply_force(-F, t.body_point, t.Psi, A_master, *target_force);
+    s.force += F;
+    ++s.active_points;
+    s.max_penetration = std::max(s.max_penetration, -t.gap);
+    s.penalty_energy += 0.5 * spec_.penalty * t.gap * t.gap * w;
+  });
+  return s;
+}
+
+void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const {
+  const FloatingBody* master = target_.body();
+  const bool slave_qs = body_.n_quasistatic() > 0, master_qs = master && master->n_quasistatic() > 0;
+  if (!slave_qs && !master_qs) return;
+  const Eigen::Matrix3d A_master = master ? master->orientation(y).toRotationMatrix() : Eigen::Matrix3d::Identity();
+  // one side's block: its generalized force from the world force F, and its parts of
+  // u = -df/dgap and v = dgap/dz; sign -1 for the target (reaction, gap decreasing with it)
+  auto add_side = [&](const FloatingBody& b, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Matrix3d& A, double sign,
+                      const Eigen::Vector3d& F, const Eigen::Vector3d& dF_dgap, const Eigen::Vector3d& n, Eigen::Index k) {
+    const Eigen::Index nh = b.n_quasistatic(), at = b.quasistatic_offset();
+    const auto Psi_h = Psi.rightCols(nh);
+    add_elastic_force(Psi_h, sign * (A.transpose() * F), terms.force.segment(at, nh));
+    add_elastic_force(Psi_h, -sign * (A.transpose() * dF_dgap), terms.U.col(k).segment(at, nh));
+    add_elastic_force(Psi_h, sign * (A.transpose() * n), terms.V.col(k).segment(at, nh));
+  };
+  for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
+    if (t.gap >= 0) return;
+    const double w = surface_.weight(g), fn = -spec_.penalty * t.gap * w;
+    Eigen::Vector3d F = fn * t.normal, dF_dgap = -spec_.penalty * w * t.normal;
+    if (spec_.friction > 0) {  // the friction direction is held: quasistatic modes carry no velocity
+      const Eigen::Vector3d dir = friction_per_normal_force(sliding_velocity(P, Psi, y, t));
+      F += fn * dir;
+      dF_dgap += -spec_.penalty * w * dir;
+    }
+    const Eigen::Index k = terms.add_term();
+    if (slave_qs) add_side(body_, Psi, A, 1.0, F, dF_dgap, t.normal, k);
+    if (master_qs) add_side(*master, t.Psi, A_master, -1.0, F, dF_dgap, t.normal, k);
+  });
+}
+
+double SurfaceContact::penalty_energy(const double* y) const {
+  double energy = 0;
+  for_each_point(y, [&](Eigen::Index g, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) {
+    if (t.gap < 0) energy += 0.5 * spec_.penalty * t.gap * t.gap * surface_.weight(g);
+  });
+  return energy;
+}
+
+double SurfaceContact::min_gap(const double* y) const {
+  double smallest = INFINITY;
+  const double clearance = for_each_point(
+      y, [&](Eigen::Index, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) { smallest = std::min(smallest, t.gap); });
+  if (clearance > 0) return clearance;
+  // no point is a candidate of the target (all beside it): clear, by an unknown positive gap
+  return std::isinf(smallest) ? std::max(bound_radius_, 1e-3) : smallest;
+}
+
+}  // namespace isosid::run

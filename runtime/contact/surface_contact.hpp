@@ -1,0 +1,70 @@
+// Gauss-point penalty contact (seed 000 eq. 22-25) of a flexible body's contact surface
+// (the slave) against a target: a fixed surface, a rigid body or another flexible body's
+// master patch. Each slave point that penetrates the target carries c_p |g| w along the
+// target's normal plus regularized Coulomb friction against the relative sliding velocity;
+// body targets receive the reaction. A bounding-sphere broad phase skips the whole surface
+// while it is clear of the target.
+#pragma once
+#include "body/floating_body.hpp"
+#include "contact/contact_target.hpp"
+#include "contact/quasistatic_terms.hpp"
+#include "scene/scene.hpp"
+
+#include <vector>
+
+namespace isosid::run {
+
+/// What one evaluation of a contact found.
+struct ContactState {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();  ///< total force on the slave body, world frame, N
+  int active_points = 0;
+  double max_penetration = 0;   ///< m (positive)
+  double penalty_energy = 0;    ///< J, sum of 1/2 c_p g^2 w over active points
+  double friction_power = 0;    ///< W dissipated by friction (>= 0)
+};
+
+class SurfaceContact {
+public:
+  SurfaceContact(const ContactSpec& spec, const FloatingBody& body, const ContactTarget& target);
+
+  const std::string& name() const { return spec_.name; }
+  const FloatingBody& body() const { return body_; }
+  const ContactTarget& target() const { return target_; }
+  /// Adds the contact forces to the slave's generalized forces and their reactions to the
+  /// target body's (`target_force`, unused for fixed targets); returns what was found.
+  ContactState apply(const double* y, GeneralizedForce& slave_force, GeneralizedForce* target_force) const;
+  /// Adds the generalized contact forces on the quasistatic modes of the slave and target
+  /// bodies to `terms`, with one rank-one Jacobian term per active point.
+  void add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const;
+  /// Penalty energy sum 1/2 c_p g^2 w at y (with the bodies' current quasistatic modes).
+  double penalty_energy(const double* y) const;
+  bool frictionless() const { return spec_.friction == 0; }
+  /// Smallest signed gap over the contact points (negative: penetration), for event
+  /// location; while the broad phase finds the surface clear, a positive lower bound.
+  double min_gap(const double* y) const;
+
+private:
+  /// Calls f(g, Psi_g, P, A, target point) for every slave point that is a candidate:
+  /// Psi_g its shape rows, P its body-frame position, A the slave's rotation. Returns the
+  /// broad-phase clearance (> 0: no point was visited).
+  template <class F>
+  double for_each_point(const double* y, F&& f) const;
+  /// Regularized Coulomb friction force per unit normal force: -mu vt / sqrt(|vt|^2 + eps^2).
+  Eigen::Vector3d friction_per_normal_force(const Eigen::Vector3d& vt) const;
+  /// World velocity of a slave point relative to the target, along the target's surface.
+  Eigen::Vector3d sliding_velocity(const Eigen::Vector3d& P, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const double* y,
+                                   const TargetPoint& t) const;
+
+  ContactSpec spec_;
+  const FloatingBody& body_;
+  const ContactTarget& target_;
+  const format::ContactSurface& surface_;
+  int dim_;
+  Eigen::Vector3d bound_center_ = Eigen::Vector3d::Zero();  ///< slave bounding sphere (reference, body frame)
+  double bound_radius_ = 0;
+  double bound_growth_ = 0;   ///< max over points of |Psi_g|_F: the sphere grows by this times |q|
+  mutable std::vector<Eigen::Vector2d> hints_;  ///< warm starts of the target projections
+  mutable TargetPoint point_;
+};
+
+}  // namespace isosid::run
