@@ -15,6 +15,14 @@ using Eigen::Vector3d;
 using Eigen::VectorXd;
 using format::skew;
 
+ModalMatrix::ModalMatrix(const MatrixXd& M) {
+  const MatrixXd off = M - MatrixXd(M.diagonal().asDiagonal());
+  if (M.size() == 0 || off.cwiseAbs().maxCoeff() <= 1e-14 * M.cwiseAbs().maxCoeff())
+    diagonal_ = M.diagonal();
+  else
+    dense_ = M;
+}
+
 Matrix3d tait_bryan_matrix(const Vector3d& a) {
   return (Eigen::AngleAxisd(a.x(), Vector3d::UnitX()) * Eigen::AngleAxisd(a.y(), Vector3d::UnitY()) *
           Eigen::AngleAxisd(a.z(), Vector3d::UnitZ()))
@@ -27,7 +35,7 @@ Vector3d tait_bryan_angles(const Matrix3d& A) {
 }
 
 FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dimension)
-    : name_(spec.name), sid_(std::move(sid)), spec_(spec) {
+    : name_(spec.name), sid_(std::move(sid)), spec_(spec), stiffness_(sid_.Ke.M0), damping_(sid_.De.M0) {
   const Index n = nq();
   // the Schur-complement solve below relies on the SID's normal form Me = I
   if ((sid_.Me.M0 - MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff() > 1e-8)
@@ -129,7 +137,7 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   Eigen::Matrix<double, 6, 1> hr;
   hr.head<3>() = m * gK + applied.force;
   hr.tail<3>() = mc.cross(gK) + applied.torque;
-  VectorXd hq = -(sid_.Ke.M0 * qv + sid_.De.M0 * qd + sid_.ksigma.M0.col(0)) + applied.elastic;
+  VectorXd hq = -(stiffness_.times(qv) + damping_.times(qd) + sid_.ksigma.M0.col(0)) + applied.elastic;
   hq += B.leftCols(3) * gK;  // Ct g: gravity on the modes
   if (rotates_) {
     B.rightCols(3) = sid_.Cr.order() ? sid_.Cr.at(qv) : sid_.Cr.M0;
@@ -177,7 +185,7 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   Eigen::Map<Vector3d>(d + 7 + nd) = A * x.head<3>();  // v' = A a_K
   Eigen::Map<Vector3d>(d + 10 + nd) = x.tail<3>();
   Eigen::Map<VectorXd>(d + 13 + nd, nd) = hd - Bd * x;
-  return qd.dot(sid_.De.M0 * qd);
+  return qd.dot(damping_.times(qd));
 }
 
 double FloatingBody::kinetic_energy(const double* y) const {
@@ -197,18 +205,12 @@ double FloatingBody::kinetic_energy(const double* y) const {
 
 double FloatingBody::elastic_energy(const double* y) const {
   const VectorXd& qv = q(y);
-  return 0.5 * qv.dot(sid_.Ke.M0 * qv);
+  return 0.5 * qv.dot(stiffness_.times(qv));
 }
 
 double FloatingBody::gravity_potential(const double* y, const Vector3d& gravity) const {
   const Vector3d mc = sid_.mdCM.at(q(y));
   return -gravity.dot(sid_.refmod.mass * r(y) + orientation(y).toRotationMatrix() * mc);
-}
-
-Vector3d FloatingBody::body_point(const VectorXd& c, const Eigen::Ref<const MatrixXd>& Psi, const double* y) const {
-  Vector3d P = Vector3d::Zero();
-  P.head(c.size()) = c + Psi * q(y);
-  return P;
 }
 
 Vector3d FloatingBody::point_velocity(const Vector3d& P, const Eigen::Ref<const MatrixXd>& Psi, const double* y) const {

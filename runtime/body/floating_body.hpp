@@ -23,6 +23,17 @@ struct GeneralizedForce {
   }
 };
 
+/// Ke or De: diagonal in the SID's normal form (then applied in O(nq)), dense otherwise.
+class ModalMatrix {
+public:
+  explicit ModalMatrix(const Eigen::MatrixXd& M);
+  Eigen::VectorXd times(const Eigen::VectorXd& x) const { return dense_.size() ? Eigen::VectorXd(dense_ * x) : Eigen::VectorXd(diagonal_.cwiseProduct(x)); }
+
+private:
+  Eigen::VectorXd diagonal_;
+  Eigen::MatrixXd dense_;
+};
+
 class FloatingBody {
 public:
   FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dimension);
@@ -66,9 +77,7 @@ public:
   double gravity_potential(const double* y, const Eigen::Vector3d& gravity) const;
 
   // --- points of the body ---
-  /// Body-frame position (3D) of a point with reference position c (dim) and shape rows Psi.
-  Eigen::Vector3d body_point(const Eigen::VectorXd& c, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const double* y) const;
-  /// World velocity of that point.
+  /// World velocity of the body-frame point P (3D) whose displacement rows are Psi.
   Eigen::Vector3d point_velocity(const Eigen::Vector3d& body_point, const Eigen::Ref<const Eigen::MatrixXd>& Psi,
                                  const double* y) const;
   /// Adds a world force F at a body point with shape rows Psi to the generalized forces.
@@ -85,6 +94,7 @@ private:
   std::string name_;
   format::Sid sid_;
   BodySpec spec_;
+  ModalMatrix stiffness_, damping_;  ///< Ke, De
   std::array<bool, 6> locked_{};  ///< x y z rx ry rz (body-frame accelerations)
   bool rotates_ = true;           ///< false if all rotations are locked: rotational terms vanish
   Eigen::Index offset_ = 0;

@@ -57,7 +57,8 @@ void QuasistaticModes::scatter(const Eigen::VectorXd& z) const {
 void QuasistaticModes::residual(const double* y, Eigen::VectorXd& R) const {
   scatter(z_);
   terms_.reset(size());
-  for (const SurfaceContact* c : contacts_) c->add_quasistatic_terms(y, terms_);
+  penalty_energy_ = 0;
+  for (const SurfaceContact* c : contacts_) penalty_energy_ += c->add_quasistatic_terms(y, terms_);
   R = dense_stiffness_.size() ? Eigen::VectorXd(dense_stiffness_ * z_) : Eigen::VectorXd(stiffness_.cwiseProduct(z_));
   R -= terms_.force;
 }
@@ -78,11 +79,9 @@ void QuasistaticModes::solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd&
   if (r > 0) x.noalias() -= scaled_U_ * small_.partialPivLu().solve(V.transpose() * scaled_b_);
 }
 
-double QuasistaticModes::merit(const double* y, const Eigen::VectorXd& R) const {
+double QuasistaticModes::merit(const Eigen::VectorXd& R) const {
   if (!conservative_) return R.norm();
-  double pi = 0.5 * (dense_stiffness_.size() ? z_.dot(dense_stiffness_ * z_) : z_.dot(stiffness_.cwiseProduct(z_)));
-  for (const SurfaceContact* c : contacts_) pi += c->penalty_energy(y);
-  return pi;
+  return 0.5 * (dense_stiffness_.size() ? z_.dot(dense_stiffness_ * z_) : z_.dot(stiffness_.cwiseProduct(z_))) + penalty_energy_;
 }
 
 int QuasistaticModes::solve(const double* y) const {
@@ -96,16 +95,16 @@ int QuasistaticModes::solve(const double* y) const {
   for (int iteration = 1; iteration <= 60; ++iteration) {
     solve_jacobian(R_, step_);
     z_old_ = z_;
-    const double m_old = merit(y, R_), slope = -R_.dot(step_);
+    const double m_old = merit(R_), slope = -R_.dot(step_);
     double alpha = 1.0;
     for (int halving = 0; halving < 30; ++halving) {
       z_ = z_old_ - alpha * step_;
       residual(y, R_);
-      const double m_new = merit(y, R_);
+      const double m_new = merit(R_);
       if ((conservative_ ? m_new <= m_old + 1e-4 * alpha * slope : m_new <= m_old) || halving == 29) break;
       alpha *= 0.5;
     }
-    residual(y, R_);
+    // R_ and the Jacobian terms are those of the accepted z_ (the last trial)
     // converged when the update or the residual is at round-off relative to the solution
     // (an absolute tolerance would feed solver noise into the right-hand side, and the
     // step-size control would chase it)

@@ -31,8 +31,9 @@ private:
   void residual(const double* y, Eigen::VectorXd& R) const;
   /// Solves (K + U V^T) x = b.
   void solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
-  /// Newton's merit: the total potential energy when frictionless (its gradient is R), else |R|.
-  double merit(const double* y, const Eigen::VectorXd& R) const;
+  /// Newton's merit at the last residual: the total potential energy when frictionless (its
+  /// gradient is R), else |R|.
+  double merit(const Eigen::VectorXd& R) const;
 
   std::vector<FloatingBody*> bodies_;            ///< bodies with quasistatic modes
   std::vector<const SurfaceContact*> contacts_;  ///< contacts touching one of them
@@ -44,6 +45,7 @@ private:
   mutable Eigen::VectorXd z_, R_, step_, z_old_, scaled_b_;
   mutable Eigen::MatrixXd scaled_U_, small_;
   mutable QuasistaticTerms terms_;
+  mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual
 };
 
 }  // namespace isosid::run

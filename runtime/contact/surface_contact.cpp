@@ -32,11 +32,14 @@ double SurfaceContact::for_each_point(const double* y, F&& f) const {
   const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
   const Eigen::Vector3d r = body_.r(y);
   // broad phase: |Psi_g q| <= |Psi_g|_F |q| bounds every point's displacement
-  const double clearance = target_.clearance(r + A * bound_center_, bound_radius_ + bound_growth_ * body_.q(y).norm());
+  const Eigen::VectorXd& q = body_.q(y);
+  const double clearance = target_.clearance(r + A * bound_center_, bound_radius_ + bound_growth_ * q.norm());
   if (clearance > 0) return clearance;
+  displacement_.noalias() = surface_.Psi * q;  // all points in one product (row blocks would be strided)
+  Eigen::Vector3d P = Eigen::Vector3d::Zero();
   for (Eigen::Index g = 0; g < surface_.points(); ++g) {
     const auto Psi = surface_.Psi.middleRows(g * dim_, dim_);
-    const Eigen::Vector3d P = body_.body_point(surface_.position.row(g).transpose(), Psi, y);
+    P.head(dim_) = surface_.position.row(g).transpose() + displacement_.segment(g * dim_, dim_);
     if (target_.project(r + A * P, y, point_, hints_[std::size_t(g)])) f(g, Psi, P, A, point_);
   }
   return clearance;
@@ -77,10 +80,11 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
   return s;
 }
 
-void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const {
+double SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const {
   const FloatingBody* master = target_.body();
   const bool slave_qs = body_.n_quasistatic() > 0, master_qs = master && master->n_quasistatic() > 0;
-  if (!slave_qs && !master_qs) return;
+  if (!slave_qs && !master_qs) return 0;
+  double energy = 0;
   const Eigen::Matrix3d A_master = master ? master->orientation(y).toRotationMatrix() : Eigen::Matrix3d::Identity();
   // one side's block: its generalized force from the world force F, and its parts of
   // u = -df/dgap and v = dgap/dz; sign -1 for the target (reaction, gap decreasing with it)
@@ -95,6 +99,7 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
   for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
     if (t.gap >= 0) return;
     const double w = surface_.weight(g), fn = -spec_.penalty * t.gap * w;
+    energy += 0.5 * spec_.penalty * t.gap * t.gap * w;
     Eigen::Vector3d F = fn * t.normal, dF_dgap = -spec_.penalty * w * t.normal;
     if (spec_.friction > 0) {  // the friction direction is held: quasistatic modes carry no velocity
       const Eigen::Vector3d dir = friction_per_normal_force(sliding_velocity(P, Psi, y, t));
@@ -104,13 +109,6 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
     const Eigen::Index k = terms.add_term();
     if (slave_qs) add_side(body_, Psi, A, 1.0, F, dF_dgap, t.normal, k);
     if (master_qs) add_side(*master, t.Psi, A_master, -1.0, F, dF_dgap, t.normal, k);
-  });
-}
-
-double SurfaceContact::penalty_energy(const double* y) const {
-  double energy = 0;
-  for_each_point(y, [&](Eigen::Index g, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) {
-    if (t.gap < 0) energy += 0.5 * spec_.penalty * t.gap * t.gap * surface_.weight(g);
   });
   return energy;
 }

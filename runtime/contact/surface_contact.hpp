@@ -34,10 +34,9 @@ public:
   /// target body's (`target_force`, unused for fixed targets); returns what was found.
   ContactState apply(const double* y, GeneralizedForce& slave_force, GeneralizedForce* target_force) const;
   /// Adds the generalized contact forces on the quasistatic modes of the slave and target
-  /// bodies to `terms`, with one rank-one Jacobian term per active point.
-  void add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const;
-  /// Penalty energy sum 1/2 c_p g^2 w at y (with the bodies' current quasistatic modes).
-  double penalty_energy(const double* y) const;
+  /// bodies to `terms`, with one rank-one Jacobian term per active point; returns the
+  /// penalty energy (0 if neither body has quasistatic modes).
+  double add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const;
   bool frictionless() const { return spec_.friction == 0; }
   /// Smallest signed gap over the contact points (negative: penetration), for event
   /// location; while the broad phase finds the surface clear, a positive lower bound.
@@ -65,6 +64,7 @@ private:
   double bound_growth_ = 0;   ///< max over points of |Psi_g|_F: the sphere grows by this times |q|
   mutable std::vector<Eigen::Vector2d> hints_;  ///< warm starts of the target projections
   mutable TargetPoint point_;
+  mutable Eigen::VectorXd displacement_;         ///< Psi q of all points
 };
 
 }  // namespace isosid::run
