@@ -38,8 +38,8 @@ void basis_functions(const KnotVector& U, int p, int span, double u, double* N) 
   }
 }
 
-Eigen::MatrixXd basis_derivatives(const KnotVector& U, int p, int span, double u, int n_ders) {
-  Eigen::MatrixXd ndu(p + 1, p + 1), a(2, p + 1), ders = Eigen::MatrixXd::Zero(n_ders + 1, p + 1);
+BasisDerivatives basis_derivatives(const KnotVector& U, int p, int span, double u, int n_ders) {
+  BasisDerivatives ndu(p + 1, p + 1), a(2, p + 1), ders = BasisDerivatives::Zero(n_ders + 1, p + 1);
   double left[16], right[16];
   ndu(0, 0) = 1.0;
   for (int j = 1; j <= p; ++j) {

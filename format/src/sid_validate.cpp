@@ -2,6 +2,7 @@
 #include "isosid/format/sid_validate.hpp"
 
 #include "isosid/format/error.hpp"
+#include "isosid/format/bspline_basis.hpp"
 #include "sid_layout.hpp"
 
 #include <cmath>
@@ -145,7 +146,7 @@ void check_master_patches(const Checker& c, const Sid& sid) {
     for (std::size_t d = 0; d < m.degrees.size(); ++d) {
       const std::string f = p + "/knots_" + std::to_string(d);
       c.finite(f, m.knots[d]);
-      c.require(m.degrees[d] >= 1, p + "/degrees", "degree must be at least 1");
+      c.require(m.degrees[d] >= 1 && m.degrees[d] <= kMaxDegree, p + "/degrees", "degree must lie in 1..15");
       for (Index i = 1; i < m.knots[d].size(); ++i)
         c.require(m.knots[d](i) >= m.knots[d](i - 1), f, "knots not non-decreasing at " + std::to_string(i));
       const Index n = m.knots[d].size() - m.degrees[d] - 1;

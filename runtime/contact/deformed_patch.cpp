@@ -7,7 +7,8 @@
 
 namespace isosid::run {
 
-DeformedPatch::DeformedPatch(const format::MasterPatch& patch, int dim) : patch_(patch), dim_(dim), net_(patch.control_points) {
+DeformedPatch::DeformedPatch(const format::MasterPatch& patch, int dim)
+    : patch_(patch), dim_(dim), net_(patch.control_points), Phi_transposed_(patch.Phi.transpose()) {
   std::vector<std::vector<double>> mids(2, std::vector<double>{0.0});
   for (int d = 0; d < parameter_dim(); ++d) {
     const std::vector<double> k = format::unique_knots(patch.knots[std::size_t(d)]);
@@ -19,9 +20,10 @@ DeformedPatch::DeformedPatch(const format::MasterPatch& patch, int dim) : patch_
 }
 
 void DeformedPatch::deform(const Eigen::VectorXd& q) {
+  displacement_.noalias() = patch_.Phi * q;  // row i*dim+a: component a of control point i
   const Eigen::Index ncp = patch_.control_points.rows();
   for (Eigen::Index i = 0; i < ncp; ++i)
-    for (int a = 0; a < dim_; ++a) net_(i, a) = patch_.control_points(i, a) + patch_.Phi.row(i * dim_ + a).dot(q);
+    for (int a = 0; a < dim_; ++a) net_(i, a) = patch_.control_points(i, a) + displacement_(i * dim_ + a);
 }
 
 void DeformedPatch::evaluate(const Eigen::Vector2d& u, Point& out) const {
@@ -29,7 +31,7 @@ void DeformedPatch::evaluate(const Eigen::Vector2d& u, Point& out) const {
   // C = A / W with A = sum N w P, W = sum N w (The NURBS Book, eq. 4.8 and A4.4)
   const int pd = parameter_dim();
   int span[2] = {0, 0}, p[2] = {0, 0};
-  Eigen::MatrixXd N[2] = {Eigen::MatrixXd::Zero(3, 1), Eigen::MatrixXd::Zero(3, 1)};
+  format::BasisDerivatives N[2] = {format::BasisDerivatives::Zero(3, 1), format::BasisDerivatives::Zero(3, 1)};
   N[1](0, 0) = 1;  // a curve: a constant second direction
   for (int d = 0; d < pd; ++d) {
     const auto& U = patch_.knots[std::size_t(d)];
@@ -46,7 +48,8 @@ void DeformedPatch::evaluate(const Eigen::Vector2d& u, Point& out) const {
   for (auto& a : A) a.setZero();
   out.control_points.clear();
   out.R.clear();
-  std::vector<double> Nw;  // N w of each control point, for R
+  double Nw[(format::kMaxDegree + 1) * (format::kMaxDegree + 1)];  // N w of each control point, for R
+  int count = 0;
   for (int b = 0; b <= p[1]; ++b)
     for (int a = 0; a <= p[0]; ++a) {
       const int i = (span[0] - p[0] + a) + n_u * (pd > 1 ? span[1] - p[1] + b : 0);
@@ -60,12 +63,12 @@ void DeformedPatch::evaluate(const Eigen::Vector2d& u, Point& out) const {
         A[k] += Nk * P;
       }
       out.control_points.push_back(i);
-      Nw.push_back(N[0](0, a) * N[1](0, b) * w);
+      Nw[count++] = N[0](0, a) * N[1](0, b) * w;
     }
   const double W0 = W[0];
   out.C = A[0] / W0;
-  out.R.resize(Nw.size());
-  for (std::size_t j = 0; j < Nw.size(); ++j) out.R[j] = Nw[j] / W0;
+  out.R.resize(std::size_t(count));
+  for (int j = 0; j < count; ++j) out.R[std::size_t(j)] = Nw[j] / W0;
   if (pd == 1) {
     out.dC[0] = (A[1] - W[1] * out.C) / W0;
     out.ddC[0] = (A[2] - 2 * W[1] * out.dC[0] - W[2] * out.C) / W0;
@@ -80,9 +83,11 @@ void DeformedPatch::evaluate(const Eigen::Vector2d& u, Point& out) const {
 }
 
 void DeformedPatch::shape_rows(const Point& point, Eigen::MatrixXd& Psi) const {
+  // from the transposed rows: each control point's modal row is a contiguous column
   Psi.setZero(dim_, patch_.Phi.cols());
   for (std::size_t j = 0; j < point.R.size(); ++j)
-    Psi.noalias() += point.R[j] * patch_.Phi.middleRows(Eigen::Index(point.control_points[j]) * dim_, dim_);
+    for (int a = 0; a < dim_; ++a)
+      Psi.row(a).noalias() += point.R[j] * Phi_transposed_.col(Eigen::Index(point.control_points[j]) * dim_ + a).transpose();
 }
 
 }  // namespace isosid::run

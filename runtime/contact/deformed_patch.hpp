@@ -40,6 +40,8 @@ private:
   const format::MasterPatch& patch_;
   int dim_;
   Eigen::MatrixXd net_;
+  Eigen::MatrixXd Phi_transposed_;   ///< nq x (ncp*dim)
+  Eigen::VectorXd displacement_;     ///< Phi q
   std::vector<Eigen::Vector2d> midpoints_;
 };
 

@@ -121,13 +121,13 @@ void Recorder::step(double t, const double* y) {
   last_step_t_ = t;
 }
 
-void Recorder::contact_event(int k, double t) {
+void Recorder::contact_event(int k, bool closing, double t) {
+  // by the direction of the crossing, not by toggling: a root reported twice cannot
+  // swap onset and release
   auto& list = intervals_[std::size_t(k)];
-  if (!active_[std::size_t(k)])
-    list.push_back({t, -1});
-  else if (!list.empty())
-    list.back().end = t;
-  active_[std::size_t(k)] = !active_[std::size_t(k)];
+  if (closing && !active_[std::size_t(k)]) list.push_back({t, -1});
+  if (!closing && active_[std::size_t(k)] && !list.empty()) list.back().end = t;
+  active_[std::size_t(k)] = closing;
 }
 
 double Recorder::max_relative_energy_error() const {

@@ -25,8 +25,8 @@ public:
   void sample(double t, const double* y);
   /// Per accepted step: peak force, impulse, monitor reversals.
   void step(double t, const double* y);
-  /// A contact's gap changed sign at t (onset or release).
-  void contact_event(int contact, double t);
+  /// A contact's gap changed sign at t: closing (onset) or opening (release).
+  void contact_event(int contact, bool closing, double t);
 
   /// results.h5: written to a temporary file and renamed (never half-written).
   void write_results(const std::string& path) const;

@@ -101,7 +101,7 @@ TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSe
 
 TimeIntegrator::~TimeIntegrator() = default;
 
-std::vector<int> TimeIntegrator::advance(double tout, double& t) {
+std::vector<TimeIntegrator::GapEvent> TimeIntegrator::advance(double tout, double& t) {
   Impl& m = *impl_;
   realtype reached = t;
   const int flag = m.implicit ? ARKStepEvolve(m.memory, tout, m.y, &reached, ARK_NORMAL)
@@ -111,12 +111,12 @@ std::vector<int> TimeIntegrator::advance(double tout, double& t) {
     throw format::ComputationError("time integration failed at t = " + std::to_string(reached) + " s (SUNDIALS flag " +
                                    std::to_string(flag) + (flag == -4 ? ": error test failed repeatedly, the step size "
                                                                         "fell to its minimum (penalty too stiff?)" : "") + ")");
-  std::vector<int> changed;
+  std::vector<GapEvent> changed;
   if (flag == ARK_ROOT_RETURN) {
-    std::vector<int> info(m.system.contacts().size());
+    std::vector<int> info(m.system.contacts().size());  // +1: gap increasing, -1: decreasing
     m.implicit ? ARKStepGetRootInfo(m.memory, info.data()) : ERKStepGetRootInfo(m.memory, info.data());
     for (std::size_t k = 0; k < info.size(); ++k)
-      if (info[k] != 0) changed.push_back(int(k));
+      if (info[k] != 0) changed.push_back({int(k), info[k] < 0});
   }
   return changed;
 }

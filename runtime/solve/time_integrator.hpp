@@ -26,9 +26,14 @@ public:
   /// Called after every accepted step with (t, y).
   void on_step(std::function<void(double, const double*)> callback) { step_callback_ = std::move(callback); }
 
+  /// A contact whose gap changed sign: closing (onset) or opening (release).
+  struct GapEvent {
+    int contact;
+    bool closing;
+  };
   /// Advances toward tout. Returns the contacts whose gap changed sign (empty if tout was
   /// reached); t and y() hold the state reached. Throws ComputationError on failure.
-  std::vector<int> advance(double tout, double& t);
+  std::vector<GapEvent> advance(double tout, double& t);
   const Eigen::VectorXd& y() const { return y_; }
   IntegratorStats stats() const;
 

@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
     std::vector<double> gap(system.contacts().size());
     system.gaps(integrator.y().data(), gap.data());
     for (std::size_t k = 0; k < gap.size(); ++k)
-      if (gap[k] < 0) recorder.contact_event(int(k), 0.0);  // starts in contact
+      if (gap[k] < 0) recorder.contact_event(int(k), true, 0.0);  // starts in contact
 
     const auto t0 = Clock::now();
     auto last_progress = t0;
@@ -67,10 +67,10 @@ int main(int argc, char** argv) {
     try {
       while (t < end * (1 - 1e-12)) {
         const double tout = std::min(end, next * dt_out);
-        const std::vector<int> events = integrator.advance(tout, t);
+        const auto events = integrator.advance(tout, t);
         if (!integrator.y().allFinite())
           throw format::ComputationError("the state of body '" + diverged_body(system, integrator.y()) + "' is not finite");
-        for (int k : events) recorder.contact_event(k, t);
+        for (const auto& e : events) recorder.contact_event(e.contact, e.closing, t);
         recorder.sample(t, integrator.y().data());
         if (events.empty()) ++next;
         if (!quiet && std::chrono::duration<double>(Clock::now() - last_progress).count() > 1.0) {

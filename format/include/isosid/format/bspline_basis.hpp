@@ -19,8 +19,12 @@ int find_span(const KnotVector& U, int p, double u);
 /// The p+1 non-zero basis functions N_{span-p..span}(u).
 void basis_functions(const KnotVector& U, int p, int span, double u, double* N);
 
-/// Row k: k-th derivative of the p+1 non-zero functions at u, k = 0..n_ders.
-Eigen::MatrixXd basis_derivatives(const KnotVector& U, int p, int span, double u, int n_ders);
+/// Degrees up to this are supported (the work arrays live on the stack).
+inline constexpr int kMaxDegree = 15;
+/// Row k: k-th derivative of the p+1 non-zero functions at u, k = 0..n_ders (fixed capacity,
+/// so evaluation does not allocate: the runtime projects on master patches in its hot loop).
+using BasisDerivatives = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxDegree + 1, kMaxDegree + 1>;
+BasisDerivatives basis_derivatives(const KnotVector& U, int p, int span, double u, int n_ders);
 
 /// Distinct knot values, ascending.
 std::vector<double> unique_knots(const KnotVector& U);
