@@ -38,7 +38,7 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
     : name_(spec.name), sid_(std::move(sid)), spec_(spec), stiffness_(sid_.Ke.M0), damping_(sid_.De.M0) {
   const Index n = nq();
   // the Schur-complement solve below relies on the SID's normal form Me = I
-  if ((sid_.Me.M0 - MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff() > 1e-8)
+  if (n > 0 && (sid_.Me.M0 - MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff() > 1e-8)
     throw format::InputError(spec.sid_file, "/terms/Me/M0", "the runtime needs mass-normalized modes (Me = I)");
   const bool axisymmetric_sid = sid_.analysis == format::AnalysisType::Axisymmetric;
   if ((dimension == Dimension::Axisymmetric) != axisymmetric_sid)

@@ -1,7 +1,7 @@
 // isosid-run on the small golden SIDs: free flight against the closed-form motion, an
 // impact that must conserve energy and momentum, and bad scenes refused with one line.
 #include "isosid/format/sid_io.hpp"
-#include "support/run_program.hpp"
+#include "scene_runner.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -12,17 +12,13 @@
 using namespace isosid;
 using Catch::Matchers::Contains;
 using nlohmann::json;
+using test::rel_error;
+using test::run_scene;
+using test::run_seed_scene;
 
 namespace {
 const std::string kGolden = ISOSID_GOLDEN_DIR;
 
-json run_scene(const test::ScratchDir& dir, const std::string& text, int expected_status = 0) {
-  std::ofstream(dir.path("s.scene.toml")) << text;
-  const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " -q --json " + dir.path("s.scene.toml") + " -o " + dir.path("out"));
-  INFO(r.err);
-  REQUIRE(r.exit_status == expected_status);
-  return expected_status == 0 ? json::parse(r.out) : json();
-}
 
 const std::string kImpact = R"(
 [simulation]
@@ -106,8 +102,8 @@ TEST_CASE("an elastic sphere impact conserves energy and rebounds", "[runtime]")
   // elastic impact: only the light modal damping dissipates (0.03 % of the energy here)
   CHECK(v1 == Approx(0.1).epsilon(1e-3));
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-4);
-  CHECK(std::ifstream(dir.path("out/results.h5")).good());
-  CHECK(std::ifstream(dir.path("out/summary.json")).good());
+  CHECK(std::ifstream(dir.path("out-s.scene.toml/results.h5")).good());
+  CHECK(std::ifstream(dir.path("out-s.scene.toml/summary.json")).good());
 }
 
 TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[runtime]") {
@@ -146,21 +142,6 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
   }
 }
 
-namespace {
-/// Copies a seed scene and its model into a scratch folder (the SID is built there by
-/// isosid-run through isosid-prep) and runs it.
-json run_seed_scene(const test::ScratchDir& dir, const std::string& scene, const std::string& model) {
-  const std::string models = ISOSID_MODELS_DIR;
-  for (const std::string& f : {scene, model})
-    std::filesystem::copy_file(models + "/" + f, dir.path(f), std::filesystem::copy_options::overwrite_existing);
-  const auto r = test::run_program("ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_RUN_EXE + " -q --json " +
-                                   dir.path(scene) + " -o " + dir.path("out-" + scene));
-  INFO(r.err);
-  REQUIRE(r.exit_status == 0);
-  return json::parse(r.out);
-}
-double rel_error(const json& s, const std::string& key) { return s["reference"][key]["rel_error"].get<double>(); }
-}  // namespace
 
 TEST_CASE("scene A: sphere on sphere (Hertz) with the Craig-Bampton sphere", "[runtime][seed]") {
   const test::ScratchDir dir("scene-a");

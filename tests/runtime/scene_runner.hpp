@@ -1,0 +1,20 @@
+// Running isosid-run from tests: scenes given as text or copied from models/, SIDs built from
+// their model files through isosid-prep (ISOSID_PREP), the JSON summary parsed.
+#pragma once
+#include "support/run_program.hpp"
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace isosid::test {
+
+/// Writes `text` as dir/s.scene.toml, runs it and returns the summary (null unless it succeeded).
+nlohmann::json run_scene(const ScratchDir& dir, const std::string& text, int expected_status = 0);
+/// Copies a file of models/ into dir.
+void copy_model_file(const ScratchDir& dir, const std::string& file);
+/// Copies a scene of models/ and its model into dir and runs it.
+nlohmann::json run_seed_scene(const ScratchDir& dir, const std::string& scene, const std::string& model);
+/// The relative error of a [reference] value in a summary.
+double rel_error(const nlohmann::json& summary, const std::string& key);
+
+}  // namespace isosid::test
