@@ -18,6 +18,7 @@ struct SimulationSettings {
   IntegratorKind integrator = IntegratorKind::DormandPrince;
   double rtol = 1e-6, atol = 1e-9;
   double max_step = 0;          ///< s, 0: unlimited
+  long max_steps = 10'000'000;  ///< a run needing more steps stops with a diagnosis instead of crawling
   double output_interval = 0;   ///< s
 };
 

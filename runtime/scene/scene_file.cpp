@@ -102,7 +102,7 @@ std::string resolve(const std::string& scene_file, const std::string& path) {
 }
 
 SimulationSettings read_simulation(const TomlView& s) {
-  s.allow_only({"dimension", "end_time", "integrator", "rtol", "atol", "max_step", "output_interval", "gravity"});
+  s.allow_only({"dimension", "end_time", "integrator", "rtol", "atol", "max_step", "max_steps", "output_interval", "gravity"});
   SimulationSettings out;
   const std::string dim = s.string("dimension");
   if (dim == "planar")
@@ -124,6 +124,8 @@ SimulationSettings read_simulation(const TomlView& s) {
   out.rtol = s.positive("rtol", 1e-6);
   out.atol = s.positive("atol", 1e-9);
   out.max_step = s.positive("max_step", out.end_time);
+  out.max_steps = long(s.integer("max_steps", out.max_steps));
+  if (out.max_steps < 1) s.fail("max_steps", "must be at least 1");
   out.output_interval = s.positive("output_interval", out.end_time / 1000);
   if (out.output_interval > out.end_time) s.fail("output_interval", "exceeds end_time");
   return out;

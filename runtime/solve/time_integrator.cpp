@@ -10,6 +10,8 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <cmath>
+#include <exception>
+#include <utility>
 
 namespace isosid::run {
 
@@ -22,6 +24,9 @@ struct TimeIntegrator::Impl {
   SUNMatrix matrix = nullptr;
   SUNLinearSolver linear_solver = nullptr;
   TimeIntegrator* owner = nullptr;
+  /// An exception from the right-hand side: it must not unwind through SUNDIALS' C frames,
+  /// so the callback stores it, fails the step, and advance() rethrows it.
+  mutable std::exception_ptr pending;
 
   Impl(const MultibodySystem& s, bool imp) : system(s), implicit(imp) {}
   ~Impl() {
@@ -37,17 +42,45 @@ struct TimeIntegrator::Impl {
     const double* yy = N_VGetArrayPointer(y);
     for (Eigen::Index i = 0; i < N_VGetLength(y); ++i)
       if (!std::isfinite(yy[i])) return 1;  // recoverable: the step is retried smaller
-    self->system.rhs(t, yy, N_VGetArrayPointer(ydot));
-    return 0;
+    return self->guarded([&] { self->system.rhs(t, yy, N_VGetArrayPointer(ydot)); });
   }
   static int roots(realtype, N_Vector y, realtype* g, void* data) {
-    static_cast<const Impl*>(data)->system.gaps(N_VGetArrayPointer(y), g);
-    return 0;
+    const Impl* self = static_cast<const Impl*>(data);
+    return self->guarded([&] { self->system.gaps(N_VGetArrayPointer(y), g); });
   }
   static int post_step(realtype t, N_Vector y, void* data) {
     const Impl* self = static_cast<const Impl*>(data);
-    if (self->owner->step_callback_) self->owner->step_callback_(t, N_VGetArrayPointer(y));
-    return 0;
+    return self->guarded([&] {
+      if (self->owner->step_callback_) self->owner->step_callback_(t, N_VGetArrayPointer(y));
+    });
+  }
+  template <class F>
+  int guarded(F&& f) const {
+    try {
+      f();
+      return 0;
+    } catch (...) {
+      pending = std::current_exception();
+      return -1;  // unrecoverable: ARKODE returns at once
+    }
+  }
+  /// The body whose state carries the largest weighted local error estimate of the last
+  /// attempted step: where a failing step size control has been looking.
+  std::string worst_body() const {
+    N_Vector error = N_VClone(y), weight = N_VClone(y);
+    const bool ok = implicit ? ARKStepGetEstLocalErrors(memory, error) == 0 && ARKStepGetErrWeights(memory, weight) == 0
+                             : ERKStepGetEstLocalErrors(memory, error) == 0 && ERKStepGetErrWeights(memory, weight) == 0;
+    std::string name;
+    double worst = -1;
+    if (ok)
+      for (const auto& b : system.bodies())
+        for (Eigen::Index i = b->offset(); i < b->offset() + b->state_size(); ++i) {
+          const double e = std::abs(N_VGetArrayPointer(error)[i] * N_VGetArrayPointer(weight)[i]);
+          if (e > worst) worst = e, name = b->name();
+        }
+    N_VDestroy(error);
+    N_VDestroy(weight);
+    return name;
   }
 };
 
@@ -58,7 +91,7 @@ void check(int flag, const char* what) {
 }  // namespace
 
 TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSettings& s, Eigen::VectorXd y0)
-    : impl_(std::make_unique<Impl>(system, s.integrator == IntegratorKind::Implicit)), y_(std::move(y0)) {
+    : impl_(std::make_unique<Impl>(system, s.integrator == IntegratorKind::Implicit)), y_(std::move(y0)), max_steps_(s.max_steps) {
   Impl& m = *impl_;
   m.owner = this;
   check(SUNContext_Create(nullptr, &m.context), "context");
@@ -70,7 +103,7 @@ TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSe
     check(ARKStepSetUserData(m.memory, &m), "user data");
     check(ARKStepSStolerances(m.memory, s.rtol, s.atol), "tolerances");
     check(ARKStepSetMaxStep(m.memory, s.max_step), "max step");
-    check(ARKStepSetMaxNumSteps(m.memory, 50'000'000), "max steps");
+    check(ARKStepSetMaxNumSteps(m.memory, s.max_steps), "max steps");
     check(ARKStepSetStopTime(m.memory, s.end_time), "stop time");
     // a stiffly accurate, L-stable ESDIRK of order 3: damps the high Craig-Bampton modes
     check(ARKStepSetTableNum(m.memory, ARKODE_ESDIRK324L2SA_4_2_3, ARKODE_ERK_NONE), "table");
@@ -89,7 +122,7 @@ TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSe
     check(ERKStepSetTableNum(m.memory, ARKODE_DORMAND_PRINCE_7_4_5), "Dormand-Prince table");
     check(ERKStepSStolerances(m.memory, s.rtol, s.atol), "tolerances");
     check(ERKStepSetMaxStep(m.memory, s.max_step), "max step");
-    check(ERKStepSetMaxNumSteps(m.memory, 50'000'000), "max steps");
+    check(ERKStepSetMaxNumSteps(m.memory, s.max_steps), "max steps");
     check(ERKStepSetStopTime(m.memory, s.end_time), "stop time");
     check(ERKStepSetPostprocessStepFn(m.memory, Impl::post_step), "post-step hook");
     if (n_roots) {
@@ -107,10 +140,21 @@ std::vector<TimeIntegrator::GapEvent> TimeIntegrator::advance(double tout, doubl
   const int flag = m.implicit ? ARKStepEvolve(m.memory, tout, m.y, &reached, ARK_NORMAL)
                               : ERKStepEvolve(m.memory, tout, m.y, &reached, ARK_NORMAL);
   t = reached;
-  if (flag < 0)
-    throw format::ComputationError("time integration failed at t = " + std::to_string(reached) + " s (SUNDIALS flag " +
-                                   std::to_string(flag) + (flag == -4 ? ": error test failed repeatedly, the step size "
-                                                                        "fell to its minimum (penalty too stiff?)" : "") + ")");
+  if (m.pending) std::rethrow_exception(std::exchange(m.pending, nullptr));
+  if (flag < 0) {
+    const std::string body = m.worst_body();
+    throw format::ComputationError(
+        "time integration failed" + (body.empty() ? "" : " in body '" + body + "'") +
+        " (SUNDIALS flag " + std::to_string(flag) +
+        (flag == -4 ? ": error test failed repeatedly, the step size fell to its minimum (penalty too stiff?)" : "") +
+        (flag == -1 ? ": the step limit max_steps was reached" : "") + ")");
+  }
+  if (stats().steps > max_steps_) {
+    const std::string body = m.worst_body();
+    throw format::ComputationError("the step limit max_steps = " + std::to_string(max_steps_) + " was reached" +
+                                   (body.empty() ? "" : ", steps limited by body '" + body + "'") +
+                                   " (penalty too stiff for the contact resolution?)");
+  }
   std::vector<GapEvent> changed;
   if (flag == ARK_ROOT_RETURN) {
     std::vector<int> info(m.system.contacts().size());  // +1: gap increasing, -1: decreasing

@@ -41,6 +41,7 @@ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   Eigen::VectorXd y_;
+  long max_steps_;  ///< over the whole run (ARKODE counts per advance)
   std::function<void(double, const double*)> step_callback_;
 };
 

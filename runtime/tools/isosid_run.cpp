@@ -80,7 +80,9 @@ int main(int argc, char** argv) {
       }
     } catch (const format::ComputationError& e) {
       status = "failed";
-      failure = std::string(e.what()) + " (t = " + std::to_string(t) + " s)";
+      char when[64];
+      std::snprintf(when, sizeof when, " (at t = %.6g s)", t);
+      failure = e.what() + std::string(when);
     }
     const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
     recorder.write_results((fs::path(out_dir) / "results.h5").string());

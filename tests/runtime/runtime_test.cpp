@@ -143,6 +143,25 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
 }
 
 
+TEST_CASE("a run that cannot proceed stops naming time and body and keeps its results", "[runtime]") {
+  // penalty 1e30 with dynamic constraint modes: the steps shrink towards 1e-12 s; the step
+  // limit turns the crawl into a diagnosis instead of a hang
+  const test::ScratchDir dir("stalled");
+  std::string text = kImpact;
+  text.replace(text.find("penalty = 5e17"), 14, "penalty = 1e30");
+  text.replace(text.find("high_modes = \"quasistatic\""), 26, "high_modes = \"dynamic\"");
+  text.replace(text.find("output_interval = 1e-6"), 22, "output_interval = 1e-6\nmax_steps = 3000");
+  std::ofstream(dir.path("s.scene.toml")) << text;
+  const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + dir.path("out"));
+  INFO(r.err);
+  CHECK(r.exit_status == 1);
+  CHECK_THAT(r.err, Contains("max_steps = 3000") && Contains("body 'sphere'") && Contains("at t = "));
+  const json s = json::parse(std::ifstream(dir.path("out/summary.json")));
+  CHECK(s["status"] == "failed");
+  CHECK(s["steps"].get<long>() >= 3000);
+  CHECK(std::ifstream(dir.path("out/results.h5")).good());
+}
+
 TEST_CASE("scene A: sphere on sphere (Hertz) with the Craig-Bampton sphere", "[runtime][seed]") {
   const test::ScratchDir dir("scene-a");
   const json s = run_seed_scene(dir, "sphere_hertz.scene.toml", "sphere_axisym.model.toml");
