@@ -104,6 +104,16 @@ TEST_CASE("an elastic sphere impact conserves energy and rebounds", "[runtime]")
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-4);
   CHECK(std::ifstream(dir.path("out-s.scene.toml/results.h5")).good());
   CHECK(std::ifstream(dir.path("out-s.scene.toml/summary.json")).good());
+  // the plot script draws force (with Hertz) and energies from these files
+  const auto plot = test::run_program(std::string(ISOSID_SCRIPTS_DIR) + "/plot-results " + dir.path("out-s.scene.toml"));
+  INFO(plot.err);
+  CHECK(plot.exit_status == 0);
+  for (const char* png : {"contact_force.png", "energy.png"}) {
+    std::ifstream f(dir.path("out-s.scene.toml/") + png, std::ios::binary);
+    char magic[4] = {};
+    f.read(magic, 4);
+    CHECK(std::string(magic + 1, 3) == "PNG");
+  }
 }
 
 TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[runtime]") {
