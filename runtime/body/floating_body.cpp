@@ -17,7 +17,7 @@ using format::skew;
 
 ModalMatrix::ModalMatrix(const MatrixXd& M) {
   const MatrixXd off = M - MatrixXd(M.diagonal().asDiagonal());
-  if (M.size() == 0 || off.cwiseAbs().maxCoeff() <= 1e-14 * M.cwiseAbs().maxCoeff())
+  if (M.size() == 0 || off.cwiseAbs().maxCoeff() <= 1e-12 * M.cwiseAbs().maxCoeff())
     diagonal_ = M.diagonal();
   else
     dense_ = M;
@@ -35,7 +35,8 @@ Vector3d tait_bryan_angles(const Matrix3d& A) {
 }
 
 FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dimension)
-    : name_(spec.name), sid_(std::move(sid)), spec_(spec), stiffness_(sid_.Ke.M0), damping_(sid_.De.M0) {
+    : name_(spec.name), sid_(std::move(sid)), spec_(spec), stiffness_(sid_.Ke.M0), damping_(sid_.De.M0),
+      B_(sid_.nq(), 6), Ct_(sid_.nq(), 3), Cr_(sid_.nq(), 3), Ge_(sid_.nq(), 3), Oe_(sid_.nq(), 6), hq_(sid_.nq()) {
   const Index n = nq();
   // the Schur-complement solve below relies on the SID's normal form Me = I
   if (n > 0 && (sid_.Me.M0 - MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff() > 1e-8)
@@ -122,11 +123,14 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   d[6] = 0.5 * pdot.z() + k * pr[3];
   Eigen::Map<VectorXd>(d + 7, nd) = qd.head(nd);
 
-  // mass matrix blocks at q (SID Taylor terms)
+  // mass matrix blocks at q (SID Taylor terms), into the preallocated workspace: the
+  // right-hand side runs millions of times and must not allocate
   const double m = sid_.refmod.mass;
-  const Vector3d mc = sid_.mdCM.at(qv);
-  MatrixXd B(n, 6);  // [Ct, Cr]
-  B.leftCols(3) = sid_.Ct.order() ? sid_.Ct.at(qv) : sid_.Ct.M0;
+  Vector3d mc;
+  sid_.mdCM.evaluate(qv, mc);
+  MatrixXd& B = B_;  // [Ct, Cr]
+  sid_.Ct.evaluate(qv, Ct_);
+  B.leftCols(3) = Ct_;
   Eigen::Matrix<double, 6, 6> A6 = Eigen::Matrix<double, 6, 6>::Zero();
   A6.topLeftCorner<3, 3>() = m * Matrix3d::Identity();
   A6.topRightCorner<3, 3>() = skew(mc).transpose();
@@ -137,13 +141,21 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   Eigen::Matrix<double, 6, 1> hr;
   hr.head<3>() = m * gK + applied.force;
   hr.tail<3>() = mc.cross(gK) + applied.torque;
-  VectorXd hq = -(stiffness_.times(qv) + damping_.times(qd) + sid_.ksigma.M0.col(0)) + applied.elastic;
-  hq += B.leftCols(3) * gK;  // Ct g: gravity on the modes
+  VectorXd& hq = hq_;
+  hq = applied.elastic - sid_.ksigma.M0.col(0);
+  stiffness_.subtract_product(qv, hq);
+  damping_.subtract_product(qd, hq);
+  hq.noalias() += B.leftCols(3) * gK;  // Ct g: gravity on the modes
   if (rotates_) {
-    B.rightCols(3) = sid_.Cr.order() ? sid_.Cr.at(qv) : sid_.Cr.M0;
-    A6.bottomRightCorner<3, 3>() = sid_.J.at(qv);
+    sid_.Cr.evaluate(qv, Cr_);
+    B.rightCols(3) = Cr_;
+    Matrix3d J;
+    sid_.J.evaluate(qv, J);
+    A6.bottomRightCorner<3, 3>() = J;
     const Matrix3d W = skew(w);
-    hr.head<3>() += -W * W * mc - 2 * W * (B.leftCols(3).transpose() * qd);
+    Vector3d Ct_qdot;
+    Ct_qdot.noalias() = Ct_.transpose() * qd;  // into a fixed vector: no temporary
+    hr.head<3>() += -W * W * mc - 2 * W * Ct_qdot;
     // Gr(q, qdot) = sum_k (Gr0_k + sum_j Gr1_kj q_j) qdot_k
     Matrix3d Gr = Matrix3d::Zero();
     for (Index kk = 0; kk < n; ++kk) {
@@ -151,12 +163,14 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
       for (std::size_t j = 0; j < sid_.Gr.M1.size(); ++j) block += sid_.Gr.M1[j].middleCols(3 * kk, 3) * qv(Index(j));
       Gr += block * qd(kk);
     }
-    hr.tail<3>() += -W * (A6.bottomRightCorner<3, 3>() * w) - Gr * w;
-    MatrixXd Ge = MatrixXd::Zero(n, 3);
-    for (Index j = 0; j < n; ++j) Ge += sid_.Ge.M0.middleCols(3 * j, 3) * qd(j);
+    hr.tail<3>() += -W * (J * w) - Gr * w;
+    Ge_.setZero();
+    for (Index j = 0; j < n; ++j) Ge_ += sid_.Ge.M0.middleCols(3 * j, 3) * qd(j);
     Eigen::Matrix<double, 6, 1> wq;
     wq << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
-    hq += -Ge * w - sid_.Oe.at(qv) * wq;
+    sid_.Oe.evaluate(qv, Oe_);
+    hq.noalias() -= Ge_ * w;
+    hq.noalias() -= Oe_ * wq;
   } else {
     B.rightCols(3).setZero();
     A6.bottomRightCorner<3, 3>() = sid_.J.M0;
@@ -167,25 +181,31 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   const auto Bd = B.topRows(nd);
   const auto hd = hq.head(nd);
   Eigen::Matrix<double, 6, 1> x = Eigen::Matrix<double, 6, 1>::Zero();
-  const Eigen::Matrix<double, 6, 6> S = A6 - Bd.transpose() * Bd;
-  const Eigen::Matrix<double, 6, 1> rhs = hr - Bd.transpose() * hd;
+  Eigen::Matrix<double, 6, 6> S = A6;
+  S.noalias() -= Bd.transpose() * Bd;
+  Eigen::Matrix<double, 6, 1> rhs = hr;
+  rhs.noalias() -= Bd.transpose() * hd;
   int free_dofs[6], nf = 0;
   for (int i = 0; i < 6; ++i)
     if (!locked_[std::size_t(i)]) free_dofs[nf++] = i;
   if (nf > 0) {
-    Eigen::MatrixXd Sf(nf, nf);
-    Eigen::VectorXd rf(nf);
+    using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;  // on the stack
+    using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+    Small Sf(nf, nf);
+    SmallVector rf(nf);
     for (int i = 0; i < nf; ++i) {
       rf(i) = rhs(free_dofs[i]);
       for (int j = 0; j < nf; ++j) Sf(i, j) = S(free_dofs[i], free_dofs[j]);
     }
-    const Eigen::VectorXd xf = Sf.ldlt().solve(rf);
+    const SmallVector xf = Eigen::LDLT<Small>(Sf).solve(rf);
     for (int i = 0; i < nf; ++i) x(free_dofs[i]) = xf(i);
   }
   Eigen::Map<Vector3d>(d + 7 + nd) = A * x.head<3>();  // v' = A a_K
   Eigen::Map<Vector3d>(d + 10 + nd) = x.tail<3>();
-  Eigen::Map<VectorXd>(d + 13 + nd, nd) = hd - Bd * x;
-  return qd.dot(damping_.times(qd));
+  Eigen::Map<VectorXd> qddot(d + 13 + nd, nd);
+  qddot = hd;
+  qddot.noalias() -= Bd * x;
+  return damping_.quadratic_form(qd);
 }
 
 double FloatingBody::kinetic_energy(const double* y) const {
@@ -205,7 +225,7 @@ double FloatingBody::kinetic_energy(const double* y) const {
 
 double FloatingBody::elastic_energy(const double* y) const {
   const VectorXd& qv = q(y);
-  return 0.5 * qv.dot(stiffness_.times(qv));
+  return 0.5 * stiffness_.quadratic_form(qv);
 }
 
 double FloatingBody::gravity_potential(const double* y, const Vector3d& gravity) const {
@@ -215,7 +235,7 @@ double FloatingBody::gravity_potential(const double* y, const Vector3d& gravity)
 
 Vector3d FloatingBody::point_velocity(const Vector3d& P, const Eigen::Ref<const MatrixXd>& Psi, const double* y) const {
   Vector3d u = Vector3d::Zero();
-  u.head(Psi.rows()) = Psi * qdot(y);
+  u.head(Psi.rows()).noalias() = Psi * qdot(y);
   return v(y) + orientation(y).toRotationMatrix() * (omega(y).cross(P) + u);
 }
 

@@ -23,15 +23,29 @@ struct GeneralizedForce {
   }
 };
 
-/// Ke or De: diagonal in the SID's normal form (then applied in O(nq)), dense otherwise.
+/// Ke or De: diagonal in the SID's normal form (then applied in O(nq); off-diagonal round-off
+/// below 1e-12 of the largest entry is dropped), dense otherwise.
 class ModalMatrix {
 public:
   explicit ModalMatrix(const Eigen::MatrixXd& M);
-  Eigen::VectorXd times(const Eigen::VectorXd& x) const { return dense_.size() ? Eigen::VectorXd(dense_ * x) : Eigen::VectorXd(diagonal_.cwiseProduct(x)); }
+  /// out -= M x (no allocation)
+  void subtract_product(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
+    if (dense_.size())
+      out.noalias() -= dense_ * x;
+    else
+      out -= diagonal_.cwiseProduct(x);
+  }
+  /// x^T M x
+  double quadratic_form(const Eigen::VectorXd& x) const {
+    if (!dense_.size()) return x.dot(diagonal_.cwiseProduct(x));
+    product_.noalias() = dense_ * x;
+    return x.dot(product_);
+  }
 
 private:
   Eigen::VectorXd diagonal_;
   Eigen::MatrixXd dense_;
+  mutable Eigen::VectorXd product_;  ///< dense M x, kept to avoid a temporary
 };
 
 class FloatingBody {
@@ -101,6 +115,9 @@ private:
   Eigen::Index n_dynamic_ = 0;
   Eigen::Index quasistatic_offset_ = 0;
   mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
+  // workspace of derivatives(): [Ct Cr], Ct(q), Cr(q), Ge(qdot), Oe(q), h_q
+  mutable Eigen::MatrixXd B_, Ct_, Cr_, Ge_, Oe_;
+  mutable Eigen::VectorXd hq_;
 };
 
 /// out += Psi^T F for shape rows Psi (dim x n, dim <= 3) and the first dim components of a

@@ -34,7 +34,7 @@ void MasterPatchTarget::update(const double* y) const {
   // the patch lies in the convex hull of its control net, hence in the net's bounding sphere
   const Eigen::MatrixXd& net = patch_.net();
   center_.setZero();
-  center_.head(dim_) = net.colwise().mean().transpose();
+  for (Eigen::Index i = 0; i < net.rows(); ++i) center_.head(dim_) += net.row(i).transpose() / double(net.rows());
   radius_ = 0;
   for (Eigen::Index i = 0; i < net.rows(); ++i) radius_ = std::max(radius_, (net.row(i).transpose() - center_.head(dim_)).norm());
 }

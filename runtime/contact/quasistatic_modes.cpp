@@ -59,9 +59,36 @@ void QuasistaticModes::residual(const double* y, Eigen::VectorXd& R) const {
   terms_.reset(size());
   penalty_energy_ = 0;
   for (const SurfaceContact* c : contacts_) penalty_energy_ += c->add_quasistatic_terms(y, terms_);
-  R = dense_stiffness_.size() ? Eigen::VectorXd(dense_stiffness_ * z_) : Eigen::VectorXd(stiffness_.cwiseProduct(z_));
+  if (dense_stiffness_.size())
+    R.noalias() = dense_stiffness_ * z_;
+  else
+    R = stiffness_.cwiseProduct(z_);
   R -= terms_.force;
 }
+
+namespace {
+/// Solves A x = b in place for the leading r x r block of A (overwritten by its LU factors,
+/// partial pivoting) and the first r entries of b (overwritten by x). Eigen's decompositions
+/// would allocate per call for a size that changes with the active set; this runs in the
+/// right-hand side, which must not.
+void solve_leading_block(Eigen::MatrixXd& A, Eigen::Index r, Eigen::VectorXd& b) {
+  for (Eigen::Index k = 0; k < r; ++k) {
+    Eigen::Index pivot = k;
+    A.col(k).segment(k, r - k).cwiseAbs().maxCoeff(&pivot);
+    pivot += k;
+    if (pivot != k) {
+      A.row(k).head(r).swap(A.row(pivot).head(r));
+      std::swap(b(k), b(pivot));
+    }
+    for (Eigen::Index i = k + 1; i < r; ++i) {
+      const double f = A(i, k) / A(k, k);
+      A.row(i).segment(k + 1, r - k - 1) -= f * A.row(k).segment(k + 1, r - k - 1);
+      b(i) -= f * b(k);
+    }
+  }
+  for (Eigen::Index k = r - 1; k >= 0; --k) b(k) = (b(k) - A.row(k).segment(k + 1, r - k - 1).dot(b.segment(k + 1, r - k - 1))) / A(k, k);
+}
+}  // namespace
 
 void QuasistaticModes::solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   const Eigen::Index r = terms_.rank;
@@ -70,13 +97,18 @@ void QuasistaticModes::solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd&
     x = (dense_stiffness_ + U * V.transpose()).partialPivLu().solve(b);
     return;
   }
-  // Woodbury: (K + U V^T)^-1 b = K^-1 b - K^-1 U (I + V^T K^-1 U)^-1 V^T K^-1 b
-  scaled_b_ = b.cwiseQuotient(stiffness_);
-  scaled_U_ = U.array().colwise() / stiffness_.array();
-  small_ = Eigen::MatrixXd::Identity(r, r);
-  small_.noalias() += V.transpose() * scaled_U_;
-  x = scaled_b_;
-  if (r > 0) x.noalias() -= scaled_U_ * small_.partialPivLu().solve(V.transpose() * scaled_b_);
+  // Woodbury: (K + U V^T)^-1 b = K^-1 b - K^-1 U (I + V^T K^-1 U)^-1 V^T K^-1 b, in buffers
+  // sized to the terms' capacity (no allocation once the largest active set has been seen)
+  const Eigen::Index capacity = terms_.U.cols();
+  if (scaled_U_.cols() != capacity) scaled_U_.resize(size(), capacity), small_.resize(capacity, capacity), coefficients_.resize(capacity);
+  x = b.cwiseQuotient(stiffness_);
+  if (r == 0) return;
+  scaled_U_.leftCols(r) = U.array().colwise() / stiffness_.array();
+  small_.topLeftCorner(r, r).setIdentity();
+  small_.topLeftCorner(r, r).noalias() += V.transpose() * scaled_U_.leftCols(r);
+  coefficients_.head(r).noalias() = V.transpose() * x;
+  solve_leading_block(small_, r, coefficients_);
+  x.noalias() -= scaled_U_.leftCols(r) * coefficients_.head(r);
 }
 
 double QuasistaticModes::merit(const Eigen::VectorXd& R) const {

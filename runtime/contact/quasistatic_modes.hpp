@@ -42,7 +42,7 @@ private:
   bool conservative_ = true;
   double floor_ = 0;                             ///< unresolvable displacement, modal units
   std::string names_;
-  mutable Eigen::VectorXd z_, R_, step_, z_old_, scaled_b_;
+  mutable Eigen::VectorXd z_, R_, step_, z_old_, coefficients_;
   mutable Eigen::MatrixXd scaled_U_, small_;
   mutable QuasistaticTerms terms_;
   mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual

@@ -20,6 +20,12 @@ struct Taylor {
     for (std::size_t k = 0; k < M1.size(); ++k) M += M1[k] * q(static_cast<Eigen::Index>(k));
     return M;
   }
+  /// Evaluates M(q) into `out` (fixed-size or already sized: no allocation).
+  template <class Out>
+  void evaluate(const Eigen::VectorXd& q, Out& out) const {
+    out = M0;
+    for (std::size_t k = 0; k < M1.size(); ++k) out += M1[k] * q(static_cast<Eigen::Index>(k));
+  }
   bool empty() const { return M0.size() == 0; }
 };
 
