@@ -2,7 +2,7 @@
 """Runtime speed against error: runs validation scenes with isosid-run and records wall time,
 steps, rejected steps, right-hand-side evaluations, Newton iterations and the error of every
 reference value. Writes the 'scenes' section of bench/RESULTS.md.
-Usage: bench/scenes.py [SCENE.toml ...] (default: the seed 000 sphere, REFERENCE.md A)"""
+Usage: bench/scenes.py [SCENE.toml ...] (default: every validation scene of models/)"""
 import os
 import sys
 import tempfile
@@ -13,17 +13,18 @@ RUN = os.path.join(BUILD, "runtime", "isosid-run")
 
 
 def main():
-    scenes = [a for a in sys.argv[1:] if not a.startswith("--")] or [os.path.join(ROOT, "models", "sphere_hertz.scene.toml")]
+    default = ["sphere_hertz", "sphere_hertz_full", "sphere_pair", "rod_impact", "cylinder_friction"]
+    scenes = [a for a in sys.argv[1:] if not a.startswith("--")] or [os.path.join(ROOT, "models", f"{n}.scene.toml") for n in default]
     info = machine()
     lines = ["## Runtime: scenes", f"{info['date']}, {info['machine']}, commit {info['commit']}; `bench/scenes.py`.", "",
-             "| scene | wall [s] | steps | rejected | RHS evaluations | Newton iterations | energy error | reference errors |",
-             "|---|---|---|---|---|---|---|---|"]
+             "| scene | CPU [s] | wall [s] | steps | rejected | RHS evaluations | Newton iterations | energy error | reference errors |",
+             "|---|---|---|---|---|---|---|---|---|"]
     with tempfile.TemporaryDirectory() as scratch:
         for scene in scenes:
             s = run_json([RUN, "-q", "--json", scene, "-o", scratch])
             errors = ", ".join(f"{k} {v['value']:.4g} ({100 * v['rel_error']:.2f} %)" for k, v in s["reference"].items()
                                if v.get("rel_error") is not None)
-            lines.append(f"| {os.path.basename(scene)} | {s['wall_time_s']:.2f} | {s['steps']} | {s['rejected_steps']} |"
+            lines.append(f"| {os.path.basename(scene)} | {s['cpu_time_s']:.2f} | {s['wall_time_s']:.2f} | {s['steps']} | {s['rejected_steps']} |"
                          f" {s['rhs_evaluations']} | {s['newton_iterations']} | {s['energy']['max_rel_error']:.2e} | {errors} |")
     update_section("scenes", "\n".join(lines))
     print("\n".join(lines))
