@@ -68,6 +68,7 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
     }
     monitor_bodies_.push_back(&b);
   }
+  for (const StressMonitorSpec& s : scene.stress_monitors) stress_monitors_.emplace_back(s, system.body(s.body), scene.file);
   monitor_values_.resize(scene.monitors.size());
   monitor_reversal_.assign(scene.monitors.size(), -1);
   monitor_arrival_.assign(scene.monitors.size(), -1);
@@ -92,6 +93,7 @@ void Recorder::sample(double t, const double* y) {
     for (int a = 0; a < 3; ++a) monitor_values_[m].push_back(value(a));
     if (time_.size() == 1) monitor_initial_[m] = monitor_last_[m] = value;
   }
+  for (StressMonitor& s : stress_monitors_) s.sample(y);
 }
 
 void Recorder::step(double t, const double* y) {
@@ -118,6 +120,7 @@ void Recorder::step(double t, const double* y) {
       monitor_reversal_[m] = last_step_t_ + dt * before / (before - now);
     monitor_last_[m] = v;
   }
+  for (StressMonitor& s : stress_monitors_) s.step(t, y);
   last_step_t_ = t;
 }
 
@@ -185,6 +188,10 @@ void Recorder::write_results(const std::string& path) const {
       w.matrix(g, Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(monitor_values_[m].data(), n, 3),
                scene_.monitors[m].quantity == "velocity" ? "m/s" : "m");
     }
+    for (const StressMonitor& s : stress_monitors_)
+      w.matrix("/monitors/" + s.name(),
+               Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(s.samples().data(), n, s.points()),
+               "Pa");
     w.close();
   }
   out.commit();
@@ -240,6 +247,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, double wall_time,
     mon["reversal_s"] = monitor_reversal_[m] >= 0 ? json(monitor_reversal_[m]) : json(nullptr);
     j["monitors"].push_back(mon);
   }
+  for (const StressMonitor& s : stress_monitors_) j["monitors"].push_back(s.summary());
   // comparison with [reference]
   json cmp = json::object();
   auto measured = [&](const std::string& key) -> std::optional<double> {
@@ -255,6 +263,9 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, double wall_time,
     if (key == "final_angular_velocity_rad_s") return b["final_angular_velocity"][2].get<double>();
     if (key == "wave_arrival_s" && !j["monitors"].empty() && !j["monitors"][0]["arrival_s"].is_null())
       return j["monitors"][0]["arrival_s"].get<double>();
+    if (key == "peak_von_mises_pa" && !stress_monitors_.empty()) return stress_monitors_[0].summary()["peak_von_mises_pa"].get<double>();
+    if (key == "peak_von_mises_depth_m" && !stress_monitors_.empty() && stress_monitors_[0].points())
+      return stress_monitors_[0].summary()["peak_depth_m"].get<double>();
     return std::nullopt;
   };
   for (const auto& [key, ref] : scene_.reference) {

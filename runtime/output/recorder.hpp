@@ -4,6 +4,7 @@
 #pragma once
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
+#include "output/stress_monitor.hpp"
 #include "solve/time_integrator.hpp"
 
 #include <array>
@@ -54,6 +55,7 @@ private:
   std::vector<Eigen::Vector3d> monitor_initial_, monitor_last_;
   std::vector<format::Node> monitor_nodes_;         ///< SID nodes, or master-patch points as nodes
   std::vector<const FloatingBody*> monitor_bodies_;
+  std::vector<StressMonitor> stress_monitors_;
 };
 
 }  // namespace isosid::run

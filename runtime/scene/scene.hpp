@@ -78,13 +78,20 @@ struct MonitorSpec {
   std::string quantity = "velocity";  ///< position | velocity
 };
 
+/// The von Mises stress along one of a body's SID stress lines, tracked over the run.
+struct StressMonitorSpec {
+  std::string name;
+  std::string body, line;  ///< a flexible body and a stress recovery line of its SID
+};
+
 struct Scene {
   std::string file;
   SimulationSettings simulation;
   std::vector<BodySpec> bodies;        ///< flexible bodies first, then rigid ones
   std::vector<ShapeSpec> fixed_surfaces;
   std::vector<ContactSpec> contacts;
-  std::vector<MonitorSpec> monitors;
+  std::vector<MonitorSpec> monitors;               ///< points
+  std::vector<StressMonitorSpec> stress_monitors;  ///< [[monitor]] tables with `stress`
   const BodySpec* body(const std::string& name) const;
   const ShapeSpec* fixed_surface(const std::string& name) const;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();

@@ -249,10 +249,19 @@ Scene read_scene_file(const std::string& path) {
     scene.contacts.push_back(s);
   }
   for (const TomlView& m : top.tables("monitor")) {
-    m.allow_only({"name", "body", "node", "surface", "parameter", "quantity"});
+    m.allow_only({"name", "body", "node", "surface", "parameter", "quantity", "stress"});
+    const std::string name = unique(m);
+    const BodySpec* body = scene.body(m.string("body"));
+    if (!body || body->rigid) m.fail("body", "no flexible_body named '" + m.string("body") + "'");
+    if (m.has("stress")) {
+      for (const char* other : {"node", "surface", "parameter", "quantity"})
+        if (m.has(other)) m.fail(other, "a stress monitor takes only name, body and stress");
+      scene.stress_monitors.push_back({name, body->name, m.string("stress")});
+      continue;
+    }
     MonitorSpec s;
-    s.name = unique(m);
-    s.body = m.string("body");
+    s.name = name;
+    s.body = body->name;
     if (m.has("node") == m.has("surface")) m.fail("node", "give either a node or a surface and a parameter");
     s.node = m.string("node", "");
     s.surface = m.string("surface", "");
@@ -264,16 +273,14 @@ Scene read_scene_file(const std::string& path) {
     }
     s.quantity = m.string("quantity", s.quantity);
     if (s.quantity != "velocity" && s.quantity != "position") m.fail("quantity", "must be velocity or position");
-    const BodySpec* body = scene.body(s.body);
-    if (!body || body->rigid) m.fail("body", "no flexible_body named '" + s.body + "'");
     scene.monitors.push_back(s);
   }
   scene.gravity = vec3(top.table("simulation"), "gravity", scene.gravity);
   if (auto r = top.optional_table("reference")) {
     r->allow_only({"peak_force_n", "contact_time_s", "rebound_velocity_m_s", "final_velocity_m_s", "final_angular_velocity_rad_s",
-                   "wave_arrival_s", "contact_end_s"});
+                   "wave_arrival_s", "contact_end_s", "peak_von_mises_pa", "peak_von_mises_depth_m"});
     for (const char* key : {"peak_force_n", "contact_time_s", "rebound_velocity_m_s", "final_angular_velocity_rad_s",
-                            "wave_arrival_s", "contact_end_s"})
+                            "wave_arrival_s", "contact_end_s", "peak_von_mises_pa", "peak_von_mises_depth_m"})
       if (r->has(key)) scene.reference[key] = r->number(key);
     if (r->has("final_velocity_m_s")) {
       const Eigen::Vector3d v = vec3(*r, "final_velocity_m_s", Eigen::Vector3d::Zero());
