@@ -19,7 +19,7 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   }
   size_ += 1;  // dissipated energy
   contacts_.reserve(scene.contacts.size());
-  for (const ContactSpec& c : scene.contacts) {
+  for (const ContactSpec& c : scene.contacts) try {
     if (const ShapeSpec* fixed = scene.fixed_surface(c.target)) {
       targets_.push_back(std::make_unique<ShapeTarget>(*fixed));
       target_body_.push_back(-1);
@@ -34,6 +34,8 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
     }
     slave_body_.push_back(body_index(c.body));
     contacts_.emplace_back(c, *bodies_[slave_body_.back()], *targets_.back());
+  } catch (const format::InputError& e) {  // a surface the SID does not have: name the scene file
+    throw format::InputError(scene.file, "contact " + c.name + "." + e.field(), e.problem());
   }
   quasistatic_ = std::make_unique<QuasistaticModes>(bodies_, contacts_);
   forces_.resize(bodies_.size());
