@@ -46,13 +46,14 @@ def simulate(dt=2e-9):
         if t > T and d_new <= 0:  # released: interpolate the zero crossing
             end = t + dt * d / (d - d_new)
             return {"contact_end_s": end, "two_l_over_c_s": T, "plateau_force_n": peak, "flat_end_force_n": Z * V0,
-                    "wave_arrival_s": L / c}
+                    "wave_arrival_s": L / c, "force_history": (dt, history)}
         t, d = t + dt, d_new
 
 
 def main():
     result = simulate()
     coarse = simulate(4e-9)
+    del result["force_history"]
     result["discretization_error_s"] = abs(result["contact_end_s"] - coarse["contact_end_s"])
     print(json.dumps(result, indent=2))
     if len(sys.argv) == 3 and sys.argv[1] == "--check":
