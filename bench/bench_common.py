@@ -8,7 +8,7 @@ import re
 import subprocess
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BUILD = os.path.join(ROOT, "build")
+BUILD = os.environ.get("ISOSID_BUILD", os.path.join(ROOT, "build"))  # ctest points this at its build
 RESULTS = os.path.join(ROOT, "bench", "RESULTS.md")
 
 

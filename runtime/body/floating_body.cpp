@@ -78,6 +78,13 @@ void FloatingBody::initial_state(double* y) const {
   s[3] = p.w(), s[4] = p.x(), s[5] = p.y(), s[6] = p.z();
   const Index nd = n_dynamic_;
   Eigen::Map<VectorXd>(s + 7, nd) = spec_.q0.size() ? spec_.q0 : VectorXd::Zero(nd);
+  if (spec_.elastic_start == "steady" && nd > 0) {
+    // in equilibrium with the initial spin: Ke q = -Oe(0) w^2 (first order in q), so a
+    // spinning body does not start ringing
+    VectorXd load = VectorXd::Zero(nq());
+    add_rotation_loads(VectorXd::Zero(nq()), VectorXd::Zero(nq()), spec_.angular_velocity, load);
+    Eigen::Map<VectorXd>(s + 7, nd) = sid_.Ke.M0.topLeftCorner(nd, nd).ldlt().solve(load.head(nd));
+  }
   Vector3d v = spec_.velocity, w = spec_.angular_velocity;
   for (int a = 0; a < 3; ++a) {
     if (locked_[std::size_t(a)]) v(a) = 0;
@@ -164,13 +171,7 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
       Gr += block * qd(kk);
     }
     hr.tail<3>() += -W * (J * w) - Gr * w;
-    Ge_.setZero();
-    for (Index j = 0; j < n; ++j) Ge_ += sid_.Ge.M0.middleCols(3 * j, 3) * qd(j);
-    Eigen::Matrix<double, 6, 1> wq;
-    wq << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
-    sid_.Oe.evaluate(qv, Oe_);
-    hq.noalias() -= Ge_ * w;
-    hq.noalias() -= Oe_ * wq;
+    add_rotation_loads(qv, qd, w, hq);
   } else {
     B.rightCols(3).setZero();
     A6.bottomRightCorner<3, 3>() = sid_.J.M0;
@@ -206,6 +207,24 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   qddot = hd;
   qddot.noalias() -= Bd * x;
   return damping_.quadratic_form(qd);
+}
+
+void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, const Vector3d& w, Eigen::Ref<VectorXd> out) const {
+  if (!rotates_) return;
+  Ge_.setZero();
+  for (Index j = 0; j < nq(); ++j) Ge_ += sid_.Ge.M0.middleCols(3 * j, 3) * qd(j);
+  Eigen::Matrix<double, 6, 1> wq;
+  wq << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
+  sid_.Oe.evaluate(qv, Oe_);
+  out.noalias() -= Ge_ * w;
+  out.noalias() -= Oe_ * wq;
+}
+
+void FloatingBody::add_quasistatic_rotation_loads(const double* y, Eigen::Ref<VectorXd> out) const {
+  const VectorXd& qv = q(y);
+  hq_.setZero();
+  add_rotation_loads(qv, qdot(y), omega(y), hq_);
+  out += hq_.tail(n_quasistatic());
 }
 
 double FloatingBody::kinetic_energy(const double* y) const {

@@ -85,6 +85,12 @@ public:
   /// dissipated power of the modal damping.
   double derivatives(const double* y, const GeneralizedForce& applied, const Eigen::Vector3d& gravity, double* ydot) const;
 
+  /// Adds the quasistatic modes' share of the rotation loads (-Ge(qdot) w - Oe(q) w^2) at y to
+  /// out (n_quasistatic entries): a spinning body's centrifugal deformation. Gravity and the
+  /// frame's acceleration are left out: on a free body they cancel (inertia relief is not
+  /// modelled for quasistatic modes).
+  void add_quasistatic_rotation_loads(const double* y, Eigen::Ref<Eigen::VectorXd> out) const;
+
   // --- energies ---
   double kinetic_energy(const double* y) const;
   double elastic_energy(const double* y) const;
@@ -105,6 +111,10 @@ public:
   const std::array<bool, 6>& locked() const { return locked_; }
 
 private:
+  /// out -= Ge(qdot) w + Oe(q) w^2 (no-op for bodies that cannot rotate)
+  void add_rotation_loads(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, const Eigen::Vector3d& w,
+                          Eigen::Ref<Eigen::VectorXd> out) const;
+
   std::string name_;
   format::Sid sid_;
   BodySpec spec_;

@@ -64,6 +64,7 @@ void QuasistaticModes::residual(const double* y, Eigen::VectorXd& R) const {
   else
     R = stiffness_.cwiseProduct(z_);
   R -= terms_.force;
+  R -= rotation_loads_;
 }
 
 namespace {
@@ -113,12 +114,19 @@ void QuasistaticModes::solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd&
 
 double QuasistaticModes::merit(const Eigen::VectorXd& R) const {
   if (!conservative_) return R.norm();
-  return 0.5 * (dense_stiffness_.size() ? z_.dot(dense_stiffness_ * z_) : z_.dot(stiffness_.cwiseProduct(z_))) + penalty_energy_;
+  // the potential of the (held) rotation loads is -z . loads
+  return 0.5 * (dense_stiffness_.size() ? z_.dot(dense_stiffness_ * z_) : z_.dot(stiffness_.cwiseProduct(z_))) + penalty_energy_ -
+         z_.dot(rotation_loads_);
 }
 
 int QuasistaticModes::solve(const double* y) const {
   if (size() == 0) return 0;
-  for (FloatingBody* b : bodies_) z_.segment(b->quasistatic_offset(), b->n_quasistatic()) = b->quasistatic_modes();
+  rotation_loads_.setZero(size());
+  for (FloatingBody* b : bodies_) {
+    z_.segment(b->quasistatic_offset(), b->n_quasistatic()) = b->quasistatic_modes();
+    // held during the Newton iterations: they depend on q only through the small Oe1 terms
+    b->add_quasistatic_rotation_loads(y, rotation_loads_.segment(b->quasistatic_offset(), b->n_quasistatic()));
+  }
   // Without friction the equilibrium minimizes the convex energy
   // Pi(z) = 1/2 z^T K z + sum 1/2 c_p g^2 w, whose gradient is the residual R: Newton steps
   // with an Armijo line search on Pi converge across active-set changes, where a line search

@@ -1,5 +1,6 @@
 // Quasistatic high-frequency modes (seed 001): instead of integrating the stiff high modes,
-// solve their static equilibrium K_h z = f(z) under the contact forces at every evaluation,
+// solve their static equilibrium K_h z = f(z) under the contact forces (and the rotation
+// loads of spinning bodies) at every evaluation,
 // by Newton's method with the exact contact Jacobian. All bodies are solved together, so a
 // contact between two flexible bodies couples their modes. The Jacobian K_h + U V^T (modal
 // stiffness plus one rank-one term per active point) is inverted with the Woodbury identity:
@@ -46,6 +47,7 @@ private:
   mutable Eigen::MatrixXd scaled_U_, small_;
   mutable QuasistaticTerms terms_;
   mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual
+  mutable Eigen::VectorXd rotation_loads_;       ///< centrifugal and Coriolis loads on z
 };
 
 }  // namespace isosid::run

@@ -47,6 +47,9 @@ struct BodySpec {
   /// "quasistatic" (solved from the static sub-problem each evaluation; seed 001).
   std::string high_modes = "dynamic";
   double quasistatic_above_hz = -1;  ///< > 0: modes above this frequency are the high ones
+  /// "rest": q0 (or zero); "steady": the integrated modes start in equilibrium with the
+  /// initial spin (centrifugal deformation), so a spinning body does not start ringing
+  std::string elastic_start = "rest";
 };
 
 /// An analytic surface: fixed in the world, or the surface of a rigid body (in its frame).

@@ -171,7 +171,7 @@ Scene read_scene_file(const std::string& path) {
   };
   for (const TomlView& b : top.tables("flexible_body")) {
     b.allow_only({"name", "sid", "model", "position", "orientation", "velocity", "angular_velocity", "q0", "qdot0", "locked",
-                  "high_modes", "quasistatic_above_hz"});
+                  "high_modes", "quasistatic_above_hz", "elastic_start"});
     BodySpec f = read_motion(b, unique(b));
     f.sid_file = resolve(path, b.string("sid"));
     f.model_file = resolve(path, b.string("model", ""));
@@ -185,6 +185,9 @@ Scene read_scene_file(const std::string& path) {
       const auto v = b.numbers("qdot0");
       f.qdot0 = Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(v.size()));
     }
+    f.elastic_start = b.string("elastic_start", f.elastic_start);
+    if (f.elastic_start != "rest" && f.elastic_start != "steady") b.fail("elastic_start", "must be rest or steady");
+    if (f.elastic_start == "steady" && (b.has("q0") || b.has("qdot0"))) b.fail("elastic_start", "steady replaces q0 and qdot0");
     f.high_modes = b.string("high_modes", f.high_modes);
     if (f.high_modes != "dynamic" && f.high_modes != "quasistatic") b.fail("high_modes", "must be dynamic or quasistatic");
     f.quasistatic_above_hz = b.positive("quasistatic_above_hz", -1);
