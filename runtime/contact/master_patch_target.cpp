@@ -21,7 +21,8 @@ MasterPatchTarget::MasterPatchTarget(const FloatingBody& body, const std::string
     : body_(body), name_(body.name() + "." + surface), dim_(body.sid().dim()), patch_(find_master_patch(body, surface, contact_name), dim_) {
   // orient the normal by the reference geometry: at the middle of the patch it must point
   // away from the centre of mass (true for the convex contact regions this is used on)
-  Eigen::Vector2d mid(0.5 * (patch_.lower(0) + patch_.upper(0)), 0.5 * (patch_.lower(1 % patch_.parameter_dim()) + patch_.upper(1 % patch_.parameter_dim())));
+  Eigen::Vector2d mid = Eigen::Vector2d::Zero();
+  for (int d = 0; d < patch_.parameter_dim(); ++d) mid(d) = 0.5 * (patch_.lower(d) + patch_.upper(d));
   patch_.evaluate(mid, point_);
   const Eigen::Vector3d centroid = body.sid().mdCM.M0.col(0) / body.sid().refmod.mass;
   if (normal(point_, mid).dot(point_.C - centroid) < 0) orientation_ = -1;
