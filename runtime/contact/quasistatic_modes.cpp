@@ -112,11 +112,16 @@ void QuasistaticModes::solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd&
   x.noalias() -= scaled_U_.leftCols(r) * coefficients_.head(r);
 }
 
-double QuasistaticModes::merit(const Eigen::VectorXd& R) const {
-  if (!conservative_) return R.norm();
-  // the potential of the (held) rotation loads is -z . loads
-  return 0.5 * (dense_stiffness_.size() ? z_.dot(dense_stiffness_ * z_) : z_.dot(stiffness_.cwiseProduct(z_))) + penalty_energy_ -
-         z_.dot(rotation_loads_);
+double QuasistaticModes::potential_change(double penalty_before) const {
+  // Pi(z) - Pi(z_old) with Pi = 1/2 z^T K z - z . loads + penalty energy, formed from the
+  // difference d = z - z_old: Pi itself can be 1e6 times larger than its change (the
+  // centrifugal deformation of a spinning body), and subtracting two values of it would
+  // leave round-off where the line search needs the change
+  double change = penalty_energy_ - penalty_before;
+  if (dense_stiffness_.size()) return change + (z_ - z_old_).dot(0.5 * dense_stiffness_ * (z_ + z_old_) - rotation_loads_);
+  for (Eigen::Index i = 0; i < z_.size(); ++i)
+    change += (z_(i) - z_old_(i)) * (0.5 * stiffness_(i) * (z_(i) + z_old_(i)) - rotation_loads_(i));
+  return change;
 }
 
 int QuasistaticModes::solve(const double* y) const {
@@ -128,20 +133,20 @@ int QuasistaticModes::solve(const double* y) const {
     b->add_quasistatic_rotation_loads(y, rotation_loads_.segment(b->quasistatic_offset(), b->n_quasistatic()));
   }
   // Without friction the equilibrium minimizes the convex energy
-  // Pi(z) = 1/2 z^T K z + sum 1/2 c_p g^2 w, whose gradient is the residual R: Newton steps
+  // Pi(z) = 1/2 z^T K z - z . loads + sum 1/2 c_p g^2 w, whose gradient is the residual R: Newton steps
   // with an Armijo line search on Pi converge across active-set changes, where a line search
   // on |R| stalls. With friction (not a potential) the search falls back to |R|.
   residual(y, R_);
   for (int iteration = 1; iteration <= 60; ++iteration) {
     solve_jacobian(R_, step_);
     z_old_ = z_;
-    const double m_old = merit(R_), slope = -R_.dot(step_);
+    const double penalty_before = penalty_energy_, residual_before = R_.norm(), slope = -R_.dot(step_);
     double alpha = 1.0;
     for (int halving = 0; halving < 30; ++halving) {
       z_ = z_old_ - alpha * step_;
       residual(y, R_);
-      const double m_new = merit(R_);
-      if ((conservative_ ? m_new <= m_old + 1e-4 * alpha * slope : m_new <= m_old) || halving == 29) break;
+      const bool accept = conservative_ ? potential_change(penalty_before) <= 1e-4 * alpha * slope : R_.norm() <= residual_before;
+      if (accept || halving == 29) break;
       alpha *= 0.5;
     }
     // R_ and the Jacobian terms are those of the accepted z_ (the last trial)

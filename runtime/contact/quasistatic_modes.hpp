@@ -32,9 +32,9 @@ private:
   void residual(const double* y, Eigen::VectorXd& R) const;
   /// Solves (K + U V^T) x = b.
   void solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
-  /// Newton's merit at the last residual: the total potential energy when frictionless (its
-  /// gradient is R), else |R|.
-  double merit(const Eigen::VectorXd& R) const;
+  /// Change of the potential energy from z_old_ to z_ (frictionless contact: its gradient is
+  /// the residual, so it is Newton's merit); penalty_before: the contacts' energy at z_old_.
+  double potential_change(double penalty_before) const;
 
   std::vector<FloatingBody*> bodies_;            ///< bodies with quasistatic modes
   std::vector<const SurfaceContact*> contacts_;  ///< contacts touching one of them
