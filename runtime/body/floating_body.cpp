@@ -36,7 +36,7 @@ Vector3d tait_bryan_angles(const Matrix3d& A) {
 
 FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dimension)
     : name_(spec.name), sid_(std::move(sid)), spec_(spec), stiffness_(sid_.Ke.M0), damping_(sid_.De.M0),
-      B_(sid_.nq(), 6), Ct_(sid_.nq(), 3), Cr_(sid_.nq(), 3), Ge_(sid_.nq(), 3), Oe_(sid_.nq(), 6), hq_(sid_.nq()) {
+      B_(sid_.nq(), 6), Ge_(sid_.nq(), 3), Oe_(sid_.nq(), 6), hq_(sid_.nq()) {
   const Index n = nq();
   // the Schur-complement solve below relies on the SID's normal form Me = I
   if (n > 0 && (sid_.Me.M0 - MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff() > 1e-8)
@@ -135,9 +135,9 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   const double m = sid_.refmod.mass;
   Vector3d mc;
   sid_.mdCM.evaluate(qv, mc);
-  MatrixXd& B = B_;  // [Ct, Cr]
-  sid_.Ct.evaluate(qv, Ct_);
-  B.leftCols(3) = Ct_;
+  MatrixXd& B = B_;  // [Ct, Cr], each evaluated in place
+  auto Ct = B.leftCols(3), Cr = B.rightCols(3);
+  sid_.Ct.evaluate(qv, Ct);
   Eigen::Matrix<double, 6, 6> A6 = Eigen::Matrix<double, 6, 6>::Zero();
   A6.topLeftCorner<3, 3>() = m * Matrix3d::Identity();
   A6.topRightCorner<3, 3>() = skew(mc).transpose();
@@ -154,14 +154,13 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   damping_.subtract_product(qd, hq);
   hq.noalias() += B.leftCols(3) * gK;  // Ct g: gravity on the modes
   if (rotates_) {
-    sid_.Cr.evaluate(qv, Cr_);
-    B.rightCols(3) = Cr_;
+    sid_.Cr.evaluate(qv, Cr);
     Matrix3d J;
     sid_.J.evaluate(qv, J);
     A6.bottomRightCorner<3, 3>() = J;
     const Matrix3d W = skew(w);
     Vector3d Ct_qdot;
-    Ct_qdot.noalias() = Ct_.transpose() * qd;  // into a fixed vector: no temporary
+    Ct_qdot.noalias() = Ct.transpose() * qd;  // into a fixed vector: no temporary
     hr.head<3>() += -W * W * mc - 2 * W * Ct_qdot;
     // Gr(q, qdot) = sum_k (Gr0_k + sum_j Gr1_kj q_j) qdot_k
     Matrix3d Gr = Matrix3d::Zero();
@@ -173,7 +172,7 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
     hr.tail<3>() += -W * (J * w) - Gr * w;
     add_rotation_loads(qv, qd, w, hq);
   } else {
-    B.rightCols(3).setZero();
+    Cr.setZero();
     A6.bottomRightCorner<3, 3>() = sid_.J.M0;
   }
 

@@ -125,8 +125,8 @@ private:
   Eigen::Index n_dynamic_ = 0;
   Eigen::Index quasistatic_offset_ = 0;
   mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
-  // workspace of derivatives(): [Ct Cr], Ct(q), Cr(q), Ge(qdot), Oe(q), h_q
-  mutable Eigen::MatrixXd B_, Ct_, Cr_, Ge_, Oe_;
+  // workspace of derivatives(): [Ct(q) Cr(q)], Ge(qdot), Oe(q), h_q
+  mutable Eigen::MatrixXd B_, Ge_, Oe_;
   mutable Eigen::VectorXd hq_;
 };
 

@@ -45,18 +45,18 @@ double MasterPatchTarget::clearance(const Eigen::Vector3d& center, double radius
 }
 
 Eigen::Vector3d MasterPatchTarget::normal(const DeformedPatch::Point& point, const Eigen::Vector2d& u) const {
-  Eigen::Vector3d n;
-  if (patch_.parameter_dim() == 1)
-    n = Eigen::Vector3d(point.dC[0].y(), -point.dC[0].x(), 0);
-  else
-    n = point.dC[0].cross(point.dC[1]);
+  // unnormalized: the tangent turned by -90 degrees (curve) or C_u x C_v (surface)
+  auto parametric_normal = [&](const DeformedPatch::Point& p) {
+    return patch_.parameter_dim() == 1 ? Eigen::Vector3d(p.dC[0].y(), -p.dC[0].x(), 0) : Eigen::Vector3d(p.dC[0].cross(p.dC[1]));
+  };
+  Eigen::Vector3d n = parametric_normal(point);
   if (n.norm() <= 1e-12 * (point.dC[0].norm() + point.dC[1].norm()) || n.norm() == 0) {
     // a collapsed edge (the pole of a revolved patch): the normal of a point just inside
     DeformedPatch::Point inner;
     Eigen::Vector2d v = u;
     for (int d = 0; d < patch_.parameter_dim(); ++d) v(d) += 1e-7 * (0.5 * (patch_.lower(d) + patch_.upper(d)) - u(d));
     patch_.evaluate(v, inner);
-    n = patch_.parameter_dim() == 1 ? Eigen::Vector3d(inner.dC[0].y(), -inner.dC[0].x(), 0) : inner.dC[0].cross(inner.dC[1]);
+    n = parametric_normal(inner);
   }
   return orientation_ * n.normalized();
 }
