@@ -35,6 +35,8 @@ public:
     else
       out -= diagonal_.cwiseProduct(x);
   }
+  /// true in the SID's normal form: M is applied as its diagonal
+  bool is_diagonal() const { return dense_.size() == 0; }
   /// x^T M x
   double quadratic_form(const Eigen::VectorXd& x) const {
     if (!dense_.size()) return x.dot(diagonal_.cwiseProduct(x));
@@ -109,6 +111,8 @@ public:
   const format::Node* node(const std::string& name) const;
   const format::ContactSurface* contact_surface(const std::string& name) const;
   const std::array<bool, 6>& locked() const { return locked_; }
+  /// Ke as applied (diagonal or dense).
+  const ModalMatrix& stiffness() const { return stiffness_; }
 
 private:
   /// out -= Ge(qdot) w + Oe(q) w^2 (no-op for bodies that cannot rotate)

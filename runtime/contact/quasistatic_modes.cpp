@@ -10,8 +10,8 @@ namespace isosid::run {
 QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBody>>& bodies,
                                    const std::vector<SurfaceContact>& contacts) {
   Eigen::Index n = 0;
-  std::vector<Eigen::VectorXd> diagonals;
   std::vector<Eigen::MatrixXd> blocks;
+  bool diagonal = true;
   for (const auto& b : bodies) {
     if (b->n_quasistatic() == 0) continue;
     b->set_quasistatic_offset(n);
@@ -19,6 +19,7 @@ QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBod
     bodies_.push_back(b.get());
     names_ += (names_.empty() ? "'" : ", '") + b->name() + "'";
     blocks.push_back(b->sid().Ke.M0.bottomRightCorner(b->n_quasistatic(), b->n_quasistatic()));
+    diagonal = diagonal && b->stiffness().is_diagonal();
     // Displacements below eps x the body's size are not resolved by the geometry: in modal
     // units (sqrt(kg) m for mass-normalized modes) that is about 1e-16 sqrt(m) L. Without this
     // floor Newton stalls at a kink of the penalty law when the solution is zero to round-off.
@@ -26,14 +27,8 @@ QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBod
     floor_ = std::max(floor_, 1e-16 * std::sqrt(m) * std::sqrt(b->sid().J.M0.trace() / m));
   }
   stiffness_.resize(n);
-  bool diagonal = true;
   Eigen::Index at = 0;
-  for (const Eigen::MatrixXd& K : blocks) {
-    stiffness_.segment(at, K.rows()) = K.diagonal();
-    const Eigen::MatrixXd off = K - Eigen::MatrixXd(K.diagonal().asDiagonal());
-    diagonal = diagonal && off.cwiseAbs().maxCoeff() <= 1e-12 * K.diagonal().cwiseAbs().maxCoeff();
-    at += K.rows();
-  }
+  for (const Eigen::MatrixXd& K : blocks) stiffness_.segment(at, K.rows()) = K.diagonal(), at += K.rows();
   if (!diagonal) {
     dense_stiffness_ = Eigen::MatrixXd::Zero(n, n);
     at = 0;
