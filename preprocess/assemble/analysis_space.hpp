@@ -22,6 +22,7 @@ struct AnalysisSpace {
   std::vector<Element> elements;
   Eigen::MatrixXd control_points;  ///< n_functions x phys_dim: the exact geometry x = sum R_i P_i
   Eigen::VectorXd weights;         ///< n_functions: W = sum w_i N_i
+  std::vector<int> function_level; ///< n_functions: hierarchical level of each function (0 for tensor spaces)
   Eigen::Vector3d param_lo = Eigen::Vector3d::Zero(), param_hi = Eigen::Vector3d::Zero();
 
   int param_dim() const { return int(degrees.size()); }
@@ -32,8 +33,8 @@ struct AnalysisSpace {
   bool on_side(const Element& e, PatchSide side) const;
 };
 
-/// Tensor-product space of a NURBS patch: one element per non-empty knot span box, with
-/// extraction operators from collocation at p+1 points per direction.
+/// Tensor-product space of a NURBS patch: one element per non-empty knot span box (first
+/// direction fastest), functions numbered as the patch's control points.
 AnalysisSpace tensor_space(const NurbsPatch& patch);
 
 }  // namespace isosid::prep

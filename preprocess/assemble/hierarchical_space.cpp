@@ -1,0 +1,320 @@
+// THB space construction; see hierarchical_space.hpp.
+#include "assemble/hierarchical_space.hpp"
+
+#include "assemble/span_extraction.hpp"
+#include "refine/knot_insertion.hpp"
+
+#include <algorithm>
+#include <map>
+#include <unordered_map>
+
+namespace isosid::prep {
+namespace {
+
+using SparseRow = std::vector<std::pair<int, double>>;  ///< (column, value), sorted by column
+
+void add_scaled(SparseRow& into, const SparseRow& row, double scale) {
+  SparseRow out;
+  out.reserve(into.size() + row.size());
+  auto a = into.cbegin();
+  auto b = row.cbegin();
+  while (a != into.cend() || b != row.cend()) {
+    if (b == row.cend() || (a != into.cend() && a->first < b->first)) out.push_back(*a++);
+    else if (a == into.cend() || b->first < a->first) out.emplace_back(b->first, scale * (b++)->second);
+    else out.emplace_back(a->first, a->second + scale * b->second), ++a, ++b;
+  }
+  into.swap(out);
+}
+
+/// One level of the hierarchy: its tensor basis, its two-scale relation to the parent level
+/// and memoized representations of its functions.
+struct Level {
+  std::vector<KnotVector> U;
+  std::vector<int> n;                               ///< functions per direction
+  std::vector<std::vector<SpanExtraction>> spans;   ///< per direction
+  std::vector<std::vector<SparseRow>> two_scale;    ///< [dir][function] -> parent functions and coefficients
+  ParameterBox domain;
+  std::unordered_map<long long, int> active;        ///< flat index -> THB function
+  std::unordered_map<long long, SparseRow> truncated, on_patch;
+
+  long long flat(const std::vector<int>& ijk) const {
+    long long f = 0, stride = 1;
+    for (std::size_t d = 0; d < n.size(); ++d) {
+      f += ijk[d] * stride;
+      stride *= n[d];
+    }
+    return f;
+  }
+  std::vector<int> multi(long long f) const {
+    std::vector<int> ijk(n.size());
+    for (std::size_t d = 0; d < n.size(); ++d) {
+      ijk[d] = int(f % n[d]);
+      f /= n[d];
+    }
+    return ijk;
+  }
+  /// Support box of a tensor function.
+  void support(const std::vector<int>& ijk, int dims, const std::vector<int>& p, std::vector<double>& lo, std::vector<double>& hi) const {
+    lo.resize(std::size_t(dims));
+    hi.resize(std::size_t(dims));
+    for (int d = 0; d < dims; ++d) {
+      lo[std::size_t(d)] = U[std::size_t(d)](ijk[std::size_t(d)]);
+      hi[std::size_t(d)] = U[std::size_t(d)](ijk[std::size_t(d)] + p[std::size_t(d)] + 1);
+    }
+  }
+};
+
+class Builder {
+public:
+  Builder(const NurbsPatch& patch, const HierarchicalMesh& mesh) : patch_(patch), mesh_(mesh), pd_(patch.param_dim()) {
+    for (int l = 0; l < mesh.levels(); ++l) {
+      Level lv;
+      lv.U = mesh.knots[std::size_t(l)];
+      lv.domain = mesh.domains[std::size_t(l)];
+      for (int d = 0; d < pd_; ++d) {
+        const int p = mesh.degrees[std::size_t(d)];
+        lv.n.push_back(basis_count(lv.U[std::size_t(d)], p));
+        lv.spans.push_back(span_extractions(lv.U[std::size_t(d)], p));
+        if (l > 0) lv.two_scale.push_back(two_scale(levels_.back().U[std::size_t(d)], lv.U[std::size_t(d)], p));
+      }
+      levels_.push_back(std::move(lv));
+    }
+  }
+
+  HierarchicalSpace build() {
+    HierarchicalSpace out;
+    AnalysisSpace& s = out.space;
+    s.degrees = mesh_.degrees;
+    for (int d = 0; d < pd_; ++d) {
+      s.param_lo(d) = patch_.lower(d);
+      s.param_hi(d) = patch_.upper(d);
+    }
+    number_active_functions(s, out.functions_per_level);
+    for (int l = 0; l < int(levels_.size()); ++l) out.elements_per_level.push_back(add_active_elements(l, s));
+    rational_coefficients(s, out.prolongation);
+    return out;
+  }
+
+private:
+  static std::vector<SparseRow> two_scale(const KnotVector& coarse, const KnotVector& fine, int p) {
+    std::vector<double> X;
+    Eigen::Index c = 0;
+    for (Eigen::Index i = 0; i < fine.size(); ++i) {  // fine minus coarse, as a multiset
+      if (c < coarse.size() && std::abs(coarse(c) - fine(i)) <= 1e-14 * (1 + std::abs(fine(i)))) ++c;
+      else X.push_back(fine(i));
+    }
+    const Eigen::MatrixXd T = knot_insertion_matrix(coarse, p, X);
+    std::vector<SparseRow> rows(std::size_t(T.rows()));
+    for (Eigen::Index j = 0; j < T.rows(); ++j)
+      for (Eigen::Index k = 0; k < T.cols(); ++k)
+        if (T(j, k) != 0.0) rows[std::size_t(j)].emplace_back(int(k), T(j, k));
+    return rows;
+  }
+
+  /// Level-l functions whose support overlaps Omega^l, in flat-index order.
+  std::vector<long long> overlapping_functions(int l) const {
+    const Level& lv = levels_[std::size_t(l)];
+    std::vector<int> first(static_cast<std::size_t>(pd_)), last(static_cast<std::size_t>(pd_));
+    for (int d = 0; d < pd_; ++d) {
+      const KnotVector& U = lv.U[std::size_t(d)];
+      const int p = mesh_.degrees[std::size_t(d)];
+      const double lo = lv.domain.lo[std::size_t(d)], hi = lv.domain.hi[std::size_t(d)];
+      first[std::size_t(d)] = lv.n[std::size_t(d)];
+      last[std::size_t(d)] = -1;
+      for (int i = 0; i < lv.n[std::size_t(d)]; ++i)
+        if (U(i) < hi && U(i + p + 1) > lo) {
+          first[std::size_t(d)] = std::min(first[std::size_t(d)], i);
+          last[std::size_t(d)] = i;
+        }
+    }
+    std::vector<long long> out;
+    std::vector<int> ijk = first;
+    for (int d = 0; d < pd_; ++d)
+      if (last[std::size_t(d)] < first[std::size_t(d)]) return out;
+    while (true) {
+      out.push_back(lv.flat(ijk));
+      int d = 0;
+      while (d < pd_ && ++ijk[std::size_t(d)] > last[std::size_t(d)]) ijk[std::size_t(d)] = first[std::size_t(d)], ++d;
+      if (d == pd_) break;
+    }
+    return out;
+  }
+
+  bool inside(int l, const Level& lv, long long f) const {
+    if (l >= int(levels_.size())) return false;
+    std::vector<double> lo, hi;
+    lv.support(lv.multi(f), pd_, mesh_.degrees, lo, hi);
+    return levels_[std::size_t(l)].domain.contains(lo, hi);
+  }
+
+  void number_active_functions(AnalysisSpace& s, std::vector<int>& per_level) {
+    int next = 0;
+    for (int l = 0; l < int(levels_.size()); ++l) {
+      Level& lv = levels_[std::size_t(l)];
+      int count = 0;
+      for (long long f : overlapping_functions(l))
+        if (inside(l, lv, f) && !inside(l + 1, lv, f)) {
+          lv.active.emplace(f, next++);
+          s.function_level.push_back(l);
+          ++count;
+        }
+      per_level.push_back(count);
+    }
+  }
+
+  /// Coefficients of level-l function f on the THB functions: itself if active, nothing if
+  /// its support lies in Omega^l (truncated away or represented at finer levels), else its
+  /// refinement of the parent level's representation.
+  const SparseRow& truncated(int l, long long f) {
+    Level& lv = levels_[std::size_t(l)];
+    if (auto it = lv.truncated.find(f); it != lv.truncated.end()) return it->second;
+    SparseRow row;
+    if (auto a = lv.active.find(f); a != lv.active.end()) row.emplace_back(a->second, 1.0);
+    else if (l > 0 && !inside(l, lv, f)) row = refine(l, f, [&](long long g) -> const SparseRow& { return truncated(l - 1, g); });
+    return lv.truncated.emplace(f, std::move(row)).first->second;
+  }
+
+  /// Coefficients of level-l function f on the patch's (level-0) functions: B^0 = T^T B^l.
+  const SparseRow& on_patch(int l, long long f) {
+    Level& lv = levels_[std::size_t(l)];
+    if (auto it = lv.on_patch.find(f); it != lv.on_patch.end()) return it->second;
+    SparseRow row;
+    if (l == 0) row.emplace_back(int(f), 1.0);
+    else row = refine(l, f, [&](long long g) -> const SparseRow& { return on_patch(l - 1, g); });
+    return lv.on_patch.emplace(f, std::move(row)).first->second;
+  }
+
+  /// sum_k T(f, k) parent(k): the two-scale relation applied to rows of the parent level.
+  template <class ParentRow>
+  SparseRow refine(int l, long long f, ParentRow parent) {
+    const Level& lv = levels_[std::size_t(l)];
+    const Level& up = levels_[std::size_t(l - 1)];
+    const std::vector<int> ijk = lv.multi(f);
+    SparseRow row;
+    std::vector<std::size_t> k(std::size_t(pd_), 0);
+    std::vector<int> parent_ijk(static_cast<std::size_t>(pd_));
+    while (true) {
+      double c = 1;
+      for (int d = 0; d < pd_; ++d) {
+        const auto& entry = lv.two_scale[std::size_t(d)][std::size_t(ijk[std::size_t(d)])][k[std::size_t(d)]];
+        parent_ijk[std::size_t(d)] = entry.first;
+        c *= entry.second;
+      }
+      add_scaled(row, parent(up.flat(parent_ijk)), c);
+      int d = 0;
+      while (d < pd_ && ++k[std::size_t(d)] >= lv.two_scale[std::size_t(d)][std::size_t(ijk[std::size_t(d)])].size()) k[std::size_t(d++)] = 0;
+      if (d == pd_) break;
+    }
+    return row;
+  }
+
+  /// Active elements of level l: its cells in Omega^l and not in Omega^{l+1}.
+  int add_active_elements(int l, AnalysisSpace& s) {
+    const Level& lv = levels_[std::size_t(l)];
+    std::vector<std::vector<int>> cells(static_cast<std::size_t>(pd_));
+    for (int d = 0; d < pd_; ++d)
+      for (int c = 0; c < int(lv.spans[std::size_t(d)].size()); ++c) {
+        const SpanExtraction& sp = lv.spans[std::size_t(d)][std::size_t(c)];
+        ParameterBox line{{lv.domain.lo[std::size_t(d)]}, {lv.domain.hi[std::size_t(d)]}};
+        if (line.contains({sp.lo}, {sp.hi})) cells[std::size_t(d)].push_back(c);
+      }
+    int count = 0;
+    std::vector<std::size_t> e(std::size_t(pd_), 0);
+    for (const auto& c : cells)
+      if (c.empty()) return 0;
+    std::vector<double> lo(static_cast<std::size_t>(pd_)), hi(static_cast<std::size_t>(pd_));
+    while (true) {
+      for (int d = 0; d < pd_; ++d) {
+        const SpanExtraction& sp = lv.spans[std::size_t(d)][std::size_t(cells[std::size_t(d)][e[std::size_t(d)]])];
+        lo[std::size_t(d)] = sp.lo;
+        hi[std::size_t(d)] = sp.hi;
+      }
+      if (l + 1 >= int(levels_.size()) || !levels_[std::size_t(l + 1)].domain.contains(lo, hi)) {
+        s.elements.push_back(element(l, e, cells));
+        ++count;
+      }
+      int d = 0;
+      while (d < pd_ && ++e[std::size_t(d)] >= cells[std::size_t(d)].size()) e[std::size_t(d++)] = 0;
+      if (d == pd_) break;
+    }
+    return count;
+  }
+
+  Element element(int l, const std::vector<std::size_t>& e, const std::vector<std::vector<int>>& cells) {
+    const Level& lv = levels_[std::size_t(l)];
+    Element el;
+    el.level = l;
+    std::vector<const Eigen::MatrixXd*> C1d;
+    std::vector<int> first(static_cast<std::size_t>(pd_));
+    for (int d = 0; d < pd_; ++d) {
+      const SpanExtraction& sp = lv.spans[std::size_t(d)][std::size_t(cells[std::size_t(d)][e[std::size_t(d)]])];
+      el.lo(d) = sp.lo;
+      el.hi(d) = sp.hi;
+      first[std::size_t(d)] = sp.first_function;
+      C1d.push_back(&sp.C);
+    }
+    const Eigen::MatrixXd tensor = tensor_extraction(C1d);  // local level-l functions x Bernstein
+    // THB functions on the element: C_e = sum over local functions of their truncated rows
+    std::map<int, Eigen::RowVectorXd> rows;
+    std::vector<int> ijk(static_cast<std::size_t>(pd_));
+    for (Eigen::Index j = 0; j < tensor.rows(); ++j) {
+      Eigen::Index rest = j;
+      for (int d = 0; d < pd_; ++d) {
+        const int p1 = mesh_.degrees[std::size_t(d)] + 1;
+        ijk[std::size_t(d)] = first[std::size_t(d)] + int(rest % p1);
+        rest /= p1;
+      }
+      for (const auto& [thb, c] : truncated(l, lv.flat(ijk))) {
+        auto [it, fresh] = rows.try_emplace(thb, Eigen::RowVectorXd::Zero(tensor.cols()));
+        it->second += c * tensor.row(j);
+      }
+    }
+    el.C.resize(Eigen::Index(rows.size()), tensor.cols());
+    Eigen::Index r = 0;
+    for (const auto& [thb, row] : rows) {
+      el.functions.push_back(thb);
+      el.C.row(r++) = row;
+    }
+    return el;
+  }
+
+  /// Weights, control points and the prolongation from the patch's coefficients: a THB
+  /// function of level l takes the level-l coefficient of the patch's homogeneous field
+  /// (THB preserves coefficients), then R = w N / W with W the patch's weight function.
+  void rational_coefficients(AnalysisSpace& s, Eigen::SparseMatrix<double>& prolongation) {
+    const int n = int(s.function_level.size()), cols = patch_.phys_dim();
+    s.weights.resize(n);
+    s.control_points.resize(n, cols);
+    std::vector<Eigen::Triplet<double>> t;
+    for (int l = 0; l < int(levels_.size()); ++l) {
+      std::vector<std::pair<long long, int>> active(levels_[std::size_t(l)].active.begin(), levels_[std::size_t(l)].active.end());
+      for (const auto& [f, thb] : active) {
+        const SparseRow row = on_patch(l, f);
+        double w = 0;
+        Eigen::RowVectorXd wx = Eigen::RowVectorXd::Zero(cols);
+        for (const auto& [i, c] : row) {
+          w += c * patch_.weights(i);
+          wx += c * patch_.weights(i) * patch_.points.row(i);
+        }
+        s.weights(thb) = w;
+        s.control_points.row(thb) = wx / w;
+        for (const auto& [i, c] : row) t.emplace_back(thb, i, c * patch_.weights(i) / w);
+      }
+    }
+    prolongation.resize(n, patch_.count());
+    prolongation.setFromTriplets(t.begin(), t.end());
+  }
+
+  const NurbsPatch& patch_;
+  const HierarchicalMesh& mesh_;
+  const int pd_;
+  std::vector<Level> levels_;
+};
+
+}  // namespace
+
+HierarchicalSpace hierarchical_space(const NurbsPatch& patch, const HierarchicalMesh& mesh) {
+  return Builder(patch, mesh).build();
+}
+
+}  // namespace isosid::prep

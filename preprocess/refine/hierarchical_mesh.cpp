@@ -1,0 +1,202 @@
+// Levels and nested domains of a THB refinement; see hierarchical_mesh.hpp.
+#include "refine/hierarchical_mesh.hpp"
+
+#include "isosid/format/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace isosid::prep {
+namespace {
+
+constexpr const char* kField = "refinement.hierarchical";
+const char* kDirections[3] = {"xi", "eta", "zeta"};
+
+double tolerance(const ParameterBox& b, std::size_t d) { return 1e-12 * (1.0 + std::abs(b.hi[d] - b.lo[d])); }
+
+KnotVector subdivide(const KnotVector& U, int parts) {
+  if (parts <= 1) return U;
+  std::vector<double> out;
+  for (Eigen::Index i = 0; i < U.size(); ++i) {
+    out.push_back(U(i));
+    if (i + 1 < U.size() && U(i + 1) > U(i))
+      for (int k = 1; k < parts; ++k) out.push_back(U(i) + (U(i + 1) - U(i)) * k / parts);
+  }
+  return Eigen::Map<const KnotVector>(out.data(), Eigen::Index(out.size()));
+}
+
+/// Physical distance from the point to the point moved to parameter t along direction d.
+double chord(const NurbsPatch& p, const std::vector<double>& point, int d, double t) {
+  Eigen::VectorXd a = Eigen::Map<const Eigen::VectorXd>(point.data(), Eigen::Index(point.size())), b = a;
+  b(d) = t;
+  return (p.point(b) - p.point(a)).norm();
+}
+
+/// Parameter reached from `point` along direction d when the chord grows to `length`
+/// (the parameter bound if it never does).
+double walk(const NurbsPatch& p, const std::vector<double>& point, int d, double length, double bound) {
+  if (chord(p, point, d, bound) <= length) return bound;
+  double near = point[std::size_t(d)], far = bound;
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (near + far);
+    (chord(p, point, d, mid) < length ? near : far) = mid;
+  }
+  return 0.5 * (near + far);
+}
+
+/// The request's box in parameter space.
+ParameterBox request_box(const NurbsPatch& base, const HierarchicalRequest& r, const std::string& file) {
+  const int pd = base.param_dim();
+  ParameterBox box;
+  if (!r.box.empty()) {
+    for (int d = 0; d < pd; ++d) {
+      box.lo.push_back(r.box[std::size_t(d)][0]);
+      box.hi.push_back(r.box[std::size_t(d)][1]);
+    }
+    return box;
+  }
+  const double size = (base.points.colwise().maxCoeff() - base.points.colwise().minCoeff()).norm();
+  for (int d = 0; d < pd; ++d) {
+    const double range = base.upper(d) - base.lower(d), step = 1e-6 * range;
+    const double t = std::min(r.point[std::size_t(d)] + step, base.upper(d)), s = std::max(r.point[std::size_t(d)] - step, base.lower(d));
+    const double speed = std::max(chord(base, r.point, d, t), chord(base, r.point, d, s)) / step;
+    if (speed < 1e-9 * size / range)
+      throw format::InputError(file, std::string(kField) + ".point",
+                               std::string("the parametrization collapses at the point along ") + kDirections[d] +
+                                   ", so a physical width cannot be measured there; give a parameter box");
+    box.lo.push_back(walk(base, r.point, d, 0.5 * r.width, base.lower(d)));
+    box.hi.push_back(walk(base, r.point, d, 0.5 * r.width, base.upper(d)));
+  }
+  return box;
+}
+
+/// Largest |dx/dxi_d| over the box corners and centre: element sizes are measured with it,
+/// so no element in the box is longer than requested.
+double largest_speed(const NurbsPatch& base, const ParameterBox& box, int d) {
+  const int pd = base.param_dim();
+  double speed = 0;
+  Eigen::VectorXd xi(pd), x;
+  Eigen::MatrixXd J;
+  for (int corner = 0; corner <= (1 << pd); ++corner) {
+    for (int k = 0; k < pd; ++k)
+      xi(k) = corner == (1 << pd) ? 0.5 * (box.lo[std::size_t(k)] + box.hi[std::size_t(k)])
+                                  : ((corner >> k) & 1 ? box.hi[std::size_t(k)] : box.lo[std::size_t(k)]);
+    base.evaluate(xi, x, &J);
+    speed = std::max(speed, J.col(d).norm());
+  }
+  return speed;
+}
+
+/// Longest span of U overlapping [lo, hi].
+double longest_span(const KnotVector& U, double lo, double hi) {
+  double longest = 0;
+  for (Eigen::Index i = 0; i + 1 < U.size(); ++i)
+    if (U(i + 1) > U(i) && U(i + 1) > lo && U(i) < hi) longest = std::max(longest, U(i + 1) - U(i));
+  return longest;
+}
+
+/// Largest unique knot <= x (snap down) or smallest >= x (snap up), within round-off.
+double snap(const std::vector<double>& u, double x, bool down) {
+  const double tol = 1e-12 * (u.back() - u.front());
+  if (down) {
+    auto it = std::upper_bound(u.begin(), u.end(), x + tol);
+    return it == u.begin() ? u.front() : *(it - 1);
+  }
+  auto it = std::lower_bound(u.begin(), u.end(), x - tol);
+  return it == u.end() ? u.back() : *it;
+}
+
+/// Moves x by `cells` unique knots of u (down or up), stopping at the ends.
+double step_knots(const std::vector<double>& u, double x, int cells, bool down) {
+  const double tol = 1e-12 * (u.back() - u.front());
+  auto it = std::lower_bound(u.begin(), u.end(), x - tol);
+  const auto k = std::distance(u.begin(), it);
+  const auto m = down ? std::max<std::ptrdiff_t>(0, k - cells) : std::min<std::ptrdiff_t>(std::ptrdiff_t(u.size()) - 1, k + cells);
+  return u[std::size_t(m)];
+}
+
+}  // namespace
+
+bool ParameterBox::contains(const std::vector<double>& inner_lo, const std::vector<double>& inner_hi) const {
+  for (std::size_t d = 0; d < lo.size(); ++d) {
+    const double tol = tolerance(*this, d);
+    if (inner_lo[d] < lo[d] - tol || inner_hi[d] > hi[d] + tol) return false;
+  }
+  return true;
+}
+
+HierarchicalMesh HierarchicalMesh::single_level(const NurbsPatch& patch) {
+  HierarchicalMesh m;
+  m.degrees = patch.degrees;
+  m.knots.push_back(patch.knots);
+  m.factors.push_back(std::vector<int>(std::size_t(patch.param_dim()), 1));
+  ParameterBox whole;
+  for (int d = 0; d < patch.param_dim(); ++d) {
+    whole.lo.push_back(patch.lower(d));
+    whole.hi.push_back(patch.upper(d));
+  }
+  m.domains.push_back(whole);
+  return m;
+}
+
+HierarchicalMesh hierarchical_mesh(const NurbsPatch& base, const HierarchicalRequest& r, const std::string& file) {
+  HierarchicalMesh m = HierarchicalMesh::single_level(base);
+  const int pd = base.param_dim();
+  const ParameterBox box = request_box(base, r, file);
+
+  // factors per direction (Alg. 3), padded with 1 at the coarse end to a common level count
+  std::vector<std::vector<int>> factors(static_cast<std::size_t>(pd));
+  std::size_t refined_levels = 0;
+  for (int d = 0; d < pd; ++d) {
+    const double extent = box.hi[std::size_t(d)] - box.lo[std::size_t(d)];
+    const double finest = r.smallest > 0 ? r.smallest / largest_speed(base, box, d) : extent / r.elements_across;
+    const double ratio = longest_span(base.knots[std::size_t(d)], box.lo[std::size_t(d)], box.hi[std::size_t(d)]) / finest;
+    if (ratio > 1e7)
+      throw format::InputError(file, std::string(kField) + (r.smallest > 0 ? ".smallest" : ".elements_across"),
+                               std::string("asks for a subdivision by ") + std::to_string(ratio) + " along " + kDirections[d]);
+    try {
+      factors[std::size_t(d)] = level_factors(int(std::ceil(ratio - 1e-9)), r.limits);
+    } catch (const std::invalid_argument& e) {
+      throw format::InputError(file, kField, std::string(kDirections[d]) + ": " + e.what());
+    }
+    refined_levels = std::max(refined_levels, factors[std::size_t(d)].size());
+  }
+  for (auto& f : factors) f.insert(f.begin(), refined_levels - f.size(), 1);
+
+  for (std::size_t l = 0; l < refined_levels; ++l) {
+    std::vector<KnotVector> U;
+    std::vector<int> f;
+    for (int d = 0; d < pd; ++d) {
+      f.push_back(factors[std::size_t(d)][l]);
+      U.push_back(subdivide(m.knots.back()[std::size_t(d)], f.back()));
+    }
+    m.knots.push_back(std::move(U));
+    m.factors.push_back(std::move(f));
+  }
+
+  // nested domains, finest first: the box snapped outward to the parent level's knots, then
+  // each coarser domain holds the finer one grown by p elements of its own level
+  const int L = m.levels() - 1;
+  m.domains.resize(std::size_t(L + 1));
+  for (int l = L; l >= 1; --l) {
+    ParameterBox& dom = m.domains[std::size_t(l)];
+    dom.lo.resize(std::size_t(pd));
+    dom.hi.resize(std::size_t(pd));
+    for (int d = 0; d < pd; ++d) {
+      const std::vector<double> parent = unique_knots(m.knots[std::size_t(l - 1)][std::size_t(d)]);
+      double lo = box.lo[std::size_t(d)], hi = box.hi[std::size_t(d)];
+      if (l < L) {
+        const std::vector<double> own = unique_knots(m.knots[std::size_t(l)][std::size_t(d)]);
+        const int p = m.degrees[std::size_t(d)];
+        lo = step_knots(own, m.domains[std::size_t(l + 1)].lo[std::size_t(d)], p, true);
+        hi = step_knots(own, m.domains[std::size_t(l + 1)].hi[std::size_t(d)], p, false);
+      }
+      dom.lo[std::size_t(d)] = snap(parent, lo, true);
+      dom.hi[std::size_t(d)] = snap(parent, hi, false);
+    }
+  }
+  return m;
+}
+
+}  // namespace isosid::prep
