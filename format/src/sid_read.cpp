@@ -114,6 +114,15 @@ void read_transfer(const h5::Reader& r, Sid& sid) {
   sid.transfer = std::move(t);
 }
 
+void read_discretization(const h5::Reader& r, Sid& sid) {
+  if (!r.exists("/discretization")) return;
+  Discretization d;
+  d.elements_per_level = r.integers("/discretization/elements_per_level");
+  d.functions_per_level = r.integers("/discretization/functions_per_level");
+  d.free_dofs = int(r.integer("/discretization/free_dofs"));
+  sid.discretization = std::move(d);
+}
+
 void read_provenance(const h5::Reader& r, Sid& sid) {
   Provenance& p = sid.provenance;
   p.model_file = r.string("/provenance/model_file");
@@ -143,6 +152,7 @@ Sid read_sid(const std::string& path) {
   read_contact(r, sid);
   read_stress(r, sid);
   read_transfer(r, sid);
+  read_discretization(r, sid);
   read_provenance(r, sid);
   validate_sid(sid, path);
   return sid;

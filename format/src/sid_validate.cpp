@@ -200,6 +200,15 @@ void check_stress(const Checker& c, const Sid& sid) {
   }
 }
 
+void check_discretization(const Checker& c, const Sid& sid) {
+  if (!sid.discretization) return;
+  const Discretization& d = *sid.discretization;
+  if (d.elements_per_level.size() == 0 || d.elements_per_level.size() != d.functions_per_level.size())
+    c.fail("/discretization/functions_per_level", "needs one entry per level, as elements_per_level");
+  if ((d.elements_per_level.array() < 0).any() || (d.functions_per_level.array() < 0).any() || d.free_dofs < 0)
+    c.fail("/discretization", "negative count");
+}
+
 void check_transfer(const Checker& c, const Sid& sid) {
   if (!sid.transfer) return;
   const TransferOperator& t = *sid.transfer;
@@ -220,6 +229,7 @@ void validate_sid(const Sid& sid, const std::string& file) {
   check_contact(c, sid);
   check_stress(c, sid);
   check_transfer(c, sid);
+  check_discretization(c, sid);
 }
 
 }  // namespace isosid::format

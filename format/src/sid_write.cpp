@@ -107,6 +107,14 @@ void write_transfer(h5::Writer& w, const Sid& sid) {
   w.matrix("/transfer/fine_to_coarse", sid.transfer->fine_to_coarse, "1");
 }
 
+void write_discretization(h5::Writer& w, const Sid& sid) {
+  if (!sid.discretization) return;
+  w.group("/discretization");
+  w.integers("/discretization/elements_per_level", sid.discretization->elements_per_level);
+  w.integers("/discretization/functions_per_level", sid.discretization->functions_per_level);
+  w.integer("/discretization/free_dofs", sid.discretization->free_dofs);
+}
+
 void write_provenance(h5::Writer& w, const Sid& sid) {
   const Provenance& p = sid.provenance;
   w.group("/provenance");
@@ -151,6 +159,7 @@ void write_sid(const Sid& sid, const std::string& path, const WriteOptions& opti
     part("contact", [&] { write_contact(w, sid); });
     part("stress", [&] { write_stress(w, sid); });
     part("transfer", [&] { write_transfer(w, sid); });
+    part("discretization", [&] { write_discretization(w, sid); });
     part("provenance", [&] { write_provenance(w, sid); });
     w.close();
   }

@@ -58,6 +58,10 @@ json describe(const Sid& sid) {
   j["stress_recovery"] = json::array();
   for (const StressRecovery& s : sid.stress_recovery)
     j["stress_recovery"].push_back({{"name", s.name}, {"points", s.position.rows()}, {"components", s.components}});
+  if (const auto& d = sid.discretization)
+    j["mesh"] = json{{"elements_per_level", std::vector<int>(d->elements_per_level.begin(), d->elements_per_level.end())},
+                     {"functions_per_level", std::vector<int>(d->functions_per_level.begin(), d->functions_per_level.end())},
+                     {"free_dofs", d->free_dofs}};
   j["transfer"] = sid.transfer ? json{{"coarse_nq", sid.transfer->coarse_to_fine.cols()},
                                       {"coarse_model_sha256", sid.transfer->coarse_model_sha256}}
                                : json(nullptr);
@@ -111,6 +115,14 @@ void print_text(const Sid& sid, std::ostream& out) {
     out << "stress        " << s.name << ": " << s.position.rows() << " points, " << s.components.size() << " components\n";
   if (sid.transfer)
     out << "transfer      from a coarse model with nq = " << sid.transfer->coarse_to_fine.cols() << "\n";
+  if (const auto& d = sid.discretization) {
+    out << "mesh          " << d->elements_per_level.sum() << " elements, " << d->functions_per_level.sum() << " functions, "
+        << d->free_dofs << " free DOFs";
+    if (d->elements_per_level.size() > 1)
+      for (Eigen::Index l = 0; l < d->elements_per_level.size(); ++l)
+        out << "\n  level " << l << "     " << d->elements_per_level(l) << " elements, " << d->functions_per_level(l) << " functions";
+    out << "\n";
+  }
   out << "provenance    " << sid.provenance.model_file << " (sha256 " << sid.provenance.model_sha256.substr(0, 12)
       << "...), isosid " << sid.provenance.program_version << ", " << sid.provenance.created_utc << "\n";
   for (const auto& [name, s] : sid.provenance.timings_s) out << "  time        " << name << ": " << fmt(s) << " s\n";

@@ -7,9 +7,18 @@
 
 namespace isosid::prep {
 
-DofMap::DofMap(const AnalysisSpace& space, int dim, double tolerance) : dim_(dim) {
+DofMap::DofMap(const AnalysisSpace& space, int dim, double tolerance, const std::vector<PatchSide>& collapsed) : dim_(dim) {
   const Eigen::MatrixXd& P = space.control_points;
   const int n = int(P.rows());
+  std::vector<bool> on_collapsed(std::size_t(n), false);
+  for (const Element& e : space.elements)
+    for (PatchSide side : collapsed)
+      if (space.on_side(e, side))
+        for (int f : e.functions) on_collapsed[std::size_t(f)] = true;
+  auto level = [&](int f) { return space.function_level.empty() ? 0 : space.function_level[std::size_t(f)]; };
+  auto mergeable = [&](int f, int g) {
+    return level(f) == level(g) || (on_collapsed[std::size_t(f)] && on_collapsed[std::size_t(g)]);
+  };
   // sort by the first coordinate, then compare points whose first coordinates are close
   std::vector<int> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), 0);
@@ -24,7 +33,7 @@ DofMap::DofMap(const AnalysisSpace& space, int dim, double tolerance) : dim_(dim
     node_of_function_[std::size_t(f)] = node;
     for (std::size_t j = i + 1; j < order.size() && P(order[j], 0) - P(f, 0) <= tolerance; ++j) {
       const int g = order[j];
-      if (node_of_function_[std::size_t(g)] < 0 && (P.row(g) - P.row(f)).norm() <= tolerance)
+      if (node_of_function_[std::size_t(g)] < 0 && (P.row(g) - P.row(f)).norm() <= tolerance && mergeable(f, g))
         node_of_function_[std::size_t(g)] = node;
     }
   }

@@ -16,12 +16,18 @@ using SparseRow = std::vector<std::pair<int, double>>;  ///< (column, value), so
 void add_scaled(SparseRow& into, const SparseRow& row, double scale) {
   SparseRow out;
   out.reserve(into.size() + row.size());
-  auto a = into.cbegin();
-  auto b = row.cbegin();
-  while (a != into.cend() || b != row.cend()) {
-    if (b == row.cend() || (a != into.cend() && a->first < b->first)) out.push_back(*a++);
-    else if (a == into.cend() || b->first < a->first) out.emplace_back(b->first, scale * (b++)->second);
-    else out.emplace_back(a->first, a->second + scale * b->second), ++a, ++b;
+  std::size_t a = 0, b = 0;
+  while (a < into.size() || b < row.size()) {
+    if (b == row.size() || (a < into.size() && into[a].first < row[b].first)) {
+      out.push_back(into[a++]);
+    } else if (a == into.size() || row[b].first < into[a].first) {
+      out.emplace_back(row[b].first, scale * row[b].second);
+      ++b;
+    } else {
+      out.emplace_back(into[a].first, into[a].second + scale * row[b].second);
+      ++a;
+      ++b;
+    }
   }
   into.swap(out);
 }

@@ -3,6 +3,7 @@
 
 #include "isosid/format/error.hpp"
 
+#include <Eigen/SVD>
 #include <cmath>
 
 namespace isosid::prep {
@@ -112,6 +113,16 @@ std::vector<int> NurbsPatch::side_points(PatchSide side) const {
     if (ijk[std::size_t(side.direction)] == (side.end == 0 ? 0 : n[std::size_t(side.direction)] - 1)) out.push_back(i);
   }
   return out;
+}
+
+bool NurbsPatch::is_collapsed(PatchSide side) const {
+  const std::vector<int> cps = side_points(side);
+  Eigen::MatrixXd X(Eigen::Index(cps.size()), phys_dim());
+  for (std::size_t i = 0; i < cps.size(); ++i) X.row(Eigen::Index(i)) = points.row(cps[i]);
+  X.rowwise() -= X.colwise().mean();
+  const double size = (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
+  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(X).singularValues();
+  return (sv.array() > 1e-9 * size).count() < param_dim() - 1;
 }
 
 void validate_patch(const NurbsPatch& patch, const std::string& file, const std::string& field) {

@@ -42,14 +42,37 @@ std::vector<int> side_nodes(const BodyModel& body, PatchSide side) {
   return {nodes.begin(), nodes.end()};
 }
 
+ModelSpec coarse_model_spec(const ModelSpec& spec) {
+  ModelSpec coarse = spec;
+  coarse.refinement.hierarchical.reset();
+  coarse.reduction.method = "modal";
+  return coarse;
+}
+
 BodyModel build_body(const ModelSpec& spec) {
   NurbsPatch refined = refine_patch(spec.patch, spec.refinement);
-  AnalysisSpace space = tensor_space(refined);
+  AnalysisSpace space;
+  std::optional<Hierarchy> hierarchy;
+  if (spec.refinement.hierarchical) {
+    Hierarchy h{hierarchical_mesh(refined, *spec.refinement.hierarchical, spec.file), {}, {}, {}};
+    HierarchicalSpace thb = hierarchical_space(refined, h.mesh);
+    space = std::move(thb.space);
+    h.functions_per_level = std::move(thb.functions_per_level);
+    h.elements_per_level = std::move(thb.elements_per_level);
+    h.prolongation = std::move(thb.prolongation);
+    hierarchy = std::move(h);
+  } else {
+    space = tensor_space(refined);
+  }
   const double size = patch_size(refined);
   const int dim = format::spatial_dim(spec.analysis);
-  DofMap dofs(space, dim, 1e-10 * size);
-  BodyModel body{spec, std::move(refined), std::move(space), Elasticity(spec.analysis, spec.material, spec.thickness),
-                 std::move(dofs)};
+  std::vector<PatchSide> collapsed;
+  for (int d = 0; d < refined.param_dim(); ++d)
+    for (int end = 0; end < 2; ++end)
+      if (refined.is_collapsed({d, end})) collapsed.push_back({d, end});
+  DofMap dofs(space, dim, 1e-10 * size, collapsed);
+  BodyModel body{spec, std::move(refined), std::move(space), std::move(hierarchy),
+                 Elasticity(spec.analysis, spec.material, spec.thickness), std::move(dofs)};
   if (spec.analysis == format::AnalysisType::Axisymmetric)  // radial displacement vanishes on the axis
     for (int n = 0; n < body.dofs.node_count(); ++n)
       if (std::abs(body.dofs.node_points()(n, 0)) <= 1e-10 * size) body.dofs.fix(n, 0);

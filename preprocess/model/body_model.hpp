@@ -2,24 +2,39 @@
 // with boundary conditions applied (axis conditions of axisymmetric bodies included).
 #pragma once
 #include "assemble/analysis_space.hpp"
+#include "assemble/hierarchical_space.hpp"
 #include "assemble/dof_map.hpp"
 #include "assemble/elasticity.hpp"
 #include "model/model_file.hpp"
 
 #include <memory>
+#include <optional>
 
 namespace isosid::prep {
 
+/// What a hierarchical (THB) refinement added on top of the refined tensor patch.
+struct Hierarchy {
+  HierarchicalMesh mesh;
+  std::vector<int> functions_per_level, elements_per_level;
+  Eigen::SparseMatrix<double> prolongation;  ///< THB functions x patch functions (exact)
+};
+
 struct BodyModel {
   ModelSpec spec;
-  NurbsPatch refined;
+  NurbsPatch refined;              ///< the globally refined tensor patch (level 0 of a hierarchy)
   AnalysisSpace space;
+  std::optional<Hierarchy> hierarchy;
   Elasticity elasticity;
   DofMap dofs;
 };
 
-/// Refines the spec's patch (elevate, subdivide, grade), builds the space and the DOF map.
+/// Refines the spec's patch (elevate, subdivide, grade, then hierarchically if requested),
+/// builds the space and the DOF map.
 BodyModel build_body(const ModelSpec& spec);
+
+/// The coarse model a THB model refines (seed 001): the spec without its hierarchical
+/// refinement, reduced by modal truncation to the same number of normal modes.
+ModelSpec coarse_model_spec(const ModelSpec& spec);
 
 /// Applies the refinement of a spec to a patch (elevation first, then knot insertion).
 NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& refinement);

@@ -97,8 +97,51 @@ NurbsPatch read_geometry(const TomlView& g, format::AnalysisType analysis) {
   return p;
 }
 
+/// [refinement.hierarchical]: a parameter box, or a point with a physical width; how fine
+/// (smallest element in metres, or elements across the box) and the level limits of seed 001.
+HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch) {
+  h.allow_only({"box", "point", "width", "smallest", "elements_across", "admissibility", "max_levels", "max_knots_per_level"});
+  HierarchicalRequest q;
+  const int pd = patch.param_dim();
+  if (h.has("box") == h.has("point")) h.fail("box", "give either a parameter box or a point with a width");
+  if (h.has("box")) {
+    const auto rows = h.number_rows("box");
+    if (int(rows.size()) != pd) h.fail("box", "needs one [lo, hi] per parametric direction (" + std::to_string(pd) + ")");
+    for (int d = 0; d < pd; ++d) {
+      const auto& b = rows[std::size_t(d)];
+      if (b.size() != 2) h.fail("box", "each entry must be [lo, hi]");
+      if (!(b[0] < b[1])) h.fail("box", std::string("zero or negative width along ") + kDirections[d]);
+      if (b[0] < patch.lower(d) || b[1] > patch.upper(d))
+        h.fail("box", std::string("outside the parameter range of ") + kDirections[d]);
+      q.box.push_back({b[0], b[1]});
+    }
+    if (h.has("width")) h.fail("width", "only with a point");
+  } else {
+    q.point = h.numbers("point");
+    if (int(q.point.size()) != pd) h.fail("point", "needs " + std::to_string(pd) + " parameters");
+    for (int d = 0; d < pd; ++d)
+      if (q.point[std::size_t(d)] < patch.lower(d) || q.point[std::size_t(d)] > patch.upper(d))
+        h.fail("point", std::string("outside the parameter range of ") + kDirections[d]);
+    q.width = h.positive("width");
+  }
+  if (h.has("smallest") && h.has("elements_across")) h.fail("smallest", "give smallest or elements_across, not both");
+  if (h.has("smallest")) q.smallest = h.positive("smallest");
+  const long long across = h.integer("elements_across", 16);
+  if (across < 1 || across > 1000) h.fail("elements_across", "must lie in 1..1000");
+  q.elements_across = int(across);
+  const long long levels = h.integer("max_levels", 5), knots = h.integer("max_knots_per_level", 10);
+  // seed 001: more levels make every basis evaluation dearer, more knots per level approach global refinement
+  if (levels < 2 || levels > 5) h.fail("max_levels", "must lie in 2..5 (the coarse level included)");
+  if (knots < 1 || knots > 10) h.fail("max_knots_per_level", "must lie in 1..10");
+  q.limits = {int(levels), int(knots)};
+  const long long m = h.integer("admissibility", 2);
+  if (m < 2 || m > levels) h.fail("admissibility", "must lie in 2..max_levels (class m: at most m levels on an element)");
+  q.admissibility = int(m);
+  return q;
+}
+
 RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch) {
-  r.allow_only({"degrees", "subdivisions", "graded"});
+  r.allow_only({"degrees", "subdivisions", "graded", "hierarchical"});
   RefinementSpec spec;
   const int pd = patch.param_dim();
   if (r.has("degrees")) {
@@ -130,6 +173,7 @@ RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch) {
     if (q.growth <= 1.0 || q.growth > 3.0) g.fail("growth", "must lie in (1, 3]");
     spec.graded.push_back(q);
   }
+  if (auto h = r.optional_table("hierarchical")) spec.hierarchical = read_hierarchical(*h, patch);
   return spec;
 }
 

@@ -4,8 +4,10 @@
 #include "geometry/nurbs_patch.hpp"
 #include "isosid/format/sid.hpp"
 #include "refine/graded_knots.hpp"
+#include "refine/hierarchical_mesh.hpp"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,7 @@ struct RefinementSpec {
   std::vector<int> degrees;         ///< target degree per direction (elevation first)
   std::vector<int> subdivisions;    ///< uniform split of every span per direction
   std::vector<GradingRequest> graded;
+  std::optional<HierarchicalRequest> hierarchical;  ///< THB refinement on top of the above
 };
 
 /// How the body is reduced (the [reduction] table).

@@ -25,6 +25,10 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMat
   } else {
     throw format::ComputationError("unknown reduction method '" + r.method + "'");
   }
+  if (r.extra_vectors.cols() > 0) {
+    out.Phi.conservativeResize(Eigen::NoChange, out.Phi.cols() + r.extra_vectors.cols());
+    out.Phi.rightCols(r.extra_vectors.cols()) = r.extra_vectors;
+  }
   const Eigen::Index raw = out.Phi.cols();
   remove_rigid_content(out.Phi, M, rigid);
   out.omega2 = orthonormalize(out.Phi, K, M);

@@ -14,6 +14,7 @@ struct ReductionRequest {
   int normal_modes = 10;             ///< modal: elastic modes kept; craig-bampton: fixed-interface modes
   std::vector<int> interface_dofs;   ///< free DOF indices (craig-bampton)
   std::string interface_description;
+  Eigen::MatrixXd extra_vectors;     ///< free DOFs x k, added to the basis (e.g. a coarse model's modes)
 };
 
 /// `rigid` holds the admissible rigid-body fields on the free DOFs (columns).

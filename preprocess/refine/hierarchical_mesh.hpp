@@ -26,6 +26,7 @@ struct HierarchicalRequest {
   double width = 0;                        ///< ... and the physical width of the refined region, m
   double smallest = 0;                     ///< m, element size in the box; 0: from elements_across
   int elements_across = 16;                ///< seed 001: elements across the interval per direction
+  int admissibility = 2;                   ///< class m: functions of at most m levels on any element
   LevelLimits limits;
 };
 
@@ -42,9 +43,9 @@ struct HierarchicalMesh {
 };
 
 /// Resolves the request on `base` (the globally refined coarse patch): the parameter box,
-/// the level factors of each direction (seed 001 Alg. 3) and nested domains that keep the mesh
-/// admissible of class 2 (Omega^{l+1} grown by p level-l elements lies in Omega^l, so at most
-/// two levels have functions on any element). Throws InputError(file, field, problem).
+/// the level factors of each direction (seed 001 Alg. 3, largest split at the coarsest level)
+/// and nested domains admissible of class m (Omega^{l+m-1} grown by p level-l elements lies in
+/// Omega^l, so at most m levels have functions on any element). Throws InputError(file, field, problem).
 HierarchicalMesh hierarchical_mesh(const NurbsPatch& base, const HierarchicalRequest& request, const std::string& file);
 
 }  // namespace isosid::prep

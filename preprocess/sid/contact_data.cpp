@@ -1,4 +1,4 @@
-// Contact Gauss points and master patches; see contact_data.hpp.
+// Contact Gauss points; see contact_data.hpp.
 #include "sid/contact_data.hpp"
 
 #include "assemble/boundary_quadrature.hpp"
@@ -61,30 +61,6 @@ format::ContactSurface contact_surface(const BodyModel& body, const ContactSurfa
   format::ContactSurface s = contact_points(body, spec);
   s.Psi = contact_shape_rows(body, spec) * Phi_nodal;
   return s;
-}
-
-format::MasterPatch master_patch(const BodyModel& body, const std::string& name, PatchSide side, const Eigen::MatrixXd& Phi_nodal) {
-  const NurbsPatch& p = body.refined;
-  const int dim = body.dofs.dim();
-  format::MasterPatch m;
-  m.name = name;
-  for (int d = 0; d < p.param_dim(); ++d)
-    if (d != side.direction) {
-      m.degrees.push_back(p.degrees[std::size_t(d)]);
-      m.knots.push_back(p.knots[std::size_t(d)]);
-    }
-  const std::vector<int> cps = p.side_points(side);  // first tangential direction fastest
-  const auto n = Eigen::Index(cps.size());
-  m.weights.resize(n);
-  m.control_points.resize(n, dim);
-  m.Phi.resize(n * dim, Phi_nodal.cols());
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const int f = cps[std::size_t(i)], node = body.dofs.node_of(f);
-    m.weights(i) = p.weights(f);
-    m.control_points.row(i) = p.points.row(f);
-    m.Phi.middleRows(i * dim, dim) = Phi_nodal.middleRows(Eigen::Index(node) * dim, dim);
-  }
-  return m;
 }
 
 }  // namespace isosid::prep

@@ -1,6 +1,6 @@
 // Contact data of a SID: Gauss points of a boundary side (optionally a parametric interval
-// of it) with positions, outward normals, weights and reduced shape rows Psi = N Phi, and the
-// side's NURBS (master patch) with the modal rows of its control points.
+// of it) with positions, outward normals, weights and reduced shape rows Psi = N Phi. The
+// side's NURBS for closest-point projection is in master_patch.hpp.
 #pragma once
 #include "model/body_model.hpp"
 #include "isosid/format/sid.hpp"
@@ -19,9 +19,5 @@ Eigen::SparseMatrix<double> contact_shape_rows(const BodyModel& body, const Cont
 
 /// Complete contact surface: points and Psi = N Phi_nodal.
 format::ContactSurface contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal);
-
-/// The side as a NURBS of one dimension less, with the modal rows of its control points.
-format::MasterPatch master_patch(const BodyModel& body, const std::string& name, PatchSide side,
-                                 const Eigen::MatrixXd& Phi_nodal);
 
 }  // namespace isosid::prep

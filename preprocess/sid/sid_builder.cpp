@@ -6,6 +6,7 @@
 #include "isosid/version.hpp"
 #include "reduce/modal_analysis.hpp"
 #include "sid/contact_data.hpp"
+#include "sid/master_patch.hpp"
 #include "sid/node_data.hpp"
 #include "sid/sid_terms.hpp"
 #include "sid/stress_rows.hpp"
@@ -32,8 +33,7 @@ std::vector<int> interface_dofs(const BodyModel& body, std::string& description)
     xi(d) = d == side.direction ? (side.end ? body.refined.upper(d) : body.refined.lower(d)) : r.interface_center(k++);
   const Eigen::VectorXd centre = body.refined.point(xi);
   std::map<int, double> distance;
-  for (int f : body.refined.side_points(side))
-    distance[body.dofs.node_of(f)] = (body.dofs.node_points().row(body.dofs.node_of(f)).transpose() - centre).norm();
+  for (int node : side_nodes(body, side)) distance[node] = (body.dofs.node_points().row(node).transpose() - centre).norm();
   std::vector<std::pair<double, int>> ranked;
   for (auto [node, d] : distance) ranked.emplace_back(d, node);
   std::sort(ranked.begin(), ranked.end());
@@ -59,11 +59,13 @@ ReductionRequest reduction_request(const BodyModel& body) {
   return q;
 }
 
-ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system) {
+ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system, const Eigen::MatrixXd& extra) {
   const Eigen::MatrixXd rigid = admissible_rigid_fields(rigid_nodal_fields(body.dofs.node_points(), body.spec.analysis),
                                                         body.dofs.free_indices());
   const double scale = eigenvalue_scale(body.spec.material.youngs_modulus, body.spec.material.density, body_size(body));
-  return reduce(system.K, system.M, rigid, reduction_request(body), scale);
+  ReductionRequest request = reduction_request(body);
+  request.extra_vectors = extra;
+  return reduce(system.K, system.M, rigid, request, scale);
 }
 
 Eigen::MatrixXd nodal_modes(const DofMap& dofs, const Eigen::MatrixXd& Phi_free) {
@@ -117,6 +119,16 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   }
   for (const NodeSpec& n : spec.nodes) sid.nodes.push_back(node_at(body, n, Phi));
   for (const StressLineSpec& l : spec.stress_lines) sid.stress_recovery.push_back(stress_rows(body, l, Phi));
+
+  format::Discretization& mesh = sid.discretization.emplace();
+  const int levels = 1 + std::max(*std::max_element(body.space.function_level.begin(), body.space.function_level.end()),
+                                  std::max_element(body.space.elements.begin(), body.space.elements.end(),
+                                                   [](const Element& a, const Element& b) { return a.level < b.level; })->level);
+  mesh.elements_per_level = Eigen::VectorXi::Zero(levels);
+  mesh.functions_per_level = Eigen::VectorXi::Zero(levels);
+  for (const Element& e : body.space.elements) ++mesh.elements_per_level(e.level);
+  for (int l : body.space.function_level) ++mesh.functions_per_level(l);
+  mesh.free_dofs = body.dofs.free_count();
 
   sid.provenance.model_file = spec.file;
   sid.provenance.model_sha256 = std::filesystem::is_regular_file(spec.file) ? format::sha256_file(spec.file) : "";

@@ -18,7 +18,8 @@ ReductionRequest reduction_request(const BodyModel& body);
 
 /// Reduces the body as its model file asks: admissible rigid fields, the request, and the
 /// eigenvalue scale from its material and size.
-ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system);
+/// `extra` (free DOFs x k) is added to the basis the model file asks for.
+ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system, const Eigen::MatrixXd& extra = {});
 
 /// Modes on all nodal DOFs (fixed components zero), node-major.
 Eigen::MatrixXd nodal_modes(const DofMap& dofs, const Eigen::MatrixXd& Phi_free);

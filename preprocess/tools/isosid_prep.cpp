@@ -6,11 +6,13 @@
 #include "model/body_model.hpp"
 #include "reduce/modal_analysis.hpp"
 #include "sid/sid_builder.hpp"
+#include "sid/transfer.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace {
 using namespace isosid;
@@ -51,6 +53,12 @@ std::string default_output(const std::string& model) {
 
 std::vector<double> as_vector(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
 
+std::string format_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -67,10 +75,15 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 100000));
     app.add_flag("--json", as_json, "print the result as JSON");
     app.add_flag("-q,--quiet", quiet, "no progress on stderr");
+    bool coarse = false;
+    app.add_flag("--coarse", coarse,
+                 "build the coarse model of a hierarchically refined body instead: the model without its "
+                 "[refinement.hierarchical], reduced to its normal modes (what the refined SID's transfer maps from)");
     if (auto status = format::parse_command_line(app, argc, argv)) return *status;
 
     StageTimer timer(quiet);
-    const prep::ModelSpec spec = prep::read_model_file(model_file);  // instant; progress starts on valid input
+    const prep::ModelSpec spec = coarse ? prep::coarse_model_spec(prep::read_model_file(model_file))
+                                        : prep::read_model_file(model_file);  // instant; progress starts on valid input
     const prep::BodyModel body = timer.run("refine", "refining the geometry", [&] { return prep::build_body(spec); });
     const auto system = timer.run("assembly", "assembling " + std::to_string(body.space.elements.size()) + " elements, " +
                                                   std::to_string(body.dofs.free_count()) + " DOFs",
@@ -88,6 +101,25 @@ int main(int argc, char** argv) {
     j["nodes"] = body.dofs.node_count();
     j["dofs"] = body.dofs.free_count();
     j["mass_kg"] = scalar_mass.sum();
+    std::string levels_text;
+    if (body.hierarchy) {
+      const prep::Hierarchy& h = *body.hierarchy;
+      j["levels"] = nlohmann::json::array();
+      for (int l = 0; l < h.mesh.levels(); ++l) {
+        const prep::ParameterBox& d = h.mesh.domains[std::size_t(l)];
+        nlohmann::json box = nlohmann::json::array();
+        for (std::size_t k = 0; k < d.lo.size(); ++k) box.push_back({d.lo[k], d.hi[k]});
+        j["levels"].push_back({{"level", l}, {"functions", h.functions_per_level[std::size_t(l)]},
+                               {"elements", h.elements_per_level[std::size_t(l)]}, {"split", h.mesh.factors[std::size_t(l)]},
+                               {"domain", box}});
+        levels_text += "  level " + std::to_string(l) + ": " + std::to_string(h.elements_per_level[std::size_t(l)]) +
+                       " elements, " + std::to_string(h.functions_per_level[std::size_t(l)]) + " functions, split";
+        for (int f : h.mesh.factors[std::size_t(l)]) levels_text += " " + std::to_string(f);
+        levels_text += ", domain";
+        for (std::size_t k = 0; k < d.lo.size(); ++k) levels_text += " [" + format_number(d.lo[k]) + ", " + format_number(d.hi[k]) + "]";
+        levels_text += "\n";
+      }
+    }
 
     if (n_modes > 0) {
       const auto modes = timer.run("eigen", "solving for " + std::to_string(n_modes) + " modes", [&] {
@@ -105,7 +137,7 @@ int main(int argc, char** argv) {
       std::printf("%s (%s): %zu elements, degrees", spec.body_name.c_str(), format::to_string(spec.analysis).c_str(),
                   body.space.elements.size());
       for (int p : body.space.degrees) std::printf(" %d", p);
-      std::printf(", %d free DOFs, mass %.6g kg\n", body.dofs.free_count(), scalar_mass.sum());
+      std::printf(", %d free DOFs, mass %.6g kg\n%s", body.dofs.free_count(), scalar_mass.sum(), levels_text.c_str());
       std::printf("%d rigid-body modes; frequencies [Hz]:", modes.rigid_body_modes);
       for (Eigen::Index i = 0; i < f.size(); ++i) std::printf("%s%.6g", i % 6 ? "  " : "\n  ", f(i));
       std::printf("\n");
@@ -113,10 +145,25 @@ int main(int argc, char** argv) {
     }
 
     if (output.empty()) output = default_output(model_file);
+    // a hierarchical body carries its coarse model's modes, so states transfer exactly
+    std::optional<prep::CoarseModel> coarse_model;
+    std::optional<prep::NodalTransfer> nodal;
+    Eigen::MatrixXd coarse_modes;
+    if (body.hierarchy)
+      timer.run("coarse_model", "coarse model and nodal transfer", [&] {
+        coarse_model.emplace(prep::coarse_model(body));
+        nodal = prep::nodal_transfer(coarse_model->body, body);
+        coarse_modes = prep::prolongated_modes(*coarse_model, body, *nodal);
+        return 0;
+      });
     const prep::ReducedBasis basis = timer.run("reduction", spec.reduction.method + " reduction",
-                                               [&] { return prep::reduce_body(body, system); });
+                                               [&] { return prep::reduce_body(body, system, coarse_modes); });
     format::Sid sid = timer.run("sid_terms", "SID terms, contact data, nodes and stress rows",
                                 [&] { return prep::build_sid(body, system, scalar_mass, basis); });
+    if (coarse_model) {
+      sid.transfer = prep::reduced_transfer({coarse_model->body, coarse_model->system, coarse_model->basis}, {body, system, basis}, *nodal);
+      sid.transfer->coarse_model_sha256 = sid.provenance.model_sha256;  // the coarse SID comes from the same file (--coarse)
+    }
     sid.provenance.timings_s = timer.timings();
     timer.run("write", "writing " + output, [&] {
       format::write_sid(sid, output);
@@ -139,6 +186,7 @@ int main(int argc, char** argv) {
       std::printf("%s: %s reduction, nq = %lld (%d low + %d high), %d free DOFs -> %s\n", spec.body_name.c_str(),
                   basis.method.c_str(), static_cast<long long>(sid.nq()), sid.refmod.n_low, sid.refmod.n_high(),
                   body.dofs.free_count(), output.c_str());
+      std::printf("%s", levels_text.c_str());
     }
     return 0;
   });

@@ -88,6 +88,13 @@ struct TransferOperator {
   Eigen::MatrixXd fine_to_coarse;        ///< nq_coarse x nq
 };
 
+/// The isogeometric mesh the body was reduced from (informational; isosid-info reports it).
+struct Discretization {
+  Eigen::VectorXi elements_per_level;    ///< one entry per hierarchical level (one for a tensor mesh)
+  Eigen::VectorXi functions_per_level;
+  int free_dofs = 0;
+};
+
 struct Provenance {
   std::string model_file, model_sha256, program_version, created_utc;
   std::vector<std::pair<std::string, double>> timings_s;
@@ -119,6 +126,7 @@ struct Sid {
   std::vector<MasterPatch> master_patches;
   std::vector<StressRecovery> stress_recovery;
   std::optional<TransferOperator> transfer;
+  std::optional<Discretization> discretization;
   Provenance provenance;
 
   Eigen::Index nq() const { return refmod.nq(); }

@@ -1,0 +1,121 @@
+// Coarse <-> fine transfer; see transfer.hpp.
+#include "sid/transfer.hpp"
+
+#include "assemble/element_evaluator.hpp"
+#include "assemble/gauss_quadrature.hpp"
+#include "assemble/point_operator.hpp"
+#include "sid/sid_builder.hpp"
+
+#include <Eigen/LU>
+
+namespace isosid::prep {
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// Nodal rows of R at a parameter point of `body`: (function node, value) pairs.
+std::vector<std::pair<int, double>> nodal_values(const BodyModel& body, const ElementEvaluator& ev, const Eigen::VectorXd& xi) {
+  int e = -1;
+  double t[3];
+  locate(body.space, xi, e, t);
+  const Element& el = body.space.elements[std::size_t(e)];
+  PointValues v;
+  ev.evaluate(el, t, v);
+  std::vector<std::pair<int, double>> out;
+  for (std::size_t f = 0; f < el.functions.size(); ++f) out.emplace_back(body.dofs.node_of(el.functions[f]), v.R(Eigen::Index(f)));
+  return out;
+}
+
+/// Restriction of nodal fields (columns) to free DOFs.
+Eigen::MatrixXd free_rows(const DofMap& dofs, const Eigen::MatrixXd& nodal) {
+  Eigen::MatrixXd out(dofs.free_count(), nodal.cols());
+  for (int i = 0; i < dofs.total_dofs(); ++i)
+    if (const int f = dofs.free_indices()[std::size_t(i)]; f >= 0) out.row(f) = nodal.row(i);
+  return out;
+}
+
+}  // namespace
+
+NodalTransfer nodal_transfer(const BodyModel& coarse, const BodyModel& fine) {
+  const int dim = fine.dofs.dim();
+  NodalTransfer out;
+  // coarse -> fine: the prolongation of functions, read at one function of every fine node
+  // (functions merged into a node carry equal values)
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> P = fine.hierarchy->prolongation;
+  std::vector<bool> done(std::size_t(fine.dofs.node_count()), false);
+  Triplets t;
+  for (int f = 0; f < P.rows(); ++f) {
+    const int node = fine.dofs.node_of(f);
+    if (done[std::size_t(node)]) continue;
+    done[std::size_t(node)] = true;
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(P, f); it; ++it)
+      for (int a = 0; a < dim; ++a) t.emplace_back(node * dim + a, coarse.dofs.node_of(int(it.col())) * dim + a, it.value());
+  }
+  out.coarse_to_fine.resize(fine.dofs.total_dofs(), coarse.dofs.total_dofs());
+  out.coarse_to_fine.setFromTriplets(t.begin(), t.end());
+
+  // fine -> coarse: per coarse element, coefficients from the fine field at its Gauss points
+  t.clear();
+  const ElementEvaluator coarse_ev(coarse.space), fine_ev(fine.space);
+  std::vector<double> shares(std::size_t(coarse.dofs.node_count()), 0.0);
+  PointValues v;
+  const int pd = coarse.space.param_dim();
+  for (const Element& el : coarse.space.elements) {
+    const int nf = int(el.functions.size());
+    std::vector<QuadratureRule> rules;
+    for (int d = 0; d < pd; ++d) rules.push_back(gauss_legendre(coarse.space.degrees[std::size_t(d)] + 1));
+    Eigen::MatrixXd Rc(nf, nf);
+    std::vector<std::vector<std::pair<int, double>>> fine_rows;
+    for (int g = 0; g < nf; ++g) {
+      double tt[3];
+      Eigen::VectorXd xi(pd);
+      int rest = g;
+      for (int d = 0; d < pd; ++d) {
+        const int n = int(rules[std::size_t(d)].points.size());
+        tt[d] = rules[std::size_t(d)].points(rest % n);
+        rest /= n;
+        xi(d) = el.lo(d) + tt[d] * (el.hi(d) - el.lo(d));
+      }
+      coarse_ev.evaluate(el, tt, v);
+      Rc.row(g) = v.R.transpose();
+      fine_rows.push_back(nodal_values(fine, fine_ev, xi));
+    }
+    const Eigen::MatrixXd Rinv = Eigen::PartialPivLU<Eigen::MatrixXd>(Rc).inverse();  // functions x Gauss points
+    for (int f = 0; f < nf; ++f) {
+      const int node = coarse.dofs.node_of(el.functions[std::size_t(f)]);
+      shares[std::size_t(node)] += 1.0;
+      for (int g = 0; g < nf; ++g)
+        for (const auto& [fine_node, value] : fine_rows[std::size_t(g)])
+          for (int a = 0; a < dim; ++a) t.emplace_back(node * dim + a, fine_node * dim + a, Rinv(f, g) * value);
+    }
+  }
+  for (auto& x : t) x = {x.row(), x.col(), x.value() / shares[std::size_t(x.row() / dim)]};  // average over elements
+  out.fine_to_coarse.resize(coarse.dofs.total_dofs(), fine.dofs.total_dofs());
+  out.fine_to_coarse.setFromTriplets(t.begin(), t.end());
+  return out;
+}
+
+format::TransferOperator reduced_transfer(const ReducedModel& coarse, const ReducedModel& fine, const NodalTransfer& nodal) {
+  // q_to = Phi_to^T M_to u_to (Phi_to is M-orthonormal), u_to = free part of N u_from
+  auto project = [](const ReducedModel& from, const ReducedModel& to, const Eigen::SparseMatrix<double>& N) {
+    const Eigen::MatrixXd moved = free_rows(to.body.dofs, N * nodal_modes(from.body.dofs, from.basis.Phi));
+    return Eigen::MatrixXd(to.basis.Phi.transpose() * (to.system.M * moved));
+  };
+  format::TransferOperator t;
+  t.coarse_to_fine = project(coarse, fine, nodal.coarse_to_fine);
+  t.fine_to_coarse = project(fine, coarse, nodal.fine_to_coarse);
+  return t;
+}
+
+CoarseModel coarse_model(const BodyModel& fine) {
+  BodyModel body = build_body(coarse_model_spec(fine.spec));
+  SystemMatrices system = assemble_system(body.space, body.dofs, body.elasticity, body.spec.extra_quadrature_points);
+  ReducedBasis basis = reduce_body(body, system);
+  return {std::move(body), std::move(system), std::move(basis)};
+}
+
+Eigen::MatrixXd prolongated_modes(const CoarseModel& coarse, const BodyModel& fine, const NodalTransfer& nodal) {
+  return free_rows(fine.dofs, nodal.coarse_to_fine * nodal_modes(coarse.body.dofs, coarse.basis.Phi));
+}
+
+}  // namespace isosid::prep
