@@ -7,17 +7,17 @@
 
 namespace isosid::prep {
 
-DofMap::DofMap(const AnalysisSpace& space, int dim, double tolerance, const std::vector<PatchSide>& collapsed) : dim_(dim) {
+DofMap::DofMap(const AnalysisSpace& space, int dim, double tolerance, const std::vector<PatchSide>& point_sides) : dim_(dim) {
   const Eigen::MatrixXd& P = space.control_points;
   const int n = int(P.rows());
-  std::vector<bool> on_collapsed(std::size_t(n), false);
+  std::vector<bool> on_point_side(std::size_t(n), false);
   for (const Element& e : space.elements)
-    for (PatchSide side : collapsed)
+    for (PatchSide side : point_sides)
       if (space.on_side(e, side))
-        for (int f : e.functions) on_collapsed[std::size_t(f)] = true;
+        for (int f : e.functions) on_point_side[std::size_t(f)] = true;
   auto level = [&](int f) { return space.function_level.empty() ? 0 : space.function_level[std::size_t(f)]; };
   auto mergeable = [&](int f, int g) {
-    return level(f) == level(g) || (on_collapsed[std::size_t(f)] && on_collapsed[std::size_t(g)]);
+    return level(f) == level(g) || (on_point_side[std::size_t(f)] && on_point_side[std::size_t(g)]);
   };
   // sort by the first coordinate, then compare points whose first coordinates are close
   std::vector<int> order(static_cast<std::size_t>(n));

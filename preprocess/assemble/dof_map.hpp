@@ -12,9 +12,10 @@ class DofMap {
 public:
   /// Merges functions whose control points lie within `tolerance` of each other: within a
   /// hierarchical level always, across levels only if both functions live on one of the
-  /// `collapsed` sides (elsewhere a coarse and a fine function may share a control point by
-  /// accident, e.g. at Greville points of odd degree, and must stay apart).
-  DofMap(const AnalysisSpace& space, int dim, double tolerance, const std::vector<PatchSide>& collapsed = {});
+  /// `point_sides` (sides collapsed to a point, where every function's trace is one value).
+  /// Elsewhere a coarse and a fine function may share a control point by accident, e.g. at
+  /// Greville points of odd degree, and must stay apart.
+  DofMap(const AnalysisSpace& space, int dim, double tolerance, const std::vector<PatchSide>& point_sides = {});
 
   int dim() const { return dim_; }
   int node_count() const { return int(node_points_.rows()); }

@@ -3,7 +3,6 @@
 
 #include "isosid/format/error.hpp"
 
-#include <Eigen/SVD>
 #include <cmath>
 
 namespace isosid::prep {
@@ -115,14 +114,28 @@ std::vector<int> NurbsPatch::side_points(PatchSide side) const {
   return out;
 }
 
-bool NurbsPatch::is_collapsed(PatchSide side) const {
-  const std::vector<int> cps = side_points(side);
-  Eigen::MatrixXd X(Eigen::Index(cps.size()), phys_dim());
-  for (std::size_t i = 0; i < cps.size(); ++i) X.row(Eigen::Index(i)) = points.row(cps[i]);
-  X.rowwise() -= X.colwise().mean();
-  const double size = (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
-  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(X).singularValues();
-  return (sv.array() > 1e-9 * size).count() < param_dim() - 1;
+std::vector<int> NurbsPatch::collapsed_directions(PatchSide side) const {
+  const std::vector<int> n = counts();
+  const double tol = 1e-10 * (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
+  std::vector<int> out;
+  for (int d = 0; d < param_dim(); ++d) {
+    if (d == side.direction) continue;
+    bool collapsed = true;
+    for (int i = 0; i < count() && collapsed; ++i) {
+      std::vector<int> ijk(n.size());
+      int rest = i;
+      for (std::size_t k = 0; k < n.size(); ++k) {
+        ijk[k] = rest % n[k];
+        rest /= n[k];
+      }
+      if (ijk[std::size_t(side.direction)] != (side.end == 0 ? 0 : n[std::size_t(side.direction)] - 1) || ijk[std::size_t(d)] == 0) continue;
+      std::vector<int> first = ijk;
+      first[std::size_t(d)] = 0;
+      collapsed = (points.row(i) - points.row(flat_index(n, first))).norm() <= tol;
+    }
+    if (collapsed) out.push_back(d);
+  }
+  return out;
 }
 
 void validate_patch(const NurbsPatch& patch, const std::string& file, const std::string& field) {

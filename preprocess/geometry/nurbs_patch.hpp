@@ -57,9 +57,9 @@ struct NurbsPatch {
   Eigen::VectorXd greville(int i) const;
   /// Flat indices of the control points on a side.
   std::vector<int> side_points(PatchSide side) const;
-  /// True if the side collapses (to a point or, for a volume, a curve): its control points
-  /// span fewer than param_dim - 1 dimensions.
-  bool is_collapsed(PatchSide side) const;
+  /// Tangential directions along which the side's control points coincide: the side
+  /// collapses along them (all of them: to a point; e.g. the axis of a revolved solid: one).
+  std::vector<int> collapsed_directions(PatchSide side) const;
 };
 
 /// Flat index of the multi-index `ijk` (first direction fastest).

@@ -66,11 +66,11 @@ BodyModel build_body(const ModelSpec& spec) {
   }
   const double size = patch_size(refined);
   const int dim = format::spatial_dim(spec.analysis);
-  std::vector<PatchSide> collapsed;
+  std::vector<PatchSide> point_sides;
   for (int d = 0; d < refined.param_dim(); ++d)
     for (int end = 0; end < 2; ++end)
-      if (refined.is_collapsed({d, end})) collapsed.push_back({d, end});
-  DofMap dofs(space, dim, 1e-10 * size, collapsed);
+      if (int(refined.collapsed_directions({d, end}).size()) == refined.param_dim() - 1) point_sides.push_back({d, end});
+  DofMap dofs(space, dim, 1e-10 * size, point_sides);
   BodyModel body{spec, std::move(refined), std::move(space), std::move(hierarchy),
                  Elasticity(spec.analysis, spec.material, spec.thickness), std::move(dofs)};
   if (spec.analysis == format::AnalysisType::Axisymmetric)  // radial displacement vanishes on the axis

@@ -147,6 +147,21 @@ HierarchicalMesh hierarchical_mesh(const NurbsPatch& base, const HierarchicalReq
   HierarchicalMesh m = HierarchicalMesh::single_level(base);
   const int pd = base.param_dim();
   const ParameterBox box = request_box(base, r, file);
+  // on a side collapsed along some but not all directions (the axis of a revolved solid) a
+  // node gathers the functions of one level only, so a box touching it must cover the
+  // collapsed directions whole (then truncation keeps every level's trace single-valued)
+  for (int d = 0; d < pd; ++d)
+    for (int end = 0; end < 2; ++end) {
+      const double bound = end ? base.upper(d) : base.lower(d);
+      if (std::abs((end ? box.hi : box.lo)[std::size_t(d)] - bound) > 1e-12 * (base.upper(d) - base.lower(d))) continue;
+      const std::vector<int> collapsed = base.collapsed_directions({d, end});
+      if (int(collapsed.size()) == pd - 1) continue;  // collapsed to a point: nodes merge across levels
+      for (int c : collapsed)
+        if (box.lo[std::size_t(c)] > base.lower(c) || box.hi[std::size_t(c)] < base.upper(c))
+          throw format::InputError(file, std::string(kField) + (r.box.empty() ? ".width" : ".box"),
+                                   std::string("touches side ") + side_name({d, end}) + ", which collapses along " +
+                                       kDirections[c] + ", so it must span " + kDirections[c] + " whole");
+    }
 
   // factors per direction (Alg. 3), padded with 1 at the coarse end to a common level count
   std::vector<std::vector<int>> factors(static_cast<std::size_t>(pd));
@@ -157,7 +172,8 @@ HierarchicalMesh hierarchical_mesh(const NurbsPatch& base, const HierarchicalReq
     const double ratio = longest_span(base.knots[std::size_t(d)], box.lo[std::size_t(d)], box.hi[std::size_t(d)]) / finest;
     if (ratio > 1e7)
       throw format::InputError(file, std::string(kField) + (r.smallest > 0 ? ".smallest" : ".elements_across"),
-                               std::string("asks for a subdivision by ") + std::to_string(ratio) + " along " + kDirections[d]);
+                               std::string("asks for a subdivision by ") + std::to_string(std::llround(ratio)) + " along " +
+                                   kDirections[d] + "; refine the coarse model or ask for larger elements");
     try {
       factors[std::size_t(d)] = level_factors(int(std::ceil(ratio - 1e-9)), r.limits);
     } catch (const std::invalid_argument& e) {

@@ -68,3 +68,19 @@ TEST_CASE("3D ball: mass and inertia tensor", "[mass]") {
   const Eigen::Matrix3d expected = 0.4 * m * r * r * Eigen::Matrix3d::Identity();
   CHECK((I.inertia() - expected).norm() < 1e-10 * expected.norm());
 }
+
+TEST_CASE("hierarchical models keep the mass and inertia of their coarse models", "[mass][thb]") {
+  // the geometry map is the coarse NURBS exactly, so every body integral is the same up to
+  // quadrature (rational integrands on different elements: 1e-10 with 4 extra points)
+  for (const char* name : {"sphere_axisym_thb.model.toml", "ball_3d_thb.model.toml"}) {
+    INFO(name);
+    const auto spec = model(name);
+    const auto fine = prep::build_body(spec);
+    const auto coarse = prep::build_body(prep::coarse_model_spec(spec));
+    REQUIRE(fine.hierarchy);
+    const auto a = integrals(coarse, 4), b = integrals(fine, 4);
+    CHECK(b.mass == Approx(a.mass).epsilon(1e-10));
+    CHECK((b.first_moment - a.first_moment).norm() < 1e-10 * a.mass * prep::body_size(coarse));
+    CHECK((b.inertia() - a.inertia()).norm() < 1e-10 * a.inertia().norm());
+  }
+}

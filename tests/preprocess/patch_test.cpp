@@ -152,3 +152,20 @@ TEST_CASE("patch test on polynomially distorted patches with the default Gauss r
   CHECK(n3 < 1e-10);
   CHECK(s3 < 1e-10);
 }
+
+TEST_CASE("patch test on a three-level THB mesh of a distorted rational patch", "[assemble][patch][thb]") {
+  auto ref = test::uniform({3, 2}, {1, 1});
+  prep::HierarchicalRequest h;
+  h.box = {{0.3, 0.6}, {0.25, 0.75}};
+  h.elements_across = 8;
+  ref.hierarchical = h;
+  const auto patch = distort(refined(prep::primitives::rectangle(2.0, 1.0), {3, 2}, 3), 0.04, 5);
+  const auto body = prep::build_body(test::spec_for(patch, AnalysisType::PlaneStress, 2e11, 0.3, 7800, ref));
+  REQUIRE(body.hierarchy->mesh.levels() >= 3);
+  auto field = [](const Eigen::VectorXd& x) {
+    return Eigen::Vector2d(1e-4 + 1e-3 * x(0) + 2e-4 * x(1), -2e-4 - 5e-4 * x(0) + 3e-4 * x(1));
+  };
+  const auto [nodal, strain] = run_patch_test(body, field, Eigen::Vector3d(1e-3, 3e-4, -3e-4), kRationalExtraPoints);
+  CHECK(nodal < 1e-10);
+  CHECK(strain < 1e-10);
+}
