@@ -10,6 +10,7 @@
 #include "reduce/modal_analysis.hpp"
 #include "refine/level_factors.hpp"
 #include "sid/sid_builder.hpp"
+#include "sid/master_patch.hpp"
 #include "sid/transfer.hpp"
 #include "preprocess/body_fixtures.hpp"
 
@@ -231,5 +232,45 @@ TEST_CASE("coarse -> refined -> coarse returns the state, nodal and reduced, and
   for (Eigen::Index k = 0; k < T.coarse_to_fine.cols(); ++k) {
     const double coarse_energy = coarse.basis.omega2(k), fine_energy = T.coarse_to_fine.col(k).dot(Kf * T.coarse_to_fine.col(k));
     CHECK(fine_energy == Approx(coarse_energy).epsilon(1e-3));
+  }
+}
+
+TEST_CASE("the master patch of a hierarchical side reproduces the body's displacement on it", "[thb]") {
+  // the side's THB space lies in the tensor space of all its element boundaries; knot
+  // insertion (geometry) and collocation (mode rows) are exact, up to the collocation solve
+  const auto b = prep::build_body(model("sphere_axisym_thb.model.toml"));
+  const prep::PatchSide side = *b.refined.side("lower");
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<double> u(-1, 1), t01(0, 1);
+  Eigen::MatrixXd Phi(b.dofs.total_dofs(), 3);
+  for (Eigen::Index i = 0; i < Phi.size(); ++i) Phi(i) = u(gen);
+  const format::MasterPatch m = prep::master_patch(b, "contact", side, Phi);
+  REQUIRE(m.knots[0].size() > b.refined.knots[0].size());  // the fine knots were inserted
+  const prep::ElementEvaluator ev(b.space);
+  for (int k = 0; k < 200; ++k) {
+    const double xi = t01(gen);
+    // the master curve with the displacement of mode c (and the position) as its "points"
+    prep::NurbsPatch curve;
+    curve.degrees = m.degrees;
+    curve.knots = m.knots;
+    curve.weights = m.weights;
+    curve.points.resize(m.weights.size(), 2 + 2 * 3);
+    curve.points.leftCols(2) = m.control_points;
+    for (Eigen::Index i = 0; i < m.weights.size(); ++i)
+      for (int c = 0; c < 3; ++c) curve.points.block(i, 2 + 2 * c, 1, 2) = m.Phi.block(2 * i, c, 2, 1).transpose();
+    const Eigen::VectorXd on_curve = curve.point(Eigen::VectorXd::Constant(1, xi));
+    int e = -1;
+    double t[3];
+    REQUIRE(prep::locate(b.space, Eigen::Vector2d(xi, 0.0), e, t));
+    prep::PointValues v;
+    ev.evaluate(b.space.elements[std::size_t(e)], t, v);
+    CHECK((on_curve.head(2) - v.x).norm() < 1e-12 * 0.01);
+    for (int c = 0; c < 3; ++c) {
+      Eigen::Vector2d d = Eigen::Vector2d::Zero();
+      const auto& el = b.space.elements[std::size_t(e)];
+      for (std::size_t f = 0; f < el.functions.size(); ++f)
+        d += v.R(Eigen::Index(f)) * Phi.block(b.dofs.node_of(el.functions[f]) * 2, c, 2, 1);
+      CHECK((on_curve.segment(2 + 2 * c, 2) - d).norm() < 1e-10);
+    }
   }
 }
