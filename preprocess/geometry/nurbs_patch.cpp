@@ -11,6 +11,8 @@ namespace {
 const char* kDirectionNames[3] = {"xi", "eta", "zeta"};
 }
 
+const char* direction_name(int d) { return kDirectionNames[d]; }
+
 std::string side_name(PatchSide side) {
   return std::string(kDirectionNames[side.direction]) + std::to_string(side.end);
 }

@@ -27,6 +27,9 @@ struct PatchSide {
   bool operator==(const PatchSide&) const = default;
 };
 
+/// Name of parametric direction d: xi, eta, zeta.
+const char* direction_name(int d);
+
 /// Canonical side names: xi0, xi1, eta0, eta1, zeta0, zeta1.
 std::string side_name(PatchSide side);
 std::optional<PatchSide> side_from_name(const std::string& name, int param_dim);

@@ -11,13 +11,12 @@ namespace {
 
 using format::TomlView;
 
-const char* kDirections[3] = {"xi", "eta", "zeta"};
 const char* kComponents[3] = {"x", "y", "z"};
 
 int direction_index(const TomlView& t, const std::string& key, int param_dim) {
   const std::string name = t.string(key);
   for (int d = 0; d < param_dim; ++d)
-    if (name == kDirections[d]) return d;
+    if (name == direction_name(d)) return d;
   t.fail(key, "unknown direction '" + name + "' (use xi, eta" + (param_dim == 3 ? ", zeta)" : ")"));
 }
 
@@ -110,9 +109,9 @@ HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch
     for (int d = 0; d < pd; ++d) {
       const auto& b = rows[std::size_t(d)];
       if (b.size() != 2) h.fail("box", "each entry must be [lo, hi]");
-      if (!(b[0] < b[1])) h.fail("box", std::string("zero or negative width along ") + kDirections[d]);
+      if (!(b[0] < b[1])) h.fail("box", std::string("zero or negative width along ") + direction_name(d));
       if (b[0] < patch.lower(d) || b[1] > patch.upper(d))
-        h.fail("box", std::string("outside the parameter range of ") + kDirections[d]);
+        h.fail("box", std::string("outside the parameter range of ") + direction_name(d));
       q.box.push_back({b[0], b[1]});
     }
     if (h.has("width")) h.fail("width", "only with a point");
@@ -121,7 +120,7 @@ HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch
     if (int(q.point.size()) != pd) h.fail("point", "needs " + std::to_string(pd) + " parameters");
     for (int d = 0; d < pd; ++d)
       if (q.point[std::size_t(d)] < patch.lower(d) || q.point[std::size_t(d)] > patch.upper(d))
-        h.fail("point", std::string("outside the parameter range of ") + kDirections[d]);
+        h.fail("point", std::string("outside the parameter range of ") + direction_name(d));
     q.width = h.positive("width");
   }
   if (h.has("smallest") && h.has("elements_across")) h.fail("smallest", "give smallest or elements_across, not both");
@@ -149,7 +148,7 @@ RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch) {
     if (int(spec.degrees.size()) != pd) r.fail("degrees", "needs " + std::to_string(pd) + " entries");
     for (int d = 0; d < pd; ++d) {
       if (spec.degrees[std::size_t(d)] < patch.degrees[std::size_t(d)])
-        r.fail("degrees", "cannot lower the degree of " + std::string(kDirections[d]) + " below " +
+        r.fail("degrees", "cannot lower the degree of " + std::string(direction_name(d)) + " below " +
                               std::to_string(patch.degrees[std::size_t(d)]));
       if (spec.degrees[std::size_t(d)] > 8) r.fail("degrees", "degree above 8 is not supported");
     }
@@ -167,7 +166,7 @@ RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch) {
     q.direction = direction_index(g, "direction", pd);
     q.toward = g.number("toward");
     if (q.toward < patch.lower(q.direction) || q.toward > patch.upper(q.direction))
-      g.fail("toward", "outside the parameter range of " + std::string(kDirections[q.direction]));
+      g.fail("toward", "outside the parameter range of " + std::string(direction_name(q.direction)));
     q.smallest = g.positive("smallest");
     q.growth = g.number("growth", 1.3);
     if (q.growth <= 1.0 || q.growth > 3.0) g.fail("growth", "must lie in (1, 3]");

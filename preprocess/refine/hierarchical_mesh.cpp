@@ -11,7 +11,6 @@ namespace isosid::prep {
 namespace {
 
 constexpr const char* kField = "refinement.hierarchical";
-const char* kDirections[3] = {"xi", "eta", "zeta"};
 
 double tolerance(const ParameterBox& b, std::size_t d) { return 1e-12 * (1.0 + std::abs(b.hi[d] - b.lo[d])); }
 
@@ -63,7 +62,7 @@ ParameterBox request_box(const NurbsPatch& base, const HierarchicalRequest& r, c
     const double speed = std::max(chord(base, r.point, d, t), chord(base, r.point, d, s)) / step;
     if (speed < 1e-9 * size / range)
       throw format::InputError(file, std::string(kField) + ".point",
-                               std::string("the parametrization collapses at the point along ") + kDirections[d] +
+                               std::string("the parametrization collapses at the point along ") + direction_name(d) +
                                    ", so a physical width cannot be measured there; give a parameter box");
     box.lo.push_back(walk(base, r.point, d, 0.5 * r.width, base.lower(d)));
     box.hi.push_back(walk(base, r.point, d, 0.5 * r.width, base.upper(d)));
@@ -160,7 +159,7 @@ HierarchicalMesh hierarchical_mesh(const NurbsPatch& base, const HierarchicalReq
         if (box.lo[std::size_t(c)] > base.lower(c) || box.hi[std::size_t(c)] < base.upper(c))
           throw format::InputError(file, std::string(kField) + (r.box.empty() ? ".width" : ".box"),
                                    std::string("touches side ") + side_name({d, end}) + ", which collapses along " +
-                                       kDirections[c] + ", so it must span " + kDirections[c] + " whole");
+                                       direction_name(c) + ", so it must span " + direction_name(c) + " whole");
     }
 
   // factors per direction (Alg. 3), padded with 1 at the coarse end to a common level count
@@ -173,11 +172,11 @@ HierarchicalMesh hierarchical_mesh(const NurbsPatch& base, const HierarchicalReq
     if (ratio > 1e7)
       throw format::InputError(file, std::string(kField) + (r.smallest > 0 ? ".smallest" : ".elements_across"),
                                std::string("asks for a subdivision by ") + std::to_string(std::llround(ratio)) + " along " +
-                                   kDirections[d] + "; refine the coarse model or ask for larger elements");
+                                   direction_name(d) + "; refine the coarse model or ask for larger elements");
     try {
       factors[std::size_t(d)] = level_factors(int(std::ceil(ratio - 1e-9)), r.limits);
     } catch (const std::invalid_argument& e) {
-      throw format::InputError(file, kField, std::string(kDirections[d]) + ": " + e.what());
+      throw format::InputError(file, kField, std::string(direction_name(d)) + ": " + e.what());
     }
     refined_levels = std::max(refined_levels, factors[std::size_t(d)].size());
   }
