@@ -38,6 +38,14 @@ bool locate(const AnalysisSpace& space, const Eigen::VectorXd& xi, int& element,
   return false;
 }
 
+std::optional<PointOperator> point_operator_at(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
+                                               const Eigen::VectorXd& xi) {
+  int e = 0;
+  double t[3] = {0, 0, 0};
+  if (!locate(space, xi, e, t)) return std::nullopt;
+  return point_operator(space, dofs, elasticity, space.elements[std::size_t(e)], t);
+}
+
 Eigen::MatrixXd PointOperator::gather(const Eigen::MatrixXd& nodal) const {
   const Eigen::Index dim = N.rows();
   Eigen::MatrixXd local(N.cols(), nodal.cols());

@@ -6,6 +6,7 @@
 #include "assemble/dof_map.hpp"
 #include "assemble/elasticity.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace isosid::prep {
@@ -33,6 +34,10 @@ PointOperator point_operator(const AnalysisSpace& space, const DofMap& dofs, con
 /// The element containing patch parameter xi and the reference coordinates of xi in it;
 /// returns false if xi lies outside the patch.
 bool locate(const AnalysisSpace& space, const Eigen::VectorXd& xi, int& element, double* t);
+
+/// The point operator at patch parameter xi (locate, then point_operator); empty outside the patch.
+std::optional<PointOperator> point_operator_at(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
+                                               const Eigen::VectorXd& xi);
 
 /// Expands a solution on the free DOFs to all nodal DOFs (fixed components get `fixed_values`
 /// if given, else zero).

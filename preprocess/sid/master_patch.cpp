@@ -1,7 +1,6 @@
 // Master patches of body sides; see master_patch.hpp.
 #include "sid/master_patch.hpp"
 
-#include "assemble/element_evaluator.hpp"
 #include "assemble/point_operator.hpp"
 #include "refine/patch_refinement.hpp"
 
@@ -33,7 +32,7 @@ std::vector<double> missing_knots(const BodyModel& body, PatchSide side, int d) 
 void tensor_apply(const std::vector<Eigen::MatrixXd>& A, Eigen::MatrixXd& V, bool inverse) {
   Eigen::Index stride = 1;
   for (const Eigen::MatrixXd& a : A) {
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu = inverse ? Eigen::PartialPivLU<Eigen::MatrixXd>(a) : Eigen::PartialPivLU<Eigen::MatrixXd>();
     const Eigen::Index n = a.rows(), outer = V.rows() / (stride * n);
     Eigen::MatrixXd line(n, V.cols());
     for (Eigen::Index o = 0; o < outer; ++o)
@@ -100,8 +99,6 @@ format::MasterPatch master_patch(const BodyModel& body, const std::string& name,
     g.push_back(std::move(gd));
   }
   // mode shapes at the points from the body's own (THB) functions
-  const ElementEvaluator evaluator(body.space);
-  PointValues v;
   Eigen::MatrixXd V(n * dim, Phi_nodal.cols());
   Eigen::VectorXd xi(p.param_dim());
   xi(side.direction) = side.end ? p.upper(side.direction) : p.lower(side.direction);
@@ -112,14 +109,8 @@ format::MasterPatch master_patch(const BodyModel& body, const std::string& name,
       xi(tangential[t]) = g[t][std::size_t(rest % count)];
       rest /= count;
     }
-    int e = -1;
-    double t[3];
-    locate(body.space, xi, e, t);
-    const Element& el = body.space.elements[std::size_t(e)];
-    evaluator.evaluate(el, t, v);
-    V.middleRows(k * dim, dim).setZero();
-    for (std::size_t f = 0; f < el.functions.size(); ++f)
-      V.middleRows(k * dim, dim) += v.R(Eigen::Index(f)) * Phi_nodal.middleRows(Eigen::Index(body.dofs.node_of(el.functions[f])) * dim, dim);
+    const PointOperator op = *point_operator_at(body.space, body.dofs, body.elasticity, xi);  // xi lies on the side
+    V.middleRows(k * dim, dim) = op.N * op.gather(Phi_nodal);
   }
   // w(g) u(g) = sum_m N_m(g) (W_m D_m): scale by the weight function, solve, unscale
   Eigen::MatrixXd w = m.weights;

@@ -8,11 +8,9 @@
 namespace isosid::prep {
 
 format::Node node_at(const BodyModel& body, const NodeSpec& spec, const Eigen::MatrixXd& Phi_nodal) {
-  int e = 0;
-  double t[3] = {0, 0, 0};
-  if (!locate(body.space, spec.parameter, e, t))
-    throw format::InputError(body.spec.file, "node " + spec.name, "parameter outside the patch");
-  const PointOperator op = point_operator(body.space, body.dofs, body.elasticity, body.space.elements[std::size_t(e)], t);
+  const auto at = point_operator_at(body.space, body.dofs, body.elasticity, spec.parameter);
+  if (!at) throw format::InputError(body.spec.file, "node " + spec.name, "parameter outside the patch");
+  const PointOperator& op = *at;
   const int dim = body.dofs.dim();
   const Eigen::Index nq = Phi_nodal.cols();
   // local modal matrices: rows f*dim + a

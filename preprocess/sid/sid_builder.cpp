@@ -121,13 +121,9 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   for (const StressLineSpec& l : spec.stress_lines) sid.stress_recovery.push_back(stress_rows(body, l, Phi));
 
   format::Discretization& mesh = sid.discretization.emplace();
-  const int levels = 1 + std::max(*std::max_element(body.space.function_level.begin(), body.space.function_level.end()),
-                                  std::max_element(body.space.elements.begin(), body.space.elements.end(),
-                                                   [](const Element& a, const Element& b) { return a.level < b.level; })->level);
-  mesh.elements_per_level = Eigen::VectorXi::Zero(levels);
-  mesh.functions_per_level = Eigen::VectorXi::Zero(levels);
-  for (const Element& e : body.space.elements) ++mesh.elements_per_level(e.level);
-  for (int l : body.space.function_level) ++mesh.functions_per_level(l);
+  auto as_vector = [](const std::vector<int>& v) { return Eigen::VectorXi(Eigen::Map<const Eigen::VectorXi>(v.data(), Eigen::Index(v.size()))); };
+  mesh.elements_per_level = body.hierarchy ? as_vector(body.hierarchy->elements_per_level) : Eigen::VectorXi::Constant(1, int(body.space.elements.size()));
+  mesh.functions_per_level = body.hierarchy ? as_vector(body.hierarchy->functions_per_level) : Eigen::VectorXi::Constant(1, body.space.n_functions());
   mesh.free_dofs = body.dofs.free_count();
 
   sid.provenance.model_file = spec.file;

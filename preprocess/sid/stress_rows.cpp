@@ -18,11 +18,9 @@ format::StressRecovery stress_rows(const BodyModel& body, const StressLineSpec& 
   for (int i = 0; i < spec.points; ++i) {
     const double u = spec.points == 1 ? 0.0 : double(i) / (spec.points - 1);
     const Eigen::VectorXd xi = spec.from + u * (spec.to - spec.from);
-    int e = 0;
-    double t[3] = {0, 0, 0};
-    if (!locate(body.space, xi, e, t))
-      throw format::InputError(body.spec.file, "stress_line " + spec.name, "point outside the patch");
-    const PointOperator op = point_operator(body.space, body.dofs, body.elasticity, body.space.elements[std::size_t(e)], t);
+    const auto at = point_operator_at(body.space, body.dofs, body.elasticity, xi);
+    if (!at) throw format::InputError(body.spec.file, "stress_line " + spec.name, "point outside the patch");
+    const PointOperator& op = *at;
     const Eigen::MatrixXd local = op.gather(Phi_nodal);
     s.position.row(i) = op.x.transpose();
     s.S.middleRows(i * nc, nc) = body.elasticity.D() * op.B * local;

@@ -1,7 +1,6 @@
 // Coarse <-> fine transfer; see transfer.hpp.
 #include "sid/transfer.hpp"
 
-#include "assemble/element_evaluator.hpp"
 #include "assemble/gauss_quadrature.hpp"
 #include "assemble/point_operator.hpp"
 #include "sid/sid_builder.hpp"
@@ -12,19 +11,6 @@ namespace isosid::prep {
 namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
-
-/// Nodal rows of R at a parameter point of `body`: (function node, value) pairs.
-std::vector<std::pair<int, double>> nodal_values(const BodyModel& body, const ElementEvaluator& ev, const Eigen::VectorXd& xi) {
-  int e = -1;
-  double t[3];
-  locate(body.space, xi, e, t);
-  const Element& el = body.space.elements[std::size_t(e)];
-  PointValues v;
-  ev.evaluate(el, t, v);
-  std::vector<std::pair<int, double>> out;
-  for (std::size_t f = 0; f < el.functions.size(); ++f) out.emplace_back(body.dofs.node_of(el.functions[f]), v.R(Eigen::Index(f)));
-  return out;
-}
 
 /// Restriction of nodal fields (columns) to free DOFs.
 Eigen::MatrixXd free_rows(const DofMap& dofs, const Eigen::MatrixXd& nodal) {
@@ -56,16 +42,14 @@ NodalTransfer nodal_transfer(const BodyModel& coarse, const BodyModel& fine) {
 
   // fine -> coarse: per coarse element, coefficients from the fine field at its Gauss points
   t.clear();
-  const ElementEvaluator coarse_ev(coarse.space), fine_ev(fine.space);
   std::vector<double> shares(std::size_t(coarse.dofs.node_count()), 0.0);
-  PointValues v;
   const int pd = coarse.space.param_dim();
+  std::vector<QuadratureRule> rules;
+  for (int d = 0; d < pd; ++d) rules.push_back(gauss_legendre(coarse.space.degrees[std::size_t(d)] + 1));
   for (const Element& el : coarse.space.elements) {
     const int nf = int(el.functions.size());
-    std::vector<QuadratureRule> rules;
-    for (int d = 0; d < pd; ++d) rules.push_back(gauss_legendre(coarse.space.degrees[std::size_t(d)] + 1));
     Eigen::MatrixXd Rc(nf, nf);
-    std::vector<std::vector<std::pair<int, double>>> fine_rows;
+    std::vector<PointOperator> at_fine;
     for (int g = 0; g < nf; ++g) {
       double tt[3];
       Eigen::VectorXd xi(pd);
@@ -76,17 +60,18 @@ NodalTransfer nodal_transfer(const BodyModel& coarse, const BodyModel& fine) {
         rest /= n;
         xi(d) = el.lo(d) + tt[d] * (el.hi(d) - el.lo(d));
       }
-      coarse_ev.evaluate(el, tt, v);
-      Rc.row(g) = v.R.transpose();
-      fine_rows.push_back(nodal_values(fine, fine_ev, xi));
+      Rc.row(g) = point_operator(coarse.space, coarse.dofs, coarse.elasticity, el, tt).R.transpose();
+      at_fine.push_back(*point_operator_at(fine.space, fine.dofs, fine.elasticity, xi));  // inside: same patch
     }
     const Eigen::MatrixXd Rinv = Eigen::PartialPivLU<Eigen::MatrixXd>(Rc).inverse();  // functions x Gauss points
     for (int f = 0; f < nf; ++f) {
       const int node = coarse.dofs.node_of(el.functions[std::size_t(f)]);
       shares[std::size_t(node)] += 1.0;
-      for (int g = 0; g < nf; ++g)
-        for (const auto& [fine_node, value] : fine_rows[std::size_t(g)])
-          for (int a = 0; a < dim; ++a) t.emplace_back(node * dim + a, fine_node * dim + a, Rinv(f, g) * value);
+      for (int g = 0; g < nf; ++g) {
+        const PointOperator& op = at_fine[std::size_t(g)];
+        for (std::size_t k = 0; k < op.nodes.size(); ++k)
+          for (int a = 0; a < dim; ++a) t.emplace_back(node * dim + a, op.nodes[k] * dim + a, Rinv(f, g) * op.R(Eigen::Index(k)));
+      }
     }
   }
   for (auto& x : t) x = {x.row(), x.col(), x.value() / shares[std::size_t(x.row() / dim)]};  // average over elements
