@@ -57,6 +57,9 @@ knots = [[0, 0, 0, 1, 1, 1], [0, 0, 1, 1]]
 control_points = [[0, 0], [0.5, 0], [1, 0], [0, 1], [0.5, 1], [1, 1]]
 weights = [1, 1, 1, 1, 1, 1]
 )";
+/// A model text with a [refinement.hierarchical] table of the given lines appended.
+std::string hierarchical(const std::string& model, const std::string& lines) { return model + "[refinement.hierarchical]\n" + lines; }
+
 const std::string kHalfDisk = R"(
 [body]
 name = "sphere"
@@ -128,23 +131,23 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
       {replace(kPatch, "degrees = [2, 1]", "degrees = [3, 1]"), "degree 3 too high for 6 knots"},
       {replace(kPatch, "weights = [1, 1, 1, 1, 1, 1]", "weights = [1, 1, 1, 1, 1]"), "weights: 5 weights, expected 6"},
       // hierarchical refinement: degenerate requests
-      {kValid + std::string("[refinement.hierarchical]\nbox = [[0.5, 1.2], [0.0, 1.0]]\n"),
+      {hierarchical(kValid, "box = [[0.5, 1.2], [0.0, 1.0]]\n"),
        "refinement.hierarchical.box: outside the parameter range of xi"},
-      {kValid + std::string("[refinement.hierarchical]\nbox = [[0.5, 0.5], [0.0, 1.0]]\n"),
+      {hierarchical(kValid, "box = [[0.5, 0.5], [0.0, 1.0]]\n"),
        "refinement.hierarchical.box: zero or negative width along xi"},
-      {kValid + std::string("[refinement.hierarchical]\npoint = [0.5, 0.5]\nwidth = 0.0\n"),
+      {hierarchical(kValid, "point = [0.5, 0.5]\nwidth = 0.0\n"),
        "refinement.hierarchical.width: must be positive"},
-      {kValid + std::string("[refinement.hierarchical]\nbox = [[0.5, 0.6], [0.0, 1.0]]\nmax_levels = 6\n"),
+      {hierarchical(kValid, "box = [[0.5, 0.6], [0.0, 1.0]]\nmax_levels = 6\n"),
        "refinement.hierarchical.max_levels: must lie in 2..5"},
-      {kValid + std::string("[refinement.hierarchical]\nbox = [[0.5, 0.6], [0.0, 1.0]]\nsmallest = 1e-7\n"),
+      {hierarchical(kValid, "box = [[0.5, 0.6], [0.0, 1.0]]\nsmallest = 1e-7\n"),
        "needs more than 5 levels"},
-      {kValid + std::string("[refinement.hierarchical]\nbox = [[0.5, 0.6], [0.0, 1.0]]\nsmallest = 1e-12\n"),
+      {hierarchical(kValid, "box = [[0.5, 0.6], [0.0, 1.0]]\nsmallest = 1e-12\n"),
        "refinement.hierarchical.smallest: asks for a subdivision by"},
-      {kValid + std::string("[refinement.hierarchical]\nbox = [[0.5, 0.6], [0.0, 1.0]]\nwidth = 1e-3\n"),
+      {hierarchical(kValid, "box = [[0.5, 0.6], [0.0, 1.0]]\nwidth = 1e-3\n"),
        "refinement.hierarchical.width: only with a point"},
-      {kHalfDisk + std::string("[refinement.hierarchical]\npoint = [1.0, 0.5]\nwidth = 1e-3\n"),
+      {hierarchical(kHalfDisk, "point = [1.0, 0.5]\nwidth = 1e-3\n"),
        "refinement.hierarchical.point: the parametrization collapses at the point along eta"},
-      {kBall + std::string("[refinement.hierarchical]\nbox = [[0.0, 0.1], [0.0, 0.1], [0.0, 0.5]]\nsmallest = 1e-3\n"),
+      {hierarchical(kBall, "box = [[0.0, 0.1], [0.0, 0.1], [0.0, 0.5]]\nsmallest = 1e-3\n"),
        "refinement.hierarchical.box: touches side xi0, which collapses along zeta, so it must span zeta whole"},
   };
   for (const Case& c : cases) {

@@ -19,6 +19,16 @@ using test::run_seed_scene;
 namespace {
 const std::string kGolden = ISOSID_GOLDEN_DIR;
 
+/// Each reference value of `other` lies within `tolerance` (relative) of `reference`'s.
+void check_agree(const json& reference, const json& other, std::initializer_list<const char*> keys, double tolerance,
+                 const char* reference_name, const char* other_name) {
+  for (const char* key : keys) {
+    const double a = reference["reference"][key]["value"].get<double>(), b = other["reference"][key]["value"].get<double>();
+    INFO(key << ": " << reference_name << " " << a << ", " << other_name << " " << b);
+    CHECK(std::abs(a - b) <= tolerance * std::abs(a));
+  }
+}
+
 
 const std::string kImpact = R"(
 [simulation]
@@ -194,11 +204,7 @@ TEST_CASE("scene A: the Craig-Bampton and the full modal sphere agree within 1 %
   const test::ScratchDir dir("scene-a-full");
   const json cb = run_seed_scene(dir, "sphere_hertz.scene.toml", "sphere_axisym.model.toml");
   const json full = run_seed_scene(dir, "sphere_hertz_full.scene.toml", "sphere_axisym_full.model.toml");
-  for (const char* key : {"peak_force_n", "contact_time_s"}) {
-    const double a = cb["reference"][key]["value"].get<double>(), b = full["reference"][key]["value"].get<double>();
-    INFO(key << ": Craig-Bampton " << a << ", full " << b);
-    CHECK(std::abs(a - b) <= 0.01 * std::abs(b));
-  }
+  check_agree(full, cb, {"peak_force_n", "contact_time_s"}, 0.01, "full", "Craig-Bampton");
 }
 
 TEST_CASE("scene A: the hierarchically refined sphere agrees with the graded one within 1 %", "[runtime][seed][thb]") {
@@ -208,11 +214,7 @@ TEST_CASE("scene A: the hierarchically refined sphere agrees with the graded one
   const test::ScratchDir dir("scene-a-thb");
   const json graded = run_seed_scene(dir, "sphere_hertz.scene.toml", "sphere_axisym.model.toml");
   const json thb = run_seed_scene(dir, "sphere_hertz_thb.scene.toml", "sphere_axisym_thb.model.toml");
-  for (const char* key : {"peak_force_n", "contact_time_s"}) {
-    const double a = graded["reference"][key]["value"].get<double>(), b = thb["reference"][key]["value"].get<double>();
-    INFO(key << ": graded " << a << ", hierarchical " << b);
-    CHECK(std::abs(a - b) <= 0.01 * std::abs(a));
-  }
+  check_agree(graded, thb, {"peak_force_n", "contact_time_s"}, 0.01, "graded", "hierarchical");
   CHECK(rel_error(thb, "rebound_velocity_m_s") < 0.005);
   CHECK(thb["energy"]["max_rel_error"].get<double>() < 1e-5);
 }
@@ -223,11 +225,7 @@ TEST_CASE("scene A': two flexible spheres meeting head-on agree with scene A wit
   const test::ScratchDir dir("scene-a-pair");
   const json plane = run_seed_scene(dir, "sphere_hertz.scene.toml", "sphere_axisym.model.toml");
   const json pair = run_seed_scene(dir, "sphere_pair.scene.toml", "sphere_axisym.model.toml");
-  for (const char* key : {"peak_force_n", "contact_time_s", "rebound_velocity_m_s"}) {
-    const double a = plane["reference"][key]["value"].get<double>(), b = pair["reference"][key]["value"].get<double>();
-    INFO(key << ": against the plane " << a << ", sphere pair " << b);
-    CHECK(std::abs(a - b) <= 0.01 * std::abs(a));
-  }
+  check_agree(plane, pair, {"peak_force_n", "contact_time_s", "rebound_velocity_m_s"}, 0.01, "against the plane", "sphere pair");
   // both spheres rebound with the same speed (momentum is conserved exactly by the reaction)
   const double v_upper = pair["bodies"][0]["final_velocity"][1].get<double>(), v_lower = pair["bodies"][1]["final_velocity"][1].get<double>();
   CHECK(v_upper + v_lower == Approx(0).margin(1e-9));
