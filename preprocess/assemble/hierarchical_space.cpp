@@ -293,9 +293,8 @@ private:
     s.control_points.resize(n, cols);
     std::vector<Eigen::Triplet<double>> t;
     for (int l = 0; l < int(levels_.size()); ++l) {
-      std::vector<std::pair<long long, int>> active(levels_[std::size_t(l)].active.begin(), levels_[std::size_t(l)].active.end());
-      for (const auto& [f, thb] : active) {
-        const SparseRow row = on_patch(l, f);
+      for (const auto& [f, thb] : levels_[std::size_t(l)].active) {  // on_patch fills only the on_patch memos
+        const SparseRow& row = on_patch(l, f);
         double w = 0;
         Eigen::RowVectorXd wx = Eigen::RowVectorXd::Zero(cols);
         for (const auto& [i, c] : row) {
