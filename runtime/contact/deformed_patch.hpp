@@ -33,16 +33,21 @@ public:
   void evaluate(const Eigen::Vector2d& u, Point& out) const;
   /// Displacement rows of a point: Psi = sum R_i Phi_i (dim x nq).
   void shape_rows(const Point& point, Eigen::MatrixXd& Psi) const;
-  /// Parameters of the knot-span midpoints (starting guesses for projections).
-  const std::vector<Eigen::Vector2d>& span_midpoints() const { return midpoints_; }
+  /// Closest point of the patch to the body-frame point x: Newton's method from u (a warm
+  /// start; NaN: none), else from the nearest span midpoint. On success u is its parameter
+  /// and `point` the evaluated point; on failure u is NaN.
+  bool closest_point(const Eigen::Vector3d& x, Eigen::Vector2d& u, Point& point) const;
 
 private:
+  /// Newton's method for the closest point from u; false if it did not converge.
+  bool newton_projection(const Eigen::Vector3d& x, Eigen::Vector2d& u, Point& point) const;
+
   const format::MasterPatch& patch_;
   int dim_;
   Eigen::MatrixXd net_;
   Eigen::MatrixXd Phi_transposed_;   ///< nq x (ncp*dim)
   Eigen::VectorXd displacement_;     ///< Phi q
-  std::vector<Eigen::Vector2d> midpoints_;
+  std::vector<Eigen::Vector2d> midpoints_;  ///< knot-span midpoints: starting guesses of projections
 };
 
 }  // namespace isosid::run

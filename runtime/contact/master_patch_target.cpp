@@ -61,64 +61,11 @@ Eigen::Vector3d MasterPatchTarget::normal(const DeformedPatch::Point& point, con
   return orientation_ * n.normalized();
 }
 
-bool MasterPatchTarget::closest_point(const Eigen::Vector3d& x, Eigen::Vector2d& u) const {
-  // minimizes 1/2 |C(u) - x|^2: gradient C_a . (C - x), Hessian C_a . C_b + C_ab . (C - x),
-  // falling back to Gauss-Newton where the Hessian is not positive definite
-  const int pd = patch_.parameter_dim();
-  for (int iteration = 0; iteration < 30; ++iteration) {
-    patch_.evaluate(u, point_);
-    const Eigen::Vector3d d = point_.C - x;
-    Eigen::Matrix2d H = Eigen::Matrix2d::Identity();
-    Eigen::Vector2d g = Eigen::Vector2d::Zero();
-    for (int a = 0; a < pd; ++a) {
-      g(a) = point_.dC[a].dot(d);
-      for (int b = 0; b < pd; ++b) H(a, b) = point_.dC[a].dot(point_.dC[b]) + point_.ddC[a + b].dot(d);
-    }
-    Eigen::Vector2d step = Eigen::Vector2d::Zero();
-    if (pd == 1) {
-      const double gauss_newton = point_.dC[0].squaredNorm();
-      step(0) = -g(0) / (H(0, 0) > 0.1 * gauss_newton ? H(0, 0) : gauss_newton);
-    } else {
-      Eigen::LLT<Eigen::Matrix2d> llt(H);
-      if (llt.info() != Eigen::Success) {
-        for (int a = 0; a < 2; ++a)
-          for (int b = 0; b < 2; ++b) H(a, b) = point_.dC[a].dot(point_.dC[b]);
-        H.diagonal().array() += 1e-14 * H.trace() + 1e-300;
-      }
-      step = -H.ldlt().solve(g);
-    }
-    const Eigen::Vector2d before = u;
-    for (int a = 0; a < pd; ++a) u(a) = std::clamp(u(a) + step(a), patch_.lower(a), patch_.upper(a));
-    // A last step below 1e-9 of the parameter range is taken to first order: the position
-    // error is O(step^2) (1e-18 of the patch size), and a warm-started projection costs one
-    // evaluation instead of two.
-    const Eigen::Vector2d moved = u - before;
-    if (moved.cwiseAbs().maxCoeff() <= 1e-9 * (patch_.upper(0) - patch_.lower(0))) {
-      for (int a = 0; a < pd; ++a) point_.C += moved(a) * point_.dC[a];
-      return true;
-    }
-  }
-  patch_.evaluate(u, point_);
-  return false;
-}
-
 bool MasterPatchTarget::project(const Eigen::Vector3d& x_world, const double* y, TargetPoint& out, Eigen::Vector2d& hint) const {
   Eigen::Vector3d x = A_.transpose() * (x_world - r_);
   if (dim_ == 2) x.z() = 0;
   if ((x - center_).norm() > radius_) return false;  // outside the bounding sphere: cannot touch
-  bool converged = !std::isnan(hint(0)) && closest_point(x, hint);
-  if (!converged) {  // no warm start or Newton failed: start from the nearest span midpoint
-    double best = INFINITY;
-    for (const Eigen::Vector2d& m : patch_.span_midpoints()) {
-      patch_.evaluate(m, point_);
-      if ((point_.C - x).norm() < best) best = (point_.C - x).norm(), hint = m;
-    }
-    converged = closest_point(x, hint);
-  }
-  if (!converged) {
-    hint.setConstant(NAN);
-    return false;
-  }
+  if (!patch_.closest_point(x, hint, point_)) return false;
   const Eigen::Vector3d n = normal(point_, hint);
   const Eigen::Vector3d d = x - point_.C;
   out.gap = n.dot(d);

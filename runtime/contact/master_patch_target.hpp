@@ -19,9 +19,6 @@ public:
   bool project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d& hint) const override;
 
 private:
-  /// Newton's method for the closest point of the body-frame point x from `u`; false if it
-  /// did not converge.
-  bool closest_point(const Eigen::Vector3d& x, Eigen::Vector2d& u) const;
   /// The outward unit normal at an evaluated point (body frame).
   Eigen::Vector3d normal(const DeformedPatch::Point& point, const Eigen::Vector2d& u) const;
 
