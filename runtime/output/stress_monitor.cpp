@@ -1,6 +1,7 @@
 // von Mises monitors on SID stress lines; see stress_monitor.hpp.
 #include "output/stress_monitor.hpp"
 
+#include "contact/deformed_patch.hpp"
 #include "isosid/format/error.hpp"
 
 #include <cmath>
@@ -30,10 +31,33 @@ const format::StressRecovery& find_line(const StressMonitorSpec& spec, const Flo
     if (s.name == spec.line) return s;
   throw format::InputError(scene_file, "monitor " + spec.name + ".stress", "the SID of '" + spec.body + "' has no stress line '" + spec.line + "'");
 }
+
+/// Distance of every point of the line below the body's contact surfaces: to the closest
+/// point of any of its master patches, in the reference geometry. Empty if it has none.
+Eigen::VectorXd depths_below_contact_surfaces(const format::StressRecovery& line, const format::Sid& sid) {
+  if (sid.master_patches.empty()) return {};
+  Eigen::VectorXd depth = Eigen::VectorXd::Constant(line.position.rows(), INFINITY);
+  for (const format::MasterPatch& m : sid.master_patches) {
+    const DeformedPatch patch(m, sid.dim());  // undeformed: the reference geometry
+    DeformedPatch::Point point;
+    for (Eigen::Index i = 0; i < line.position.rows(); ++i) {
+      Eigen::Vector3d x = Eigen::Vector3d::Zero();
+      x.head(line.position.cols()) = line.position.row(i).transpose();
+      Eigen::Vector2d u = Eigen::Vector2d::Constant(NAN);
+      if (patch.closest_point(x, u, point)) depth(i) = std::min(depth(i), (point.C - x).norm());
+    }
+  }
+  return depth;
+}
 }  // namespace
 
 StressMonitor::StressMonitor(const StressMonitorSpec& spec, const FloatingBody& body, const std::string& scene_file)
-    : spec_(spec), body_(body), line_(find_line(spec, body, scene_file)), sigma_(line_.S.rows()), values_(line_.position.rows()) {}
+    : spec_(spec),
+      body_(body),
+      line_(find_line(spec, body, scene_file)),
+      depth_(depths_below_contact_surfaces(line_, body.sid())),
+      sigma_(line_.S.rows()),
+      values_(line_.position.rows()) {}
 
 void StressMonitor::evaluate(const double* y) {
   sigma_.noalias() = line_.S * body_.q(y);
@@ -61,7 +85,7 @@ nlohmann::json StressMonitor::summary() const {
   if (points()) {
     const Eigen::VectorXd p = line_.position.row(peak_point_).transpose();
     j["peak_position_m"] = std::vector<double>(p.data(), p.data() + p.size());
-    j["peak_depth_m"] = (line_.position.row(peak_point_) - line_.position.row(0)).norm();  // along the line from its start
+    if (depth_.size() && std::isfinite(depth_(peak_point_))) j["peak_depth_m"] = depth_(peak_point_);
   }
   return j;
 }

@@ -28,7 +28,9 @@ public:
   void step(double t, const double* y);
   /// Samples x points (row-major), Pa.
   const std::vector<double>& samples() const { return samples_; }
-  /// Peak stress, its time, the point's body-frame position and its distance along the line.
+  /// Peak stress, its time, the point's body-frame position and its depth below the body's
+  /// contact surfaces (distance to the nearest master patch, reference geometry; absent
+  /// where the SID has no master patch).
   nlohmann::json summary() const;
 
 private:
@@ -38,6 +40,7 @@ private:
   StressMonitorSpec spec_;
   const FloatingBody& body_;
   const format::StressRecovery& line_;
+  Eigen::VectorXd depth_;  ///< per point: depth below the contact surfaces, m (empty: none)
   Eigen::VectorXd sigma_, values_;
   std::vector<double> samples_;
   double peak_ = 0, peak_time_ = 0;

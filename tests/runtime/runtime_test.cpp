@@ -162,6 +162,7 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
     CHECK(r.exit_status == 2);
     CHECK_THAT(r.err, Contains(c.expected));
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(std::filesystem::exists(dir.path("out")));  // a refused run leaves no results folder
   }
 }
 
@@ -193,9 +194,9 @@ TEST_CASE("scene A: sphere on sphere (Hertz) with the Craig-Bampton sphere", "[r
   CHECK(rel_error(s, "rebound_velocity_m_s") < 0.005);  // acceptance: rebound energy 0.5 %
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-5);
   // von Mises on the axis (seed eq. 34): Hertz peak 0.530 GPa (measured -1.0 %) at 0.49 a
-  // (measured within one 10 um sample of the stress line)
+  // below the surface (measured within one 10 um sample of the stress line)
   CHECK(rel_error(s, "peak_von_mises_pa") < 0.03);
-  CHECK(std::abs(s["reference"]["peak_von_mises_depth_m"]["value"].get<double>() - 77.3e-6) <= 10e-6);
+  CHECK(std::abs(s["reference"]["peak_von_mises_depth_m"]["value"].get<double>() - 82.3e-6) <= 10e-6);
 }
 
 TEST_CASE("scene A: the Craig-Bampton and the full modal sphere agree within 1 %", "[runtime][seed]") {
