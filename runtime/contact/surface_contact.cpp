@@ -1,6 +1,7 @@
 // Penalty contact of slave Gauss points against a target; see surface_contact.hpp.
 #include "contact/surface_contact.hpp"
 
+#include "contact/default_penalty.hpp"
 #include "isosid/format/error.hpp"
 
 #include <cmath>
@@ -17,6 +18,11 @@ const format::ContactSurface& find_surface(const ContactSpec& spec, const Floati
 
 SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body, const ContactTarget& target)
     : spec_(spec), body_(body), target_(target), surface_(find_surface(spec, body)), dim_(body.sid().dim()) {
+  if (spec_.penalty <= 0) {  // none in the scene: derived from the materials and the contact resolution
+    const FloatingBody* master = target.body();
+    spec_.penalty = default_penalty(body, surface_, master, master ? master->contact_surface(spec.target_surface) : nullptr);
+    penalty_derived_ = true;
+  }
   hints_.assign(std::size_t(surface_.points()), Eigen::Vector2d::Constant(NAN));
   if (surface_.points() == 0) return;
   bound_center_.head(dim_) = surface_.position.colwise().mean().transpose();

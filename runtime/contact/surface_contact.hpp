@@ -38,6 +38,9 @@ public:
   /// penalty energy (0 if neither body has quasistatic modes).
   double add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const;
   bool frictionless() const { return spec_.friction == 0; }
+  /// Penalty factor, N/m^3: the scene's, or derived by default_penalty() where it gave none.
+  double penalty() const { return spec_.penalty; }
+  bool penalty_derived() const { return penalty_derived_; }
   /// Smallest signed gap over the contact points (negative: penetration), for event
   /// location; while the broad phase finds the surface clear, a positive lower bound.
   double min_gap(const double* y) const;
@@ -55,6 +58,7 @@ private:
                                    const TargetPoint& t) const;
 
   ContactSpec spec_;
+  bool penalty_derived_ = false;
   const FloatingBody& body_;
   const ContactTarget& target_;
   const format::ContactSurface& surface_;

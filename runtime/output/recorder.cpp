@@ -197,13 +197,15 @@ void Recorder::write_results(const std::string& path) const {
   out.commit();
 }
 
-nlohmann::json Recorder::summary(const IntegratorStats& stats, double wall_time, const double* y,
-                                 const std::string& status) const {
+nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome& outcome, const double* y) const {
   using nlohmann::json;
   json j;
   j["scene"] = scene_.file;
-  j["status"] = status;
+  j["status"] = outcome.status;
+  if (!outcome.completed()) j["failure"] = outcome.failure;
+  const double wall_time = outcome.wall_time_s;
   j["wall_time_s"] = wall_time;
+  j["cpu_time_s"] = outcome.cpu_time_s;
   j["end_time_s"] = time_.empty() ? 0.0 : time_.back();
   j["steps"] = stats.steps;
   j["rejected_steps"] = stats.attempts - stats.steps;
@@ -222,6 +224,8 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, double wall_time,
     // the contact lasts from the first onset to the last release
     c["duration_s"] = list.empty() || list.back().end < 0 ? json(nullptr) : json(list.back().end - list.front().start);
     c["intervals"] = list.size();
+    c["penalty_n_m3"] = system_.contacts()[k].penalty();
+    c["penalty_source"] = system_.contacts()[k].penalty_derived() ? "derived: 1000 E*/h" : "scene";
     c["peak_force_n"] = peak_force_[k];
     c["impulse_ns"] = impulse_[k];
     c["max_penetration_m"] = max_penetration_[k];
@@ -264,16 +268,19 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, double wall_time,
     if (key == "wave_arrival_s" && !j["monitors"].empty() && !j["monitors"][0]["arrival_s"].is_null())
       return j["monitors"][0]["arrival_s"].get<double>();
     if (key == "peak_von_mises_pa" && !stress_monitors_.empty()) return stress_monitors_[0].summary()["peak_von_mises_pa"].get<double>();
-    if (key == "peak_von_mises_depth_m" && !stress_monitors_.empty() && stress_monitors_[0].points())
-      return stress_monitors_[0].summary()["peak_depth_m"].get<double>();
+    if (key == "peak_von_mises_depth_m" && !stress_monitors_.empty()) {
+      const json stress = stress_monitors_[0].summary();
+      if (stress.contains("peak_depth_m")) return stress["peak_depth_m"].get<double>();
+    }
     return std::nullopt;
   };
   for (const auto& [key, ref] : scene_.reference) {
     const auto value = measured(key);
     json entry = {{"reference", ref}};
     entry["value"] = value ? json(*value) : json(nullptr);
-    entry["rel_error"] = value && ref != 0 ? json(std::abs(*value - ref) / std::abs(ref)) : json(nullptr);
-    if (value && ref == 0) entry["abs_error"] = std::abs(*value);
+    // signed: positive where the run measures more than the reference
+    entry["rel_error"] = value && ref != 0 ? json((*value - ref) / std::abs(ref)) : json(nullptr);
+    if (value && ref == 0) entry["abs_error"] = *value;
     cmp[key] = entry;
   }
   j["reference"] = cmp;

@@ -5,6 +5,7 @@
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
 #include "output/stress_monitor.hpp"
+#include "solve/simulation.hpp"
 #include "solve/time_integrator.hpp"
 
 #include <array>
@@ -18,21 +19,23 @@ struct ContactInterval {
   double start = 0, end = -1;  ///< end < 0: still in contact
 };
 
-class Recorder {
+/// The observer of a simulation that keeps what results.h5 and summary.json report.
+class Recorder : public SimulationObserver {
 public:
   Recorder(const MultibodySystem& system, const Scene& scene);
 
   /// Time-series sample (called at output times and at events).
-  void sample(double t, const double* y);
+  void sample(double t, const double* y) override;
   /// Per accepted step: peak force, impulse, monitor reversals.
-  void step(double t, const double* y);
+  void step(double t, const double* y) override;
   /// A contact's gap changed sign at t: closing (onset) or opening (release).
-  void contact_event(int contact, bool closing, double t);
+  void contact_event(int contact, bool closing, double t) override;
 
   /// results.h5: written to a temporary file and renamed (never half-written).
   void write_results(const std::string& path) const;
-  nlohmann::json summary(const IntegratorStats& stats, double wall_time, const double* y_final,
-                         const std::string& status) const;
+  /// summary.json: outcome, integrator statistics, contacts, bodies at y_final, energy
+  /// balance, monitors and the signed relative errors against the scene's reference values.
+  nlohmann::json summary(const IntegratorStats& stats, const RunOutcome& outcome, const double* y_final) const;
   double max_relative_energy_error() const;
 
 private:

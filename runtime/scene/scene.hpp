@@ -67,7 +67,7 @@ struct ContactSpec {
   std::string body, surface;    ///< slave: a flexible body and a contact surface of its SID
   std::string target;           ///< master: a fixed surface, a rigid body or a flexible body
   std::string target_surface;   ///< flexible master: the contact surface whose master patch is used
-  double penalty = 0;           ///< N/m^3 (pressure per penetration)
+  double penalty = 0;           ///< N/m^3 (pressure per penetration); 0: derived (default_penalty)
   double friction = 0;          ///< Coulomb coefficient
   double regularization = 1e-6; ///< m/s, velocity below which friction is regularized
 };

@@ -236,7 +236,7 @@ Scene read_scene_file(const std::string& path) {
     s.surface = c.string("surface");
     s.target = c.string("target");
     s.target_surface = c.string("target_surface", "");
-    s.penalty = c.positive("penalty");
+    s.penalty = c.positive("penalty", 0.0);  // 0: derived from the bodies (contact/default_penalty.hpp)
     s.friction = c.number("friction", 0.0);
     if (s.friction < 0 || s.friction > 10) c.fail("friction", "must lie in [0, 10]");
     s.regularization = c.positive("regularization", s.regularization);

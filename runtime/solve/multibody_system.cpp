@@ -6,6 +6,8 @@
 #include "contact/shape_target.hpp"
 #include "isosid/format/error.hpp"
 
+#include <cstdio>
+
 namespace isosid::run {
 
 MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> sids) : gravity_(scene.gravity) {
@@ -39,6 +41,21 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   }
   quasistatic_ = std::make_unique<QuasistaticModes>(bodies_, contacts_);
   forces_.resize(bodies_.size());
+  for (std::size_t i = 0; i < bodies_.size(); ++i) warn_of_many_dynamic_modes(*bodies_[i], scene.bodies[i]);
+}
+
+void MultibodySystem::warn_of_many_dynamic_modes(const FloatingBody& body, const BodySpec& spec) {
+  // an explicit integrator's step follows the highest integrated frequency: hundreds of
+  // dynamic modes of a full model turn a sub-second run into tens of minutes
+  if (body.n_dynamic() <= kManyDynamicModes) return;
+  const double f_max = body.sid().refmod.frequencies_hz(body.n_dynamic() - 1);
+  std::string advice = spec.high_modes == "quasistatic"
+                           ? "its SID marks no high modes (" + body.sid().refmod.reduction_method + " reduction); set quasistatic_above_hz"
+                           : "set high_modes = \"quasistatic\" (with quasistatic_above_hz for a SID without high modes)";
+  char what[160];
+  std::snprintf(what, sizeof what, "body '%s' integrates %lld modes dynamically (up to %.3g Hz), which makes small steps: ",
+                body.name().c_str(), static_cast<long long>(body.n_dynamic()), f_max);
+  warnings_.push_back(what + advice);
 }
 
 std::size_t MultibodySystem::body_index(const std::string& name) const {

@@ -37,11 +37,17 @@ public:
   const std::vector<std::unique_ptr<FloatingBody>>& bodies() const { return bodies_; }
   const std::vector<SurfaceContact>& contacts() const { return contacts_; }
   const FloatingBody& body(const std::string& name) const;
+  /// What the user should know about the set-up (e.g. hundreds of dynamically integrated modes).
+  const std::vector<std::string>& warnings() const { return warnings_; }
   /// Newton iterations of the quasistatic modes so far.
   long quasistatic_iterations() const { return quasistatic_iterations_; }
 
+  /// More dynamically integrated modes than this in one body draw a warning.
+  static constexpr Eigen::Index kManyDynamicModes = 200;
+
 private:
   std::size_t body_index(const std::string& name) const;
+  void warn_of_many_dynamic_modes(const FloatingBody& body, const BodySpec& spec);
   /// Solves every body's quasistatic modes for state y (they depend on the contacts).
   void update_quasistatic(const double* y) const;
 
@@ -55,6 +61,7 @@ private:
   Eigen::Index size_ = 0;
   mutable std::vector<GeneralizedForce> forces_;
   mutable long quasistatic_iterations_ = 0;
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace isosid::run

@@ -14,7 +14,7 @@ nlohmann::json run_scene(const ScratchDir& dir, const std::string& text, int exp
 void copy_model_file(const ScratchDir& dir, const std::string& file);
 /// Copies a scene of models/ and its model into dir and runs it.
 nlohmann::json run_seed_scene(const ScratchDir& dir, const std::string& scene, const std::string& model);
-/// The relative error of a [reference] value in a summary.
+/// The size of the relative error of a [reference] value in a summary (stored signed).
 double rel_error(const nlohmann::json& summary, const std::string& key);
 
 }  // namespace isosid::test

@@ -34,7 +34,7 @@ LumpedBody random_lumped_body(int n, int nq, unsigned seed) {
   for (int i = 0; i < n; ++i) m3.segment<3>(3 * i).setConstant(b.masses(i));
   const MatrixXd Me = Phi.transpose() * m3.asDiagonal() * Phi;
   const Eigen::LLT<MatrixXd> llt(Me);
-  b.Phi = llt.matrixU().solve(Phi.transpose()).transpose();
+  b.Phi = llt.matrixL().solve(Phi.transpose()).transpose();  // Phi U^-1, with Me = U^T U
   b.omega.resize(nq);
   for (int k = 0; k < nq; ++k) b.omega(k) = 2 * M_PI * 1000.0 * (1 + k);
   if (nq > 2) b.omega(2) = b.omega(1);  // a repeated pair

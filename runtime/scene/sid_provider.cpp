@@ -1,5 +1,5 @@
 // SID loading and rebuilding; see sid_provider.hpp.
-#include "tools/sid_provider.hpp"
+#include "scene/sid_provider.hpp"
 
 #include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"

@@ -1,0 +1,47 @@
+// The default penalty rule; see default_penalty.hpp.
+#include "contact/default_penalty.hpp"
+
+#include "isosid/format/error.hpp"
+
+#include <cmath>
+#include <map>
+#include <numbers>
+
+namespace isosid::run {
+
+double smallest_contact_element(const format::ContactSurface& surface, const format::Sid& sid) {
+  // the weights are the element's measure times the analysis' factor: 2 pi r (axisymmetric),
+  // the thickness (planar) or 1 (an area, 3D)
+  std::map<int, double> size;
+  for (Eigen::Index g = 0; g < surface.points(); ++g) {
+    double factor = 1;
+    if (sid.analysis == format::AnalysisType::Axisymmetric) factor = 2 * std::numbers::pi * std::abs(surface.position(g, 0));
+    else if (sid.dim() == 2) factor = sid.thickness;
+    if (factor > 0) size[surface.element(g)] += surface.weight(g) / factor;
+  }
+  double smallest = INFINITY;
+  for (const auto& [element, measure] : size)
+    if (measure > 0) smallest = std::min(smallest, sid.dim() == 3 ? std::sqrt(measure) : measure);
+  return smallest;
+}
+
+double combined_modulus(const FloatingBody& slave, const FloatingBody* master) {
+  auto compliance = [](const FloatingBody& b) {
+    const format::Material& m = b.sid().material;
+    return b.nq() == 0 || m.youngs_modulus <= 0 ? 0.0 : (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
+  };
+  return 1 / (compliance(slave) + (master ? compliance(*master) : 0.0));
+}
+
+double default_penalty(const FloatingBody& slave, const format::ContactSurface& slave_surface, const FloatingBody* master,
+                       const format::ContactSurface* master_surface) {
+  double h = smallest_contact_element(slave_surface, slave.sid());
+  if (master && master_surface) h = std::min(h, smallest_contact_element(*master_surface, master->sid()));
+  const double modulus = combined_modulus(slave, master);
+  if (!std::isfinite(h) || !std::isfinite(modulus))
+    throw format::InputError(slave.name(), "penalty",
+                             "cannot be derived (no contact element size or no elastic material): give it in the scene");
+  return kPenaltyStiffnessRatio * modulus / h;
+}
+
+}  // namespace isosid::run

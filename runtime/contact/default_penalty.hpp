@@ -1,0 +1,26 @@
+// The penalty factor a contact gets when its scene gives none: c_p = 1000 E* / h, from the
+// materials of the bodies in contact (E* the combined plane-strain modulus) and the size h of
+// the smallest contact element (the contact resolution of the surfaces).
+#pragma once
+#include "body/floating_body.hpp"
+
+namespace isosid::run {
+
+/// How many times stiffer than one contact element the penalty layer is: its compliance
+/// 1/c_p is 1e-3 of the element's h/E*, so it shifts forces and contact times by about
+/// 0.1 % or less (scene A: 0.04 % at 5e18) while costing few extra steps (bench/RESULTS.md).
+constexpr double kPenaltyStiffnessRatio = 1000;
+
+/// The smallest element of a contact surface, m: its length along a curve (2D, divided out of
+/// the 2 pi r or thickness weights) or the square root of its area (3D).
+double smallest_contact_element(const format::ContactSurface& surface, const format::Sid& sid);
+
+/// Combined modulus E* of two bodies: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2; a body without
+/// elastic coordinates (rigid) adds nothing. `master` may be null (a fixed surface).
+double combined_modulus(const FloatingBody& slave, const FloatingBody* master);
+
+/// c_p = kPenaltyStiffnessRatio E* / h (N/m^3); `master_surface` (may be null) refines h.
+double default_penalty(const FloatingBody& slave, const format::ContactSurface& slave_surface, const FloatingBody* master,
+                       const format::ContactSurface* master_surface);
+
+}  // namespace isosid::run

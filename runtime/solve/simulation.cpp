@@ -1,0 +1,92 @@
+// Phases of a run; see simulation.hpp.
+#include "solve/simulation.hpp"
+
+#include "isosid/format/error.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+
+namespace isosid::run {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+Eigen::VectorXd initial_state(const MultibodySystem& system) {
+  Eigen::VectorXd y0(system.size());
+  system.initial_state(y0.data());
+  return y0;
+}
+
+/// The body whose state holds a non-finite value, for divergence messages.
+std::string diverged_body(const MultibodySystem& system, const Eigen::VectorXd& y) {
+  for (const auto& b : system.bodies())
+    for (Eigen::Index i = 0; i < b->state_size(); ++i)
+      if (!std::isfinite(y(b->offset() + i))) return b->name();
+  return "";
+}
+
+}  // namespace
+
+Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
+    : scene_(std::move(scene)),
+      system_(scene_, std::move(sids)),
+      integrator_(system_, scene_.simulation, initial_state(system_)) {
+  integrator_.on_step([this](double t, const double* y) {
+    if (observer_) observer_->step(t, y);
+  });
+}
+
+void Simulation::start(SimulationObserver& observer) {
+  observer.sample(t_, state().data());
+  std::vector<double> gap(system_.contacts().size());
+  system_.gaps(state().data(), gap.data());
+  for (std::size_t k = 0; k < gap.size(); ++k)
+    if (gap[k] < 0) observer.contact_event(int(k), true, t_);  // starts in contact
+}
+
+void Simulation::advance_to(double t_end, SimulationObserver& observer) {
+  observer_ = &observer;
+  const double end = std::min(t_end, scene_.simulation.end_time), dt_out = scene_.simulation.output_interval;
+  auto last_progress = Clock::now();
+  try {
+    while (t_ < end * (1 - 1e-12)) {
+      const double tout = std::min(end, double(next_output_) * dt_out);
+      const auto events = integrator_.advance(tout, t_);
+      if (!state().allFinite())
+        throw format::ComputationError("the state of body '" + diverged_body(system_, state()) + "' is not finite");
+      for (const auto& e : events) observer.contact_event(e.contact, e.closing, t_);
+      observer.sample(t_, state().data());
+      if (events.empty() && t_ >= double(next_output_) * dt_out * (1 - 1e-12)) ++next_output_;
+      if (std::chrono::duration<double>(Clock::now() - last_progress).count() > 1.0) {
+        last_progress = Clock::now();
+        observer.progress(t_, scene_.simulation.end_time, stats().steps);
+      }
+    }
+  } catch (...) {
+    observer_ = nullptr;
+    throw;
+  }
+  observer_ = nullptr;
+}
+
+RunOutcome Simulation::run(SimulationObserver& observer) {
+  RunOutcome outcome;
+  const auto wall0 = Clock::now();
+  const std::clock_t cpu0 = std::clock();
+  start(observer);
+  try {
+    advance_to(scene_.simulation.end_time, observer);
+  } catch (const format::ComputationError& e) {
+    outcome.status = "failed";
+    char when[64];
+    std::snprintf(when, sizeof when, " (at t = %.6g s)", t_);
+    outcome.failure = e.what() + std::string(when);
+  }
+  outcome.wall_time_s = std::chrono::duration<double>(Clock::now() - wall0).count();
+  outcome.cpu_time_s = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  return outcome;
+}
+
+}  // namespace isosid::run

@@ -1,0 +1,67 @@
+// The simulation as a library call: a scene and its SIDs become a multibody system and an
+// integrator; the run advances phase by phase and reports samples, accepted steps and
+// contact events to an observer (the Recorder, or a test). isosid-run is a thin shell over it.
+#pragma once
+#include "scene/scene.hpp"
+#include "solve/multibody_system.hpp"
+#include "solve/time_integrator.hpp"
+
+#include <string>
+#include <vector>
+
+namespace isosid::run {
+
+/// What a run reports while it advances. Every call has the whole system state y.
+class SimulationObserver {
+public:
+  virtual ~SimulationObserver() = default;
+  /// A time-series sample: at the start, at every output time and at every contact event.
+  virtual void sample(double t, const double* y) = 0;
+  /// After every accepted integration step.
+  virtual void step(double t, const double* y) = 0;
+  /// A contact's gap changed sign at t: closing (onset) or opening (release).
+  virtual void contact_event(int contact, bool closing, double t) = 0;
+  /// Roughly once a second of wall time: how far the run is.
+  virtual void progress(double /*t*/, double /*end_time*/, long /*steps*/) {}
+};
+
+/// How a run (or a phase) ended.
+struct RunOutcome {
+  std::string status = "completed";  ///< "completed" or "failed"
+  std::string failure;               ///< what failed and when (status "failed")
+  double wall_time_s = 0, cpu_time_s = 0;  ///< of the integration
+  bool completed() const { return status == "completed"; }
+};
+
+class Simulation {
+public:
+  /// `sids`: one per flexible body of the scene, in order. The scene is kept by value.
+  Simulation(Scene scene, std::vector<format::Sid> sids);
+
+  const Scene& scene() const { return scene_; }
+  const MultibodySystem& system() const { return system_; }
+  double time() const { return t_; }
+  /// The whole system state at time().
+  const Eigen::VectorXd& state() const { return integrator_.y(); }
+  IntegratorStats stats() const { return integrator_.stats(); }
+
+  /// Reports the initial sample and the contacts that start closed; call once before advancing.
+  void start(SimulationObserver& observer);
+  /// Advances to t_end (at most the scene's end time), one phase: samples at the scene's
+  /// output interval and at contact events. Throws ComputationError on failure (state and
+  /// time stay at the last good step).
+  void advance_to(double t_end, SimulationObserver& observer);
+  /// The whole run: start, then advance to the scene's end time; a failure ends the run
+  /// with status "failed" instead of throwing, so the results so far can be written.
+  RunOutcome run(SimulationObserver& observer);
+
+private:
+  Scene scene_;
+  MultibodySystem system_;
+  TimeIntegrator integrator_;
+  double t_ = 0;
+  long next_output_ = 1;   ///< index of the next output time (multiples of output_interval)
+  SimulationObserver* observer_ = nullptr;  ///< receives the accepted steps of advance_to
+};
+
+}  // namespace isosid::run

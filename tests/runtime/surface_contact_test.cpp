@@ -1,0 +1,117 @@
+// In-process tests of SurfaceContact: the force of a prescribed penetration against the
+// penalty law, point by point, the direction and size of the friction force, and the
+// default penalty rule.
+#include "contact/default_penalty.hpp"
+#include "contact/shape_target.hpp"
+#include "contact/surface_contact.hpp"
+#include "support/lumped_sid.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace isosid;
+
+namespace {
+
+/// A 3D lumped body whose four contact points sit 0.1-0.2 m below the plane y = `plane_y`.
+struct PenetratingBody {
+  format::Sid sid = test::lumped_sid(test::random_lumped_body(12, 5, 7));
+  run::ShapeSpec plane;
+  run::ContactSpec contact;
+  PenetratingBody(double penalty, double friction) {
+    const format::ContactSurface& s = sid.contact_surfaces.front();
+    plane.kind = run::ShapeSpec::Kind::Plane;
+    plane.name = "ground";
+    plane.normal = {0, 1, 0};
+    plane.point = {0, s.position.col(1).maxCoeff() + 0.1, 0};
+    contact = {"impact", "body", s.name, "ground", "", penalty, friction, 1e-6};
+  }
+};
+
+}  // namespace
+
+TEST_CASE("SurfaceContact: a prescribed penetration gives the penalty force of every point", "[runtime][unit]") {
+  const double penalty = 1e10, mu = 0.3;
+  PenetratingBody setup(penalty, mu);
+  run::BodySpec spec;
+  spec.name = "body";
+  spec.velocity = {0.2, 0.0, 0.1};  // sliding along the plane
+  const run::FloatingBody body(spec, setup.sid, run::Dimension::Solid);
+  const run::ShapeTarget ground(setup.plane);
+  const run::SurfaceContact contact(setup.contact, body, ground);
+  Eigen::VectorXd y(body.state_size());
+  body.initial_state(y.data());
+  run::GeneralizedForce force;
+  force.reset(body.nq());
+  const run::ContactState state = contact.apply(y.data(), force, nullptr);
+
+  // the penalty law, point by point: c_p |g| w along the plane normal, plus regularized
+  // Coulomb friction -mu v_t / sqrt(|v_t|^2 + eps^2) per unit normal force
+  const format::ContactSurface& s = setup.sid.contact_surfaces.front();
+  const Eigen::Vector3d v_t = spec.velocity;
+  const Eigen::Vector3d friction = -mu * v_t / std::sqrt(v_t.squaredNorm() + 1e-12);
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  Eigen::VectorXd elastic = Eigen::VectorXd::Zero(body.nq());
+  double energy = 0;
+  for (Eigen::Index g = 0; g < s.points(); ++g) {
+    const double gap = s.position(g, 1) - setup.plane.point.y();
+    REQUIRE(gap < 0);
+    const double normal_force = penalty * -gap * s.weight(g);
+    const Eigen::Vector3d F = normal_force * (setup.plane.normal + friction);
+    total += F;
+    elastic += s.Psi.middleRows(3 * g, 3).transpose() * F;
+    energy += 0.5 * penalty * gap * gap * s.weight(g);
+  }
+  // round-off of sums of a few terms
+  CHECK(state.active_points == s.points());
+  CHECK((state.force - total).norm() < 1e-12 * total.norm());
+  CHECK((force.force - total).norm() < 1e-12 * total.norm());
+  CHECK((force.elastic - elastic).norm() < 1e-12 * elastic.norm());
+  CHECK(state.penalty_energy == Approx(energy).epsilon(1e-12));
+  // friction opposes the sliding, at mu times the normal force
+  const Eigen::Vector3d tangential = state.force - state.force.dot(setup.plane.normal) * setup.plane.normal;
+  CHECK(tangential.normalized().dot(-v_t.normalized()) == Approx(1.0).epsilon(1e-12));
+  CHECK(tangential.norm() == Approx(mu * state.force.dot(setup.plane.normal)).epsilon(1e-9));
+  CHECK(state.friction_power == Approx(-tangential.dot(v_t)).epsilon(1e-12));
+}
+
+TEST_CASE("SurfaceContact: a surface clear of the target carries no force", "[runtime][unit]") {
+  PenetratingBody setup(1e10, 0.3);
+  setup.plane.point.y() -= 0.5;  // 0.3 m and more below every point
+  run::BodySpec spec;
+  spec.name = "body";
+  const run::FloatingBody body(spec, setup.sid, run::Dimension::Solid);
+  const run::ShapeTarget ground(setup.plane);
+  const run::SurfaceContact contact(setup.contact, body, ground);
+  Eigen::VectorXd y(body.state_size());
+  body.initial_state(y.data());
+  run::GeneralizedForce force;
+  force.reset(body.nq());
+  const run::ContactState state = contact.apply(y.data(), force, nullptr);
+  CHECK(state.active_points == 0);
+  CHECK(state.force.norm() == 0);
+  CHECK(contact.min_gap(y.data()) > 0.25);
+}
+
+TEST_CASE("SurfaceContact: without a penalty in the scene it takes 1000 E*/h", "[runtime][unit]") {
+  PenetratingBody setup(0.0, 0.0);  // no penalty given
+  run::BodySpec spec;
+  spec.name = "body";
+  const run::FloatingBody body(spec, setup.sid, run::Dimension::Solid);
+  const run::ShapeTarget ground(setup.plane);
+  const run::SurfaceContact contact(setup.contact, body, ground);
+  // every point of the lumped surface is its own element of area 1e-5 .. 4e-5 m^2: h = sqrt(1e-5);
+  // a fixed plane is rigid: E* = E / (1 - nu^2)
+  const format::Material& m = setup.sid.material;
+  const double expected = 1000 * m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio) / std::sqrt(1e-5);
+  CHECK(contact.penalty_derived());
+  CHECK(contact.penalty() == Approx(expected).epsilon(1e-12));
+
+  // two elastic bodies add their compliances
+  format::Sid aluminium = setup.sid;
+  aluminium.material = {70e9, 0.33, 2700};
+  run::BodySpec other = spec;
+  other.name = "other";
+  const run::FloatingBody master(other, aluminium, run::Dimension::Solid);
+  CHECK(run::combined_modulus(body, &master) ==
+        Approx(1 / ((1 - 0.09) / m.youngs_modulus + (1 - 0.33 * 0.33) / 70e9)).epsilon(1e-12));
+}
