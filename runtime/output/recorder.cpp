@@ -202,7 +202,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
   json j;
   j["scene"] = scene_.file;
   j["status"] = outcome.status;
-  if (!outcome.completed()) j["failure"] = outcome.failure;
+  if (!outcome.failure.empty()) j["failure"] = outcome.failure;
   const double wall_time = outcome.wall_time_s;
   j["wall_time_s"] = wall_time;
   j["cpu_time_s"] = outcome.cpu_time_s;

@@ -46,12 +46,13 @@ void Simulation::start(SimulationObserver& observer) {
     if (gap[k] < 0) observer.contact_event(int(k), true, t_);  // starts in contact
 }
 
-void Simulation::advance_to(double t_end, SimulationObserver& observer) {
+bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
   observer_ = &observer;
   const double end = std::min(t_end, scene_.simulation.end_time), dt_out = scene_.simulation.output_interval;
   auto last_progress = Clock::now();
   try {
     while (t_ < end * (1 - 1e-12)) {
+      if (observer.stop_requested()) break;
       const double tout = std::min(end, double(next_output_) * dt_out);
       const auto events = integrator_.advance(tout, t_);
       if (!state().allFinite())
@@ -69,6 +70,7 @@ void Simulation::advance_to(double t_end, SimulationObserver& observer) {
     throw;
   }
   observer_ = nullptr;
+  return t_ >= end * (1 - 1e-12);
 }
 
 RunOutcome Simulation::run(SimulationObserver& observer) {
@@ -77,7 +79,7 @@ RunOutcome Simulation::run(SimulationObserver& observer) {
   const std::clock_t cpu0 = std::clock();
   start(observer);
   try {
-    advance_to(scene_.simulation.end_time, observer);
+    if (!advance_to(scene_.simulation.end_time, observer)) outcome.status = "interrupted";
   } catch (const format::ComputationError& e) {
     outcome.status = "failed";
     char when[64];

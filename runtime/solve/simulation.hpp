@@ -23,11 +23,13 @@ public:
   virtual void contact_event(int contact, bool closing, double t) = 0;
   /// Roughly once a second of wall time: how far the run is.
   virtual void progress(double /*t*/, double /*end_time*/, long /*steps*/) {}
+  /// Asked between output samples: true ends the phase there (e.g. on a signal).
+  virtual bool stop_requested() const { return false; }
 };
 
 /// How a run (or a phase) ended.
 struct RunOutcome {
-  std::string status = "completed";  ///< "completed" or "failed"
+  std::string status = "completed";  ///< "completed", "interrupted" (stop requested) or "failed"
   std::string failure;               ///< what failed and when (status "failed")
   double wall_time_s = 0, cpu_time_s = 0;  ///< of the integration
   bool completed() const { return status == "completed"; }
@@ -48,11 +50,13 @@ public:
   /// Reports the initial sample and the contacts that start closed; call once before advancing.
   void start(SimulationObserver& observer);
   /// Advances to t_end (at most the scene's end time), one phase: samples at the scene's
-  /// output interval and at contact events. Throws ComputationError on failure (state and
-  /// time stay at the last good step).
-  void advance_to(double t_end, SimulationObserver& observer);
-  /// The whole run: start, then advance to the scene's end time; a failure ends the run
-  /// with status "failed" instead of throwing, so the results so far can be written.
+  /// output interval and at contact events. Returns false if the observer asked to stop
+  /// before t_end. Throws ComputationError on failure (state and time stay at the last good
+  /// step).
+  bool advance_to(double t_end, SimulationObserver& observer);
+  /// The whole run: start, then advance to the scene's end time; a failure or a stop ends
+  /// the run with status "failed" or "interrupted" instead of throwing, so the results so far
+  /// can be written.
   RunOutcome run(SimulationObserver& observer);
 
 private:

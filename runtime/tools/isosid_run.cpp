@@ -6,12 +6,19 @@
 #include "scene/sid_provider.hpp"
 #include "solve/simulation.hpp"
 
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 
 namespace {
 using namespace isosid;
+
+/// The signal that asked the run to stop (SIGINT, SIGTERM, SIGHUP), 0 while none did.
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+void request_stop(int signal) { g_stop_signal = signal; }
 
 /// The recorder, with a progress line on stderr about once a second unless quiet.
 class ReportingRecorder : public run::Recorder {
@@ -21,6 +28,7 @@ public:
   void progress(double t, double end_time, long steps) override {
     if (!quiet_) std::fprintf(stderr, "isosid-run: t = %.4g s (%.0f %%), %ld steps\n", t, 100 * t / end_time, steps);
   }
+  bool stop_requested() const override { return g_stop_signal != 0; }
 
 private:
   bool quiet_;
@@ -44,6 +52,7 @@ int main(int argc, char** argv) {
     app.add_flag("--json", as_json, "print summary.json to stdout");
     app.add_flag("-q,--quiet", quiet, "no progress on stderr");
     if (auto status = format::parse_command_line(app, argc, argv)) return *status;
+    for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, request_stop);  // stop at a sample, keep results
 
     run::Scene scene = run::read_scene_file(scene_file);
     if (out_dir.empty()) out_dir = default_output(scene_file);
@@ -52,7 +61,11 @@ int main(int argc, char** argv) {
     for (const std::string& warning : simulation.system().warnings()) std::cerr << "isosid-run: warning: " << warning << "\n";
 
     ReportingRecorder recorder(simulation, quiet);
-    std::filesystem::create_directories(out_dir);  // only once the scene, its SIDs and monitors are accepted
+    if (g_stop_signal) {
+      std::cerr << "isosid-run: interrupted by " << strsignal(g_stop_signal) << " before the run started\n";
+      return 128 + int(g_stop_signal);
+    }
+    run::mark_run_started(out_dir, scene_file);  // only once the scene, its SIDs and monitors are accepted
     const run::RunOutcome outcome = simulation.run(recorder);
     const nlohmann::json summary = run::write_run_report(out_dir, recorder, simulation, outcome);
 
@@ -60,6 +73,11 @@ int main(int argc, char** argv) {
     if (!quiet)
       std::fprintf(stderr, "isosid-run: %s in %.3f s wall, %ld steps -> %s\n%s", outcome.status.c_str(), outcome.wall_time_s,
                    summary["steps"].get<long>(), out_dir.c_str(), run::reference_lines(summary).c_str());
+    if (outcome.status == "interrupted") {
+      std::fprintf(stderr, "isosid-run: interrupted by %s at t = %.6g s; results so far are in %s\n", strsignal(g_stop_signal),
+                   simulation.time(), out_dir.c_str());
+      return 128 + int(g_stop_signal);  // the shell's convention: 130 SIGINT, 143 SIGTERM, 129 SIGHUP
+    }
     if (!outcome.completed()) {
       std::cerr << "isosid-run: failed: " << outcome.failure << "; results so far are in " << out_dir << "\n";
       return format::kExitFailure;

@@ -1,5 +1,6 @@
 // isosid-run on the small golden SIDs: free flight against the closed-form motion, an
 // impact that must conserve energy and momentum, and bad scenes refused with one line.
+#include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene_runner.hpp"
 
@@ -166,6 +167,34 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
   }
 }
 
+
+TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run at a sample and keep its results so far", "[runtime][signals]") {
+  const test::ScratchDir dir("signals");
+  // the impact at 1 ns steps: about a second per 100 us simulated, far longer than the test waits
+  std::string scene = kImpact;
+  scene.replace(scene.find("end_time = 100e-6"), 17, "end_time = 1e-3\nmax_step = 1e-9");
+  std::ofstream(dir.path("s.scene.toml")) << scene;
+  for (const auto& [signal, status] : std::vector<std::pair<std::string, int>>{{"TERM", 143}, {"INT", 130}, {"HUP", 129}}) {
+    const std::string out = dir.path("out-" + signal);
+    // started in the background; the signal follows once the run has marked its folder
+    const auto r = test::run_program("{ " + std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + out +
+                                     " & pid=$!; for i in $(seq 600); do [ -f " + out + "/summary.json ] && break; sleep 0.05; done; "
+                                     "sleep 0.3; kill -" + signal + " $pid; wait $pid; }");
+    INFO(signal << ": " << r.err);
+    CHECK(r.exit_status == status);
+    CHECK_THAT(r.err, Contains("isosid-run: interrupted by"));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    const json s = json::parse(std::ifstream(out + "/summary.json"));
+    CHECK(s["status"] == "interrupted");
+    const double reached = s["end_time_s"].get<double>();
+    CHECK(reached > 0);
+    CHECK(reached < 1e-3);
+    // results.h5 is whole and holds the samples so far, up to where the run stopped
+    const Eigen::VectorXd time = format::h5::Reader(out + "/results.h5").vector("/time");
+    CHECK(time.size() > 1);
+    CHECK(time(time.size() - 1) == Approx(reached));
+  }
+}
 
 TEST_CASE("a run that cannot proceed stops naming time and body and keeps its results", "[runtime]") {
   // penalty 1e30 with dynamic constraint modes: the steps shrink towards 1e-12 s; the step
