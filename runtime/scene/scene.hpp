@@ -20,7 +20,12 @@ struct SimulationSettings {
   double max_step = 0;          ///< s, 0: unlimited
   long max_steps = 10'000'000;  ///< a run needing more steps stops with a diagnosis instead of crawling
   double output_interval = 0;   ///< s
+  /// Bodies may start interpenetrating (refused otherwise: they would be thrown apart).
+  bool allow_initial_penetration = false;
 };
+
+/// At most this many output samples (end_time / output_interval): results.h5 stays bounded.
+constexpr double kMaxSamples = 1e7;
 
 /// The shape and inertia of a rigid body (its frame at the centre of mass, on the principal axes).
 struct RigidShape {

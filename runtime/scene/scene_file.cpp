@@ -27,10 +27,12 @@ Eigen::Vector3d unit_vector(const TomlView& t, const std::string& key, const Eig
 }
 
 /// Name, initial motion and locked DOFs, common to flexible and rigid bodies.
-BodySpec read_motion(const TomlView& b, const std::string& name) {
+BodySpec read_motion(const TomlView& b, const std::string& name, Dimension dimension) {
   BodySpec f;
   f.name = name;
   f.position = vec3(b, "position", f.position);
+  if (dimension == Dimension::Axisymmetric && (f.position.x() != 0 || f.position.z() != 0))
+    b.fail("position", "an axisymmetric scene needs its bodies on the axis (x = z = 0)");
   f.tait_bryan = vec3(b, "orientation", f.tait_bryan);
   f.velocity = vec3(b, "velocity", f.velocity);
   f.angular_velocity = vec3(b, "angular_velocity", f.angular_velocity);
@@ -102,7 +104,8 @@ std::string resolve(const std::string& scene_file, const std::string& path) {
 }
 
 SimulationSettings read_simulation(const TomlView& s) {
-  s.allow_only({"dimension", "end_time", "integrator", "rtol", "atol", "max_step", "max_steps", "output_interval", "gravity"});
+  s.allow_only({"dimension", "end_time", "integrator", "rtol", "atol", "max_step", "max_steps", "output_interval", "gravity",
+                "allow_initial_penetration"});
   SimulationSettings out;
   const std::string dim = s.string("dimension");
   if (dim == "planar")
@@ -128,6 +131,18 @@ SimulationSettings read_simulation(const TomlView& s) {
   if (out.max_steps < 1) s.fail("max_steps", "must be at least 1");
   out.output_interval = s.positive("output_interval", out.end_time / 1000);
   if (out.output_interval > out.end_time) s.fail("output_interval", "exceeds end_time");
+  // work that could never finish is refused before it starts
+  char count[64];
+  if (const double samples = out.end_time / out.output_interval; samples > kMaxSamples) {
+    std::snprintf(count, sizeof count, "%.3g samples", samples);
+    s.fail("output_interval", std::string("end_time / output_interval asks for ") + count + ", more than the limit of 1e7");
+  }
+  if (const double steps = out.end_time / out.max_step; steps > double(out.max_steps)) {
+    std::snprintf(count, sizeof count, "%.3g steps", steps);
+    s.fail("max_step", std::string("end_time / max_step needs at least ") + count + ", more than max_steps = " +
+                           std::to_string(out.max_steps));
+  }
+  out.allow_initial_penetration = s.boolean("allow_initial_penetration", false);
   return out;
 }
 
@@ -172,7 +187,7 @@ Scene read_scene_file(const std::string& path) {
   for (const TomlView& b : top.tables("flexible_body")) {
     b.allow_only({"name", "sid", "model", "position", "orientation", "velocity", "angular_velocity", "q0", "qdot0", "locked",
                   "high_modes", "quasistatic_above_hz", "elastic_start"});
-    BodySpec f = read_motion(b, unique(b));
+    BodySpec f = read_motion(b, unique(b), scene.simulation.dimension);
     f.sid_file = resolve(path, b.string("sid"));
     f.model_file = resolve(path, b.string("model", ""));
     if (!f.model_file.empty() && !fs::is_regular_file(f.model_file)) b.fail("model", "file not found: " + f.model_file);
@@ -199,10 +214,8 @@ Scene read_scene_file(const std::string& path) {
   for (const TomlView& b : top.tables("rigid_body")) {
     b.allow_only({"name", "shape", "radius", "size", "density", "mass", "inertia", "position", "orientation", "velocity",
                   "angular_velocity", "locked"});
-    BodySpec r = read_motion(b, unique(b));
+    BodySpec r = read_motion(b, unique(b), scene.simulation.dimension);
     r.rigid = read_rigid_shape(b, scene.simulation.dimension);
-    if (scene.simulation.dimension == Dimension::Axisymmetric && (r.position.x() != 0 || r.position.z() != 0))
-      b.fail("position", "an axisymmetric scene needs its bodies on the axis (x = z = 0)");
     scene.bodies.push_back(r);
   }
   for (const TomlView& p : top.tables("fixed_plane")) {

@@ -36,6 +36,22 @@ Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
   integrator_.on_step([this](double t, const double* y) {
     if (observer_) observer_->step(t, y);
   });
+  if (!scene_.simulation.allow_initial_penetration) refuse_initial_penetration();
+}
+
+void Simulation::refuse_initial_penetration() const {
+  // bodies placed into each other are thrown apart by the penalty force at km/s: almost
+  // always a mistake in the positions. The depth is geometric: the quasistatic modes have not
+  // been solved yet (their elastic response would hide most of it).
+  for (const SurfaceContact& c : system_.contacts()) {
+    const double gap = c.min_gap(state().data());
+    if (gap >= 0) continue;
+    char depth[32];
+    std::snprintf(depth, sizeof depth, "%.3g m", -gap);
+    throw format::InputError(scene_.file, "contact " + c.name(),
+                             "'" + c.body().name() + "' starts " + depth + " deep in '" + c.target().name() +
+                                 "' (move the bodies apart, or set simulation.allow_initial_penetration = true)");
+  }
 }
 
 void Simulation::start(SimulationObserver& observer) {

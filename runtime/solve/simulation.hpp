@@ -38,6 +38,7 @@ struct RunOutcome {
 class Simulation {
 public:
   /// `sids`: one per flexible body of the scene, in order. The scene is kept by value.
+  /// Bodies that start interpenetrating are refused (InputError) unless the scene allows it.
   Simulation(Scene scene, std::vector<format::Sid> sids);
 
   const Scene& scene() const { return scene_; }
@@ -60,6 +61,9 @@ public:
   RunOutcome run(SimulationObserver& observer);
 
 private:
+  /// InputError naming the contact, the bodies and the depth if any contact starts closed.
+  void refuse_initial_penetration() const;
+
   Scene scene_;
   MultibodySystem system_;
   TimeIntegrator integrator_;

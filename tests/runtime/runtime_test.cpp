@@ -155,6 +155,14 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
       {kImpact + "[[monitor]]\nname = \"m\"\nbody = \"sphere\"\nstress = \"axis\"\nnode = \"top\"\n",
        "monitor[0].node: a stress monitor takes only name, body and stress"},
       {replace(kImpact, "end_time = 100e-6", "end_time = nan"), "simulation.end_time: must be finite"},
+      {replace(kImpact, "position = [0.0, 0.0100001, 0.0]", "position = [0.001, 0.0100001, 0.0]"),
+       "flexible_body[0].position: an axisymmetric scene needs its bodies on the axis"},
+      {replace(kImpact, "position = [0.0, 0.0100001, 0.0]", "position = [0.0, 0.0095, 0.0]"),
+       "contact impact: 'sphere' starts 0.0005 m deep in 'ground'"},
+      {replace(kImpact, "output_interval = 1e-6", "output_interval = 1e-15"),
+       "simulation.output_interval: end_time / output_interval asks for 1e+11 samples, more than the limit of 1e7"},
+      {replace(kImpact, "output_interval = 1e-6", "output_interval = 1e-6\nmax_step = 1e-300"),
+       "simulation.max_step: end_time / max_step needs at least 1e+296 steps, more than max_steps = 10000000"},
   };
   for (const Case& c : cases) {
     std::ofstream(dir.path("s.scene.toml")) << c.text;
@@ -194,6 +202,17 @@ TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run at a sample and keep its result
     CHECK(time.size() > 1);
     CHECK(time(time.size() - 1) == Approx(reached));
   }
+}
+
+TEST_CASE("bodies may start interpenetrating where the scene allows it", "[runtime]") {
+  const test::ScratchDir dir("initial-penetration");
+  std::string scene = kImpact;
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"position = [0.0, 0.0100001, 0.0]", "position = [0.0, 0.009999, 0.0]"},
+                                 {"output_interval = 1e-6", "output_interval = 1e-6\nallow_initial_penetration = true"}})
+    scene.replace(scene.find(from), from.size(), to);
+  const json s = run_scene(dir, scene);
+  CHECK(s["status"] == "completed");
+  CHECK(s["contacts"][0]["start_s"].get<double>() == 0);  // in contact from the start
 }
 
 TEST_CASE("a run that cannot proceed stops naming time and body and keeps its results", "[runtime]") {
