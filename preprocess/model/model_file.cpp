@@ -294,11 +294,12 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     const long long n = t.integer("points", 10);
     if (n < 1 || n > 10000) t.fail("points", "must lie in 1..10000");
     l.points = int(n);
-    if (l.from.physical) {  // the whole segment must lie in the body, not only its ends
+    if (l.from.physical) {  // the ends first, then the segment between them must lie in the body
       const std::vector<BodyPoint> on_body = line_points(patch, l.from, l.to, l.points);
-      for (int i = 0; i < l.points; ++i)
-        require_on_body(t, i == 0 ? "from_point" : "to_point", patch, on_body[std::size_t(i)],
-                        i == 0 || i + 1 == l.points ? "the point" : "the line's point " + std::to_string(i + 1));
+      require_on_body(t, "from_point", patch, on_body.front(), "the point");
+      require_on_body(t, "to_point", patch, on_body.back(), "the point");
+      for (int i = 1; i + 1 < l.points; ++i)
+        require_on_body(t, "to_point", patch, on_body[std::size_t(i)], "the line's point " + std::to_string(i + 1));
     }
     m.stress_lines.push_back(l);
   }
