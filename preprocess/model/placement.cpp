@@ -4,6 +4,7 @@
 #include "model/body_model.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace isosid::prep {

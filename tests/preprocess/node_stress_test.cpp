@@ -8,6 +8,7 @@
 #include "sid/stress_rows.hpp"
 #include "preprocess/body_fixtures.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 using namespace isosid;
