@@ -236,10 +236,8 @@ std::string short_number(double x) {
 void require_on_body(const TomlView& t, const std::string& key, const NurbsPatch& patch, const BodyPoint& placed,
                      const std::string& which) {
   if (placed.distance <= placement_tolerance(patch)) return;
-  std::string parameter;
-  for (Eigen::Index d = 0; d < placed.parameter.size(); ++d) parameter += (d ? ", " : "") + short_number(placed.parameter(d));
-  t.fail(key, which + " lies " + short_number(placed.distance) + " m outside the body (nearest body point at parameter [" +
-                  parameter + "]; tolerance " + short_number(placement_tolerance(patch)) + " m)");
+  t.fail(key, which + " lies " + short_number(placed.distance) + " m outside the body (tolerance " +
+                  short_number(placement_tolerance(patch)) + " m)");
 }
 
 void read_sid_content(const TomlView& top, ModelSpec& m) {
