@@ -5,6 +5,8 @@
 #include "isosid/format/toml_fields.hpp"
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 
 namespace isosid::prep {
 namespace {
@@ -213,6 +215,31 @@ Eigen::VectorXd parameter_point(const TomlView& t, const std::string& key, const
   return Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(v.size()));
 }
 
+/// A point given by its patch parameter (`parameter_key`) or physically (`point_key`, in
+/// metres), exactly one of the two.
+GivenPoint given_point(const TomlView& t, const std::string& parameter_key, const std::string& point_key, const NurbsPatch& patch) {
+  if (t.has(parameter_key) == t.has(point_key))
+    t.fail(parameter_key, "give exactly one of " + parameter_key + " (patch parameter) and " + point_key + " (m)");
+  if (t.has(parameter_key)) return {parameter_point(t, parameter_key, patch), false};
+  const std::vector<double> v = t.numbers(point_key);
+  if (int(v.size()) != patch.phys_dim()) t.fail(point_key, "needs " + std::to_string(patch.phys_dim()) + " coordinates (m)");
+  return {Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(v.size())), true};
+}
+
+std::string short_number(double x) {
+  std::ostringstream s;
+  s << std::setprecision(3) << x;
+  return s.str();
+}
+
+/// Refuses a physical point farther from the body than placement_tolerance.
+void require_on_body(const TomlView& t, const std::string& key, const NurbsPatch& patch, const BodyPoint& placed,
+                     const std::string& which) {
+  if (placed.distance <= placement_tolerance(patch)) return;
+  t.fail(key, which + " lies " + short_number(placed.distance) + " m outside the body (tolerance " +
+                  short_number(placement_tolerance(patch)) + " m)");
+}
+
 void read_sid_content(const TomlView& top, ModelSpec& m) {
   const NurbsPatch& patch = m.patch;
   auto unique_name = [](const TomlView& t, std::vector<std::string>& seen) {
@@ -248,21 +275,30 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     m.contact_surfaces.push_back(s);
   }
   for (const TomlView& t : top.tables("node")) {
-    t.allow_only({"name", "parameter"});
+    t.allow_only({"name", "parameter", "point"});
     NodeSpec n;
     n.name = unique_name(t, nodes);
-    n.parameter = parameter_point(t, "parameter", patch);
+    n.at = given_point(t, "parameter", "point", patch);
+    if (n.at.physical) require_on_body(t, "point", patch, place(patch, n.at), "the point");
     m.nodes.push_back(n);
   }
   for (const TomlView& t : top.tables("stress_line")) {
-    t.allow_only({"name", "from", "to", "points"});
+    t.allow_only({"name", "from", "to", "from_point", "to_point", "points"});
     StressLineSpec l;
     l.name = unique_name(t, lines);
-    l.from = parameter_point(t, "from", patch);
-    l.to = parameter_point(t, "to", patch);
+    l.from = given_point(t, "from", "from_point", patch);
+    l.to = given_point(t, "to", "to_point", patch);
+    if (l.from.physical != l.to.physical) t.fail(l.from.physical ? "to" : "from", "give both ends as parameters or both in metres");
     const long long n = t.integer("points", 10);
     if (n < 1 || n > 10000) t.fail("points", "must lie in 1..10000");
     l.points = int(n);
+    if (l.from.physical) {  // the ends first, then the segment between them must lie in the body
+      const std::vector<BodyPoint> on_body = line_points(patch, l.from, l.to, l.points);
+      require_on_body(t, "from_point", patch, on_body.front(), "the point");
+      require_on_body(t, "to_point", patch, on_body.back(), "the point");
+      for (int i = 1; i + 1 < l.points; ++i)
+        require_on_body(t, "to_point", patch, on_body[std::size_t(i)], "the line's point " + std::to_string(i + 1));
+    }
     m.stress_lines.push_back(l);
   }
   if (auto r = top.optional_table("reduction")) {

@@ -3,6 +3,7 @@
 #pragma once
 #include "geometry/nurbs_patch.hpp"
 #include "isosid/format/sid.hpp"
+#include "model/placement.hpp"
 #include "refine/graded_knots.hpp"
 #include "refine/hierarchical_mesh.hpp"
 
@@ -48,12 +49,12 @@ struct ContactSurfaceSpec {
 
 struct NodeSpec {
   std::string name;
-  Eigen::VectorXd parameter;             ///< patch parameter of the point
+  GivenPoint at;                         ///< `parameter` or `point` (placed on the body by prep::place)
 };
 
 struct StressLineSpec {
   std::string name;
-  Eigen::VectorXd from, to;              ///< patch parameters of the line's ends
+  GivenPoint from, to;                   ///< the line's ends, both parameters or both physical points
   int points = 10;
 };
 

@@ -8,7 +8,7 @@
 namespace isosid::prep {
 
 format::Node node_at(const BodyModel& body, const NodeSpec& spec, const Eigen::MatrixXd& Phi_nodal) {
-  const auto at = point_operator_at(body.space, body.dofs, body.elasticity, spec.parameter);
+  const auto at = point_operator_at(body.space, body.dofs, body.elasticity, place(body.spec.patch, spec.at).parameter);
   if (!at) throw format::InputError(body.spec.file, "node " + spec.name, "parameter outside the patch");
   const PointOperator& op = *at;
   const int dim = body.dofs.dim();

@@ -1,10 +1,8 @@
 // Composition of the SID; see sid_builder.hpp.
 #include "sid/sid_builder.hpp"
 
-#include "isosid/format/error.hpp"
 #include "isosid/format/sha256.hpp"
 #include "isosid/version.hpp"
-#include "reduce/modal_analysis.hpp"
 #include "sid/contact_data.hpp"
 #include "sid/master_patch.hpp"
 #include "sid/node_data.hpp"
@@ -16,57 +14,8 @@
 #include <cmath>
 #include <ctime>
 #include <filesystem>
-#include <numeric>
-#include <map>
 
 namespace isosid::prep {
-
-std::vector<int> interface_dofs(const BodyModel& body, std::string& description) {
-  const ReductionSpec& r = body.spec.reduction;
-  const auto surface = std::find_if(body.spec.contact_surfaces.begin(), body.spec.contact_surfaces.end(),
-                                    [&](const ContactSurfaceSpec& c) { return c.name == r.interface_surface; });
-  const PatchSide side = *body.refined.side(surface->side);
-  // the centre as a physical point of the side; nodes are ranked by their physical distance
-  // to it (parameter distances mislead where the parametrization collapses, e.g. at a pole)
-  Eigen::VectorXd xi(body.space.param_dim());
-  for (int d = 0, k = 0; d < body.space.param_dim(); ++d)
-    xi(d) = d == side.direction ? (side.end ? body.refined.upper(d) : body.refined.lower(d)) : r.interface_center(k++);
-  const Eigen::VectorXd centre = body.refined.point(xi);
-  std::map<int, double> distance;
-  for (int node : side_nodes(body, side)) distance[node] = (body.dofs.node_points().row(node).transpose() - centre).norm();
-  std::vector<std::pair<double, int>> ranked;
-  for (auto [node, d] : distance) ranked.emplace_back(d, node);
-  std::sort(ranked.begin(), ranked.end());
-  if (int(ranked.size()) < r.interface_points)
-    throw format::InputError(body.spec.file, "reduction.interface_points",
-                             std::to_string(r.interface_points) + " requested, the side has " + std::to_string(ranked.size()) + " nodes");
-  std::vector<int> dofs;
-  for (int k = 0; k < r.interface_points; ++k)
-    for (int a = 0; a < body.dofs.dim(); ++a)
-      if (const int i = body.dofs.free_index(ranked[std::size_t(k)].second, a); i >= 0) dofs.push_back(i);
-  std::sort(dofs.begin(), dofs.end());
-  description = std::to_string(r.interface_points) + " control points of '" + surface->name + "' nearest to (" +
-                std::to_string(centre(0)) + ", " + std::to_string(centre(1)) + (centre.size() > 2 ? ", " + std::to_string(centre(2)) : "") +
-                ") m (" + std::to_string(dofs.size()) + " DOFs)";
-  return dofs;
-}
-
-ReductionRequest reduction_request(const BodyModel& body) {
-  ReductionRequest q;
-  q.method = body.spec.reduction.method;
-  q.normal_modes = body.spec.reduction.normal_modes;
-  if (q.method == "craig-bampton") q.interface_dofs = interface_dofs(body, q.interface_description);
-  return q;
-}
-
-ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system, const Eigen::MatrixXd& extra) {
-  const Eigen::MatrixXd rigid = admissible_rigid_fields(rigid_nodal_fields(body.dofs.node_points(), body.spec.analysis),
-                                                        body.dofs.free_indices());
-  const double scale = eigenvalue_scale(body.spec.material.youngs_modulus, body.spec.material.density, body_size(body));
-  ReductionRequest request = reduction_request(body);
-  request.extra_vectors = extra;
-  return reduce(system.K, system.M, rigid, request, scale);
-}
 
 Eigen::MatrixXd nodal_modes(const DofMap& dofs, const Eigen::MatrixXd& Phi_free) {
   Eigen::MatrixXd Phi = Eigen::MatrixXd::Zero(dofs.total_dofs(), Phi_free.cols());

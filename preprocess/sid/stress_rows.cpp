@@ -1,4 +1,4 @@
-// Stress rows along a parametric line; see stress_rows.hpp.
+// Stress rows along a line of the body; see stress_rows.hpp.
 #include "sid/stress_rows.hpp"
 
 #include "assemble/point_operator.hpp"
@@ -15,10 +15,9 @@ format::StressRecovery stress_rows(const BodyModel& body, const StressLineSpec& 
   s.components = comps;
   s.position.resize(spec.points, dim);
   s.S.resize(spec.points * nc, Phi_nodal.cols());
+  const std::vector<BodyPoint> points = line_points(body.spec.patch, spec.from, spec.to, spec.points);
   for (int i = 0; i < spec.points; ++i) {
-    const double u = spec.points == 1 ? 0.0 : double(i) / (spec.points - 1);
-    const Eigen::VectorXd xi = spec.from + u * (spec.to - spec.from);
-    const auto at = point_operator_at(body.space, body.dofs, body.elasticity, xi);
+    const auto at = point_operator_at(body.space, body.dofs, body.elasticity, points[std::size_t(i)].parameter);
     if (!at) throw format::InputError(body.spec.file, "stress_line " + spec.name, "point outside the patch");
     const PointOperator& op = *at;
     const Eigen::MatrixXd local = op.gather(Phi_nodal);

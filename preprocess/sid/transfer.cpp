@@ -92,14 +92,7 @@ format::TransferOperator reduced_transfer(const ReducedModel& coarse, const Redu
   return t;
 }
 
-CoarseModel coarse_model(const BodyModel& fine) {
-  BodyModel body = build_body(coarse_model_spec(fine.spec));
-  SystemMatrices system = assemble_system(body.space, body.dofs, body.elasticity, body.spec.extra_quadrature_points);
-  ReducedBasis basis = reduce_body(body, system);
-  return {std::move(body), std::move(system), std::move(basis)};
-}
-
-Eigen::MatrixXd prolongated_modes(const CoarseModel& coarse, const BodyModel& fine, const NodalTransfer& nodal) {
+Eigen::MatrixXd prolongated_modes(const ReducedModel& coarse, const BodyModel& fine, const NodalTransfer& nodal) {
   return free_rows(fine.dofs, nodal.coarse_to_fine * nodal_modes(coarse.body.dofs, coarse.basis.Phi));
 }
 

@@ -34,16 +34,8 @@ struct ReducedModel {
 /// The reduced operators q_fine = coarse_to_fine q_coarse, q_coarse = fine_to_coarse q_fine.
 format::TransferOperator reduced_transfer(const ReducedModel& coarse, const ReducedModel& fine, const NodalTransfer& nodal);
 
-/// The coarse model of a hierarchical body (coarse_model_spec), assembled and reduced.
-struct CoarseModel {
-  BodyModel body;
-  SystemMatrices system;
-  ReducedBasis basis;
-};
-CoarseModel coarse_model(const BodyModel& fine);
-
 /// The coarse model's modes on the fine model's free DOFs (exact prolongation). Added to the
 /// refined model's basis they make the reduced transfer exact both ways for coarse states.
-Eigen::MatrixXd prolongated_modes(const CoarseModel& coarse, const BodyModel& fine, const NodalTransfer& nodal);
+Eigen::MatrixXd prolongated_modes(const ReducedModel& coarse, const BodyModel& fine, const NodalTransfer& nodal);
 
 }  // namespace isosid::prep

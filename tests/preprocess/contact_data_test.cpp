@@ -3,6 +3,7 @@
 // Psi = N Phi. Areas to 1e-10: exact geometry, Gauss quadrature of smooth integrands on
 // small elements.
 #include "geometry/primitives.hpp"
+#include "reduce/body_reduction.hpp"
 #include "sid/contact_data.hpp"
 #include "sid/sid_builder.hpp"
 #include "preprocess/body_fixtures.hpp"

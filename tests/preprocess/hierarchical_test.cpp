@@ -7,6 +7,8 @@
 #include "assemble/element_evaluator.hpp"
 #include "assemble/point_operator.hpp"
 #include "geometry/primitives.hpp"
+#include "pipeline/prepare.hpp"
+#include "reduce/body_reduction.hpp"
 #include "reduce/modal_analysis.hpp"
 #include "refine/level_factors.hpp"
 #include "sid/sid_builder.hpp"
@@ -215,14 +217,14 @@ TEST_CASE("the hierarchical sphere has at least 3x fewer DOFs than the graded on
 
 TEST_CASE("coarse -> refined -> coarse returns the state, nodal and reduced, and keeps its energy", "[thb]") {
   const auto fine = prep::build_body(model("sphere_axisym_thb.model.toml"));
-  const prep::CoarseModel coarse = prep::coarse_model(fine);
+  const prep::PreparedBody coarse = prep::prepare(prep::coarse_model_spec(fine.spec), {.build_sid = false, .output = ""});
   const prep::NodalTransfer nodal = prep::nodal_transfer(coarse.body, fine);
   // nodal: the local least squares of seed 001 Sect. 4.4 recovers any coarse field exactly
   const Eigen::MatrixXd round = Eigen::MatrixXd(nodal.fine_to_coarse * nodal.coarse_to_fine);
   CHECK((round - Eigen::MatrixXd::Identity(round.rows(), round.cols())).cwiseAbs().maxCoeff() < 1e-10);
   // reduced: the refined basis holds the coarse modes
   const auto system = prep::assemble_system(fine.space, fine.dofs, fine.elasticity);
-  const auto basis = prep::reduce_body(fine, system, prep::prolongated_modes(coarse, fine, nodal));
+  const auto basis = prep::reduce_body(fine, system, prep::prolongated_modes({coarse.body, coarse.system, coarse.basis}, fine, nodal));
   const auto T = prep::reduced_transfer({coarse.body, coarse.system, coarse.basis}, {fine, system, basis}, nodal);
   const Eigen::MatrixXd I = T.fine_to_coarse * T.coarse_to_fine;
   CHECK((I - Eigen::MatrixXd::Identity(I.rows(), I.cols())).cwiseAbs().maxCoeff() < 1e-10);

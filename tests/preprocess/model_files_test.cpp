@@ -233,6 +233,14 @@ TEST_CASE("reduction settings are validated", "[model][sid]") {
            {"[damping]\nf1 = 100.0\n", "damping.f2: give both f1 and f2"},
            {"[[node]]\nname = \"n\"\nparameter = [2.0, 0.5]\n", "node[0].parameter: outside"},
            {"[[contact_surface]]\nname = \"contact\"\nside = \"left\"\n", "contact_surface[1].name: duplicate name"},
+           // nodes and stress lines in metres (the block is 0.1 x 0.02 m)
+           {"[[node]]\nname = \"n\"\npoint = [0.15, 0.01]\n", "node[0].point: the point lies 0.05 m outside the body"},
+           {"[[node]]\nname = \"n\"\nparameter = [0.5, 0.5]\npoint = [0.05, 0.01]\n", "node[0].parameter: give exactly one of"},
+           {"[[node]]\nname = \"n\"\npoint = [0.05, 0.01, 0.0]\n", "node[0].point: needs 2 coordinates"},
+           {"[[stress_line]]\nname = \"s\"\nfrom_point = [0.05, 0.01]\nto_point = [0.05, 0.03]\n",
+            "stress_line[0].to_point: the point lies 0.01 m outside the body"},
+           {"[[stress_line]]\nname = \"s\"\nfrom = [0.5, 0.5]\nto_point = [0.05, 0.01]\n",
+            "stress_line[0].from: give both ends as parameters or both in metres"},
        }) {
     std::ofstream(dir.path("m.model.toml")) << base + c.extra;
     const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("m.model.toml"));
@@ -241,4 +249,53 @@ TEST_CASE("reduction settings are validated", "[model][sid]") {
     CHECK_THAT(r.err, Contains(c.expected));
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   }
+}
+
+TEST_CASE("nodes and stress lines placed in metres: reported by parameter and position", "[model][sid][placement]") {
+  const test::ScratchDir dir("prep-placement");
+  std::ofstream(dir.path("block.model.toml")) << std::string(kValid) + R"(
+[[node]]
+name = "corner"
+point = [0.1, 0.02]
+[[node]]
+name = "middle"
+parameter = [0.5, 0.5]
+[[stress_line]]
+name = "across"
+from_point = [0.025, 0.0]
+to_point = [0.025, 0.02]
+points = 3
+)";
+  const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q --json " + dir.path("block.model.toml"));
+  REQUIRE(r.exit_status == 0);
+  const auto placement = nlohmann::json::parse(r.out)["placement"];
+  auto close = [](const nlohmann::json& v, std::vector<double> expected) {
+    for (std::size_t i = 0; i < expected.size(); ++i) CHECK(v[i].get<double>() == Approx(expected[i]).margin(1e-12));
+  };
+  CHECK(placement["nodes"][0]["name"] == "corner");
+  CHECK(placement["nodes"][0]["given"] == "point");
+  close(placement["nodes"][0]["parameter"], {1.0, 1.0});
+  close(placement["nodes"][0]["point_m"], {0.1, 0.02});
+  CHECK(placement["nodes"][1]["given"] == "parameter");
+  close(placement["nodes"][1]["point_m"], {0.05, 0.01});
+  const auto& line = placement["stress_lines"][0];
+  CHECK(line["given"] == "point");
+  CHECK(line["points"] == 3);
+  close(line["from"]["parameter"], {0.25, 0.0});
+  close(line["to"]["parameter"], {0.25, 1.0});
+  const auto text = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("block.model.toml"));
+  CHECK_THAT(text.out, Contains("node corner at parameter [1, 1] = [0.1, 0.02] m (given by point)"));
+  CHECK_THAT(text.out, Contains("stress line across, 3 points from parameter [0.25, 0] = [0.025, 0] m to parameter [0.25, 1] = [0.025, 0.02] m (given by points)"));
+}
+
+TEST_CASE("a stress line in metres must stay inside the body between its ends", "[model][placement]") {
+  const test::ScratchDir dir("prep-placement-bad");
+  // a quarter annulus (radii 0.8, 1): the chord between points on its two straight sides crosses the hole
+  std::ofstream(dir.path("m.model.toml")) << replace(replace(kValid, "primitive = \"rectangle\"", "primitive = \"quarter_annulus\""),
+                                                     "size = [0.1, 0.02]", "inner_radius = 0.8\nouter_radius = 1.0") +
+                                                 "[[stress_line]]\nname = \"chord\"\nfrom_point = [0.9, 0.0]\nto_point = [0.0, 0.9]\npoints = 5\n";
+  const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("m.model.toml"));
+  CHECK(r.exit_status == 2);
+  CHECK_THAT(r.err, Contains("m.model.toml") && Contains("stress_line[0].to_point: the line's point 2 lies"));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
 }

@@ -3,7 +3,7 @@
 // first-order inertia term against a finite difference of the deformed body's inertia.
 #include "geometry/primitives.hpp"
 #include "isosid/format/sid_io.hpp"
-#include "reduce/reduction.hpp"
+#include "reduce/body_reduction.hpp"
 #include "sid/body_integrals.hpp"
 #include "sid/sid_builder.hpp"
 #include "sid/sid_terms.hpp"

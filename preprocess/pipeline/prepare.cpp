@@ -1,0 +1,75 @@
+// The preprocessing pipeline; see prepare.hpp.
+#include "pipeline/prepare.hpp"
+
+#include "isosid/format/sid_io.hpp"
+#include "reduce/body_reduction.hpp"
+#include "sid/sid_builder.hpp"
+#include "sid/transfer.hpp"
+
+#include <algorithm>
+#include <optional>
+
+namespace isosid::prep {
+namespace {
+
+struct AssembledBody {
+  BodyModel body;
+  SystemMatrices system;
+  SparseMatrix scalar_mass;
+};
+
+/// Stages refine, assembly and, if asked, mass: what every use of a model starts with.
+AssembledBody assemble(const ModelSpec& spec, bool with_mass, StageClock& clock) {
+  AssembledBody a{clock.run("refine", "refining the geometry", [&] { return build_body(spec); }), {}, {}};
+  const BodyModel& b = a.body;
+  a.system = clock.run("assembly",
+                       "assembling " + std::to_string(b.space.elements.size()) + " elements, " + std::to_string(b.dofs.free_count()) + " DOFs",
+                       [&] { return assemble_system(b.space, b.dofs, b.elasticity, spec.extra_quadrature_points); });
+  if (with_mass)
+    a.scalar_mass = clock.run("mass", "integrating the mass",
+                              [&] { return assemble_scalar_mass(b.space, b.dofs, b.elasticity, spec.extra_quadrature_points); });
+  return a;
+}
+
+}  // namespace
+
+PreparedBody prepare(const ModelSpec& spec, const PrepareOptions& options, StageObserver& observer) {
+  StageClock clock(observer);
+  AssembledBody a = assemble(spec, options.build_sid, clock);
+  // a hierarchical body carries its coarse model's modes, so states transfer exactly
+  std::optional<PreparedBody> coarse;
+  std::optional<NodalTransfer> nodal;
+  Eigen::MatrixXd coarse_modes;
+  if (a.body.hierarchy)
+    clock.run("coarse_model", "coarse model and nodal transfer", [&] {
+      coarse.emplace(prepare(coarse_model_spec(spec), {.build_sid = false, .output = ""}));
+      nodal = nodal_transfer(coarse->body, a.body);
+      coarse_modes = prolongated_modes({coarse->body, coarse->system, coarse->basis}, a.body, *nodal);
+    });
+  ReducedBasis basis = clock.run("reduction", spec.reduction.method + " reduction", [&] { return reduce_body(a.body, a.system, coarse_modes); });
+  PreparedBody out{std::move(a.body), std::move(a.system), std::move(a.scalar_mass), std::move(basis), {}, {}};
+  if (options.build_sid) {
+    out.sid = clock.run("sid_terms", "SID terms, contact data, nodes and stress rows",
+                        [&] { return build_sid(out.body, out.system, out.scalar_mass, out.basis); });
+    if (coarse) {
+      out.sid.transfer = reduced_transfer({coarse->body, coarse->system, coarse->basis}, {out.body, out.system, out.basis}, *nodal);
+      out.sid.transfer->coarse_model_sha256 = out.sid.provenance.model_sha256;  // the coarse SID comes from the same file (--coarse)
+    }
+    out.sid.provenance.timings_s = clock.timings();
+    if (!options.output.empty()) clock.run("write", "writing " + options.output, [&] { format::write_sid(out.sid, options.output); });
+  }
+  out.timings = clock.timings();
+  return out;
+}
+
+ModalAnalysis analyse_modes(const ModelSpec& spec, int n_modes, StageObserver& observer) {
+  StageClock clock(observer);
+  AssembledBody a = assemble(spec, true, clock);
+  ModalResult modes = clock.run("eigen", "solving for " + std::to_string(n_modes) + " modes", [&] {
+    const double scale = eigenvalue_scale(spec.material.youngs_modulus, spec.material.density, body_size(a.body));
+    return lowest_modes(a.system.K, a.system.M, std::min(n_modes, a.body.dofs.free_count() - 1), scale);
+  });
+  return {std::move(a.body), a.scalar_mass.sum(), std::move(modes), clock.timings()};
+}
+
+}  // namespace isosid::prep

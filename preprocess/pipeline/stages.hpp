@@ -1,0 +1,66 @@
+// The preprocessing pipeline's named stages: an observer told when each starts and ends
+// (progress), and the clock that runs them and keeps their times (SID provenance, reports).
+#pragma once
+#include <chrono>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace isosid::prep {
+
+using StageTimings = std::vector<std::pair<std::string, double>>;  ///< stage name, seconds
+
+/// Told about every stage; the default does nothing (no progress).
+class StageObserver {
+public:
+  virtual ~StageObserver() = default;
+  virtual void started(const std::string& /*stage*/, const std::string& /*what*/) {}
+  virtual void finished(const std::string& /*stage*/, double /*seconds*/) {}
+};
+
+/// An observer that says nothing.
+StageObserver& no_progress();
+
+/// Progress lines on stderr: "PROGRAM: what ..." and "PROGRAM: stage done in 1.234 s".
+class StderrProgress : public StageObserver {
+public:
+  explicit StderrProgress(std::string program) : program_(std::move(program)) {}
+  void started(const std::string& stage, const std::string& what) override;
+  void finished(const std::string& stage, double seconds) override;
+
+private:
+  std::string program_;
+};
+
+/// Runs stages, tells the observer and records their times in order.
+class StageClock {
+public:
+  explicit StageClock(StageObserver& observer) : observer_(observer) {}
+
+  template <class F>
+  auto run(const std::string& stage, const std::string& what, F&& f) {
+    observer_.started(stage, what);
+    const auto t0 = std::chrono::steady_clock::now();
+    auto finish = [&] {
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      timings_.emplace_back(stage, s);
+      observer_.finished(stage, s);
+    };
+    if constexpr (std::is_void_v<std::invoke_result_t<F>>) {
+      f();
+      finish();
+    } else {
+      auto result = f();
+      finish();
+      return result;
+    }
+  }
+  const StageTimings& timings() const { return timings_; }
+
+private:
+  StageObserver& observer_;
+  StageTimings timings_;
+};
+
+}  // namespace isosid::prep

@@ -1,0 +1,138 @@
+// isosid-prep's reports; see prep_report.hpp.
+#include "tools/prep_report.hpp"
+
+#include "model/placement.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+namespace isosid::prep {
+namespace {
+
+std::vector<double> as_vector(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+
+std::string format_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+std::string bracketed(const Eigen::VectorXd& v) {
+  std::string s = "[";
+  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + format_number(v(i));
+  return s + "]";
+}
+
+nlohmann::json timings_json(const StageTimings& timings) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [stage, seconds] : timings) j[stage] = seconds;
+  return j;
+}
+
+/// Size, mass and THB levels: the keys and text both reports start with.
+nlohmann::json body_json(const BodyModel& body, double mass, std::string& levels_text) {
+  nlohmann::json j;
+  j["body"] = body.spec.body_name;
+  j["analysis"] = format::to_string(body.spec.analysis);
+  j["degrees"] = body.space.degrees;
+  j["elements"] = body.space.elements.size();
+  j["control_points"] = body.space.n_functions();
+  j["nodes"] = body.dofs.node_count();
+  j["dofs"] = body.dofs.free_count();
+  j["mass_kg"] = mass;
+  if (!body.hierarchy) return j;
+  const Hierarchy& h = *body.hierarchy;
+  j["levels"] = nlohmann::json::array();
+  for (int l = 0; l < h.mesh.levels(); ++l) {
+    const auto level = std::size_t(l);
+    const ParameterBox& d = h.mesh.domains[level];
+    nlohmann::json box = nlohmann::json::array();
+    for (std::size_t k = 0; k < d.lo.size(); ++k) box.push_back({d.lo[k], d.hi[k]});
+    j["levels"].push_back({{"level", l}, {"functions", h.functions_per_level[level]}, {"elements", h.elements_per_level[level]},
+                           {"split", h.mesh.factors[level]}, {"domain", box}});
+    levels_text += "  level " + std::to_string(l) + ": " + std::to_string(h.elements_per_level[level]) + " elements, " +
+                   std::to_string(h.functions_per_level[level]) + " functions, split";
+    for (int f : h.mesh.factors[level]) levels_text += " " + std::to_string(f);
+    levels_text += ", domain";
+    for (std::size_t k = 0; k < d.lo.size(); ++k) levels_text += " [" + format_number(d.lo[k]) + ", " + format_number(d.hi[k]) + "]";
+    levels_text += "\n";
+  }
+  return j;
+}
+
+/// Where each node and stress line lies, by parameter and in metres, and which of the two
+/// the model file gave.
+nlohmann::json placement_json(const ModelSpec& spec, std::string& text) {
+  auto located = [](const BodyPoint& p) { return nlohmann::json{{"parameter", as_vector(p.parameter)}, {"point_m", as_vector(p.x)}}; };
+  auto described = [](const BodyPoint& p) { return "parameter " + bracketed(p.parameter) + " = " + bracketed(p.x) + " m"; };
+  auto given = [](const GivenPoint& g) { return std::string(g.physical ? "point" : "parameter"); };
+  nlohmann::json j = {{"nodes", nlohmann::json::array()}, {"stress_lines", nlohmann::json::array()}};
+  for (const NodeSpec& n : spec.nodes) {
+    const BodyPoint p = place(spec.patch, n.at);
+    nlohmann::json node = located(p);
+    node["name"] = n.name;
+    node["given"] = given(n.at);
+    j["nodes"].push_back(node);
+    text += "  node " + n.name + " at " + described(p) + " (given by " + given(n.at) + ")\n";
+  }
+  for (const StressLineSpec& l : spec.stress_lines) {
+    const std::vector<BodyPoint> points = line_points(spec.patch, l.from, l.to, l.points);
+    j["stress_lines"].push_back({{"name", l.name}, {"given", given(l.from)}, {"points", l.points},
+                                 {"from", located(points.front())}, {"to", located(points.back())}});
+    text += "  stress line " + l.name + ", " + std::to_string(l.points) + " points from " + described(points.front()) + " to " +
+            described(points.back()) + " (given by " + given(l.from) + "s)\n";
+  }
+  return j;
+}
+
+}  // namespace
+
+void print_modal_report(const ModalAnalysis& analysis, bool as_json) {
+  const BodyModel& body = analysis.body;
+  std::string levels_text;
+  nlohmann::json j = body_json(body, analysis.mass, levels_text);
+  const Eigen::VectorXd f = analysis.modes.frequencies_hz();
+  j["rigid_body_modes"] = analysis.modes.rigid_body_modes;
+  j["frequencies_hz"] = as_vector(f);
+  j["timings_s"] = timings_json(analysis.timings);
+  if (as_json) {
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::printf("%s (%s): %zu elements, degrees", body.spec.body_name.c_str(), format::to_string(body.spec.analysis).c_str(),
+              body.space.elements.size());
+  for (int p : body.space.degrees) std::printf(" %d", p);
+  std::printf(", %d free DOFs, mass %.6g kg\n%s", body.dofs.free_count(), analysis.mass, levels_text.c_str());
+  std::printf("%d rigid-body modes; frequencies [Hz]:", analysis.modes.rigid_body_modes);
+  for (Eigen::Index i = 0; i < f.size(); ++i) std::printf("%s%.6g", i % 6 ? "  " : "\n  ", f(i));
+  std::printf("\n");
+}
+
+void print_sid_report(const PreparedBody& prepared, const std::string& output, bool as_json) {
+  const BodyModel& body = prepared.body;
+  const format::Sid& sid = prepared.sid;
+  std::string levels_text, placement_text;
+  nlohmann::json j = body_json(body, prepared.scalar_mass.sum(), levels_text);
+  j["nq"] = sid.nq();
+  j["n_low"] = sid.refmod.n_low;
+  j["n_high"] = sid.refmod.n_high();
+  j["reduction"] = prepared.basis.method;
+  j["removed_rigid_directions"] = prepared.basis.removed_rigid;
+  j["frequencies_hz"] = as_vector(sid.refmod.frequencies_hz);
+  j["contact_points"] = nlohmann::json::object();
+  for (const auto& c : sid.contact_surfaces) j["contact_points"][c.name] = c.points();
+  j["placement"] = placement_json(body.spec, placement_text);
+  j["output"] = output;
+  j["timings_s"] = timings_json(prepared.timings);
+  if (as_json) {
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::printf("%s: %s reduction, nq = %lld (%d low + %d high), %d free DOFs -> %s\n", body.spec.body_name.c_str(),
+              prepared.basis.method.c_str(), static_cast<long long>(sid.nq()), sid.refmod.n_low, sid.refmod.n_high(),
+              body.dofs.free_count(), output.c_str());
+  std::printf("%s%s", levels_text.c_str(), placement_text.c_str());
+}
+
+}  // namespace isosid::prep
