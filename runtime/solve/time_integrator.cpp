@@ -27,6 +27,9 @@ struct TimeIntegrator::Impl {
   /// An exception from the right-hand side: it must not unwind through SUNDIALS' C frames,
   /// so the callback stores it, fails the step, and advance() rethrows it.
   mutable std::exception_ptr pending;
+  /// ARKODE's last error message: kept for the failure message instead of printed, so that a
+  /// failed run still says what went wrong in one line.
+  std::string last_message;
 
   Impl(const MultibodySystem& s, bool imp) : system(s), implicit(imp) {}
   ~Impl() {
@@ -53,6 +56,12 @@ struct TimeIntegrator::Impl {
     return self->guarded([&] {
       if (self->owner->step_callback_) self->owner->step_callback_(t, N_VGetArrayPointer(y));
     });
+  }
+  static void record_message(int, const char*, const char*, char* message, void* data) {
+    std::string& text = static_cast<Impl*>(data)->last_message;
+    text = message;
+    for (char& c : text)
+      if (c == '\n') c = ' ';
   }
   template <class F>
   int guarded(F&& f) const {
@@ -101,6 +110,7 @@ TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSe
     m.memory = ARKStepCreate(nullptr, Impl::rhs, 0.0, m.y, m.context);
     if (!m.memory) throw format::ComputationError("SUNDIALS: ARKStepCreate failed");
     check(ARKStepSetUserData(m.memory, &m), "user data");
+    check(ARKStepSetErrHandlerFn(m.memory, Impl::record_message, &m), "error handler");
     check(ARKStepSStolerances(m.memory, s.rtol, s.atol), "tolerances");
     check(ARKStepSetMaxStep(m.memory, s.max_step), "max step");
     check(ARKStepSetMaxNumSteps(m.memory, s.max_steps), "max steps");
@@ -119,6 +129,7 @@ TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSe
     m.memory = ERKStepCreate(Impl::rhs, 0.0, m.y, m.context);
     if (!m.memory) throw format::ComputationError("SUNDIALS: ERKStepCreate failed");
     check(ERKStepSetUserData(m.memory, &m), "user data");
+    check(ERKStepSetErrHandlerFn(m.memory, Impl::record_message, &m), "error handler");
     check(ERKStepSetTableNum(m.memory, ARKODE_DORMAND_PRINCE_7_4_5), "Dormand-Prince table");
     check(ERKStepSStolerances(m.memory, s.rtol, s.atol), "tolerances");
     check(ERKStepSetMaxStep(m.memory, s.max_step), "max step");
@@ -147,7 +158,8 @@ std::vector<TimeIntegrator::GapEvent> TimeIntegrator::advance(double tout, doubl
         "time integration failed" + (body.empty() ? "" : " in body '" + body + "'") +
         " (SUNDIALS flag " + std::to_string(flag) +
         (flag == -4 ? ": error test failed repeatedly, the step size fell to its minimum (penalty too stiff?)" : "") +
-        (flag == -1 ? ": the step limit max_steps was reached" : "") + ")");
+        (flag == -1 ? ": the step limit max_steps was reached" : "") +
+        (flag != -4 && flag != -1 && !m.last_message.empty() ? ": " + m.last_message : "") + ")");
   }
   if (stats().steps > max_steps_) {
     const std::string body = m.worst_body();

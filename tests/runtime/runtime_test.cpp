@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 using namespace isosid;
@@ -204,6 +205,25 @@ TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run at a sample and keep its result
   }
 }
 
+TEST_CASE("a scene whose model isosid-prep refuses: exit 2 and isosid-prep's one line", "[runtime]") {
+  const test::ScratchDir dir("bad-model");
+  std::ifstream golden(kGolden + "/sphere_small.model.toml");
+  std::string model((std::istreambuf_iterator<char>(golden)), std::istreambuf_iterator<char>());
+  model.replace(model.find("youngs_modulus = 7.28e10"), 24, "youngs_modulus = -1.0");
+  std::ofstream(dir.path("bad.model.toml")) << model;
+  std::string scene = kImpact;
+  const std::string sid = "sid = \"" + kGolden + "/sphere_small.sid.h5\"";
+  scene.replace(scene.find(sid), sid.size(), "sid = \"bad.sid.h5\"\nmodel = \"bad.model.toml\"");
+  std::ofstream(dir.path("s.scene.toml")) << scene;
+  const auto r = test::run_program("ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_RUN_EXE + " -q " +
+                                   dir.path("s.scene.toml") + " -o " + dir.path("out"));
+  INFO(r.err);
+  CHECK(r.exit_status == 2);
+  CHECK_THAT(r.err, Contains("isosid-run: error: ") && Contains("bad.model.toml") && Contains("youngs_modulus"));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(std::filesystem::exists(dir.path("out")));
+}
+
 TEST_CASE("bodies may start interpenetrating where the scene allows it", "[runtime]") {
   const test::ScratchDir dir("initial-penetration");
   std::string scene = kImpact;
@@ -228,6 +248,7 @@ TEST_CASE("a run that cannot proceed stops naming time and body and keeps its re
   INFO(r.err);
   CHECK(r.exit_status == 1);
   CHECK_THAT(r.err, Contains("max_steps = 3000") && Contains("body 'sphere'") && Contains("at t = "));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);  // ARKODE's own messages are kept, not printed
   const json s = json::parse(std::ifstream(dir.path("out/summary.json")));
   CHECK(s["status"] == "failed");
   CHECK(s["steps"].get<long>() >= 3000);

@@ -12,18 +12,40 @@ using namespace isosid;
 
 namespace {
 
-/// A 3D lumped body whose four contact points sit 0.1-0.2 m below the plane y = `plane_y`.
+/// A 3D lumped body moving at `velocity` and a plane (normal +y) 0.1 m + `plane_shift` above
+/// the highest of its four contact points.
 struct PenetratingBody {
   format::Sid sid = test::lumped_sid(test::random_lumped_body(12, 5, 7));
   run::ShapeSpec plane;
-  run::ContactSpec contact;
-  PenetratingBody(double penalty, double friction) {
+  run::BodySpec spec;
+  PenetratingBody(const Eigen::Vector3d& velocity, double plane_shift = 0) {
     const format::ContactSurface& s = sid.contact_surfaces.front();
     plane.kind = run::ShapeSpec::Kind::Plane;
     plane.name = "ground";
     plane.normal = {0, 1, 0};
-    plane.point = {0, s.position.col(1).maxCoeff() + 0.1, 0};
-    contact = {"impact", "body", s.name, "ground", "", penalty, friction, 1e-6};
+    plane.point = {0, s.position.col(1).maxCoeff() + 0.1 + plane_shift, 0};
+    spec.name = "body";
+    spec.velocity = velocity;
+  }
+  const format::ContactSurface& surface() const { return sid.contact_surfaces.front(); }
+};
+
+/// The body, the plane and their contact at the initial state, evaluated once.
+struct EvaluatedContact {
+  run::FloatingBody body;
+  run::ShapeTarget ground;
+  run::SurfaceContact contact;
+  Eigen::VectorXd y;
+  run::GeneralizedForce force;
+  run::ContactState state;
+  EvaluatedContact(const PenetratingBody& setup, double penalty, double friction)
+      : body(setup.spec, setup.sid, run::Dimension::Solid),
+        ground(setup.plane),
+        contact({"impact", "body", setup.surface().name, "ground", "", penalty, friction, 1e-6}, body, ground),
+        y(body.state_size()) {
+    body.initial_state(y.data());
+    force.reset(body.nq());
+    state = contact.apply(y.data(), force, nullptr);
   }
 };
 
@@ -31,26 +53,18 @@ struct PenetratingBody {
 
 TEST_CASE("SurfaceContact: a prescribed penetration gives the penalty force of every point", "[runtime][unit]") {
   const double penalty = 1e10, mu = 0.3;
-  PenetratingBody setup(penalty, mu);
-  run::BodySpec spec;
-  spec.name = "body";
-  spec.velocity = {0.2, 0.0, 0.1};  // sliding along the plane
-  const run::FloatingBody body(spec, setup.sid, run::Dimension::Solid);
-  const run::ShapeTarget ground(setup.plane);
-  const run::SurfaceContact contact(setup.contact, body, ground);
-  Eigen::VectorXd y(body.state_size());
-  body.initial_state(y.data());
-  run::GeneralizedForce force;
-  force.reset(body.nq());
-  const run::ContactState state = contact.apply(y.data(), force, nullptr);
+  const PenetratingBody setup({0.2, 0.0, 0.1});  // sliding along the plane
+  const EvaluatedContact evaluated(setup, penalty, mu);
+  const run::ContactState& state = evaluated.state;
+  const run::GeneralizedForce& force = evaluated.force;
 
   // the penalty law, point by point: c_p |g| w along the plane normal, plus regularized
   // Coulomb friction -mu v_t / sqrt(|v_t|^2 + eps^2) per unit normal force
-  const format::ContactSurface& s = setup.sid.contact_surfaces.front();
-  const Eigen::Vector3d v_t = spec.velocity;
+  const format::ContactSurface& s = setup.surface();
+  const Eigen::Vector3d v_t = setup.spec.velocity;
   const Eigen::Vector3d friction = -mu * v_t / std::sqrt(v_t.squaredNorm() + 1e-12);
   Eigen::Vector3d total = Eigen::Vector3d::Zero();
-  Eigen::VectorXd elastic = Eigen::VectorXd::Zero(body.nq());
+  Eigen::VectorXd elastic = Eigen::VectorXd::Zero(evaluated.body.nq());
   double energy = 0;
   for (Eigen::Index g = 0; g < s.points(); ++g) {
     const double gap = s.position(g, 1) - setup.plane.point.y();
@@ -75,30 +89,17 @@ TEST_CASE("SurfaceContact: a prescribed penetration gives the penalty force of e
 }
 
 TEST_CASE("SurfaceContact: a surface clear of the target carries no force", "[runtime][unit]") {
-  PenetratingBody setup(1e10, 0.3);
-  setup.plane.point.y() -= 0.5;  // 0.3 m and more below every point
-  run::BodySpec spec;
-  spec.name = "body";
-  const run::FloatingBody body(spec, setup.sid, run::Dimension::Solid);
-  const run::ShapeTarget ground(setup.plane);
-  const run::SurfaceContact contact(setup.contact, body, ground);
-  Eigen::VectorXd y(body.state_size());
-  body.initial_state(y.data());
-  run::GeneralizedForce force;
-  force.reset(body.nq());
-  const run::ContactState state = contact.apply(y.data(), force, nullptr);
-  CHECK(state.active_points == 0);
-  CHECK(state.force.norm() == 0);
-  CHECK(contact.min_gap(y.data()) > 0.25);
+  const PenetratingBody setup(Eigen::Vector3d::Zero(), -0.5);  // the plane 0.3 m and more below every point
+  const EvaluatedContact evaluated(setup, 1e10, 0.3);
+  CHECK(evaluated.state.active_points == 0);
+  CHECK(evaluated.state.force.norm() == 0);
+  CHECK(evaluated.contact.min_gap(evaluated.y.data()) > 0.25);
 }
 
 TEST_CASE("SurfaceContact: without a penalty in the scene it takes 1000 E*/h", "[runtime][unit]") {
-  PenetratingBody setup(0.0, 0.0);  // no penalty given
-  run::BodySpec spec;
-  spec.name = "body";
-  const run::FloatingBody body(spec, setup.sid, run::Dimension::Solid);
-  const run::ShapeTarget ground(setup.plane);
-  const run::SurfaceContact contact(setup.contact, body, ground);
+  const PenetratingBody setup(Eigen::Vector3d::Zero());
+  const EvaluatedContact evaluated(setup, 0.0, 0.0);  // no penalty given
+  const run::SurfaceContact& contact = evaluated.contact;
   // every point of the lumped surface is its own element of area 1e-5 .. 4e-5 m^2: h = sqrt(1e-5);
   // a fixed plane is rigid: E* = E / (1 - nu^2)
   const format::Material& m = setup.sid.material;
@@ -109,9 +110,9 @@ TEST_CASE("SurfaceContact: without a penalty in the scene it takes 1000 E*/h", "
   // two elastic bodies add their compliances
   format::Sid aluminium = setup.sid;
   aluminium.material = {70e9, 0.33, 2700};
-  run::BodySpec other = spec;
+  run::BodySpec other = setup.spec;
   other.name = "other";
   const run::FloatingBody master(other, aluminium, run::Dimension::Solid);
-  CHECK(run::combined_modulus(body, &master) ==
+  CHECK(run::combined_modulus(evaluated.body, &master) ==
         Approx(1 / ((1 - 0.09) / m.youngs_modulus + (1 - 0.33 * 0.33) / 70e9)).epsilon(1e-12));
 }
