@@ -1,5 +1,5 @@
 // isosid-info: what a SID file holds (body, invariants, modes, contact data, provenance).
-#include "isosid/format/cli_parse.hpp"
+#include "isosid/common/cli_parse.hpp"
 #include "isosid/format/rigid_invariants.hpp"
 #include "isosid/format/sid_io.hpp"
 
@@ -131,13 +131,13 @@ void print_text(const Sid& sid, std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return run_guarded("isosid-info", [&] {
+  return isosid::common::run_guarded("isosid-info", [&] {
     CLI::App app{"Shows what a SID file holds: body, mass, centre of mass, inertia, modes, contact data.", "isosid-info"};
     std::string file;
     bool as_json = false;
     app.add_option("file", file, "SID file (.sid.h5)")->required();
     app.add_flag("--json", as_json, "print JSON instead of text");
-    if (auto status = parse_command_line(app, argc, argv)) return *status;
+    if (auto status = isosid::common::parse_command_line(app, argc, argv)) return *status;
     const Sid sid = read_sid(file);
     if (as_json)
       std::cout << describe(sid).dump(2) << "\n";

@@ -2,7 +2,7 @@
 #include "sid/sid_builder.hpp"
 
 #include "isosid/format/error.hpp"
-#include "isosid/format/sha256.hpp"
+#include "isosid/common/sha256.hpp"
 #include "isosid/version.hpp"
 #include "reduce/modal_analysis.hpp"
 #include "sid/contact_data.hpp"
@@ -127,7 +127,7 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   mesh.free_dofs = body.dofs.free_count();
 
   sid.provenance.model_file = spec.file;
-  sid.provenance.model_sha256 = std::filesystem::is_regular_file(spec.file) ? format::sha256_file(spec.file) : "";
+  sid.provenance.model_sha256 = std::filesystem::is_regular_file(spec.file) ? common::sha256_file(spec.file) : "";
   sid.provenance.program_version = kProgramVersion;
   sid.provenance.created_utc = utc_now();
   return sid;

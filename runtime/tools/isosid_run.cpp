@@ -1,7 +1,7 @@
 // isosid-run: simulates a scene of reduced flexible bodies (SIDs) with Gauss-point penalty
 // contact and writes results.h5 and summary.json.
 #include "isosid/format/atomic_output.hpp"
-#include "isosid/format/cli_parse.hpp"
+#include "isosid/common/cli_parse.hpp"
 #include "output/recorder.hpp"
 #include "solve/multibody_system.hpp"
 #include "solve/time_integrator.hpp"
@@ -29,7 +29,7 @@ std::string diverged_body(const run::MultibodySystem& system, const Eigen::Vecto
 }  // namespace
 
 int main(int argc, char** argv) {
-  return format::run_guarded("isosid-run", [&] {
+  return common::run_guarded("isosid-run", [&] {
     CLI::App app{"Simulates impacts of reduced flexible bodies (SIDs) described by a scene file.", "isosid-run"};
     std::string scene_file, out_dir;
     bool as_json = false, quiet = false;
@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
     app.add_option("-o,--output", out_dir, "results folder (default: out/<scene name>)");
     app.add_flag("--json", as_json, "print summary.json to stdout");
     app.add_flag("-q,--quiet", quiet, "no progress on stderr");
-    if (auto status = format::parse_command_line(app, argc, argv)) return *status;
+    if (auto status = common::parse_command_line(app, argc, argv)) return *status;
 
     const run::Scene scene = run::read_scene_file(scene_file);
     if (out_dir.empty()) {
@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
     }
     if (!failure.empty()) {
       std::cerr << "isosid-run: failed: " << failure << "; results so far are in " << out_dir << "\n";
-      return format::kExitFailure;
+      return common::kExitFailure;
     }
     return 0;
   });
