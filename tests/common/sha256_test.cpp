@@ -42,7 +42,7 @@ TEST_CASE("SHA-256 fed in chunks equals SHA-256 of the whole message", "[common]
   }
 }
 
-TEST_CASE("SHA-256 of a file is that of its bytes; a missing file is bad input", "[common][sha256]") {
+TEST_CASE("SHA-256 of a file is that of its bytes, and a missing file is bad input", "[common][sha256]") {
   const isosid::test::ScratchDir dir("sha256");
   std::ofstream(dir.path("million_a.txt"), std::ios::binary) << kMillionA;
   CHECK(sha256_file(dir.path("million_a.txt")) == kMillionADigest);
