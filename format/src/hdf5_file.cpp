@@ -33,6 +33,12 @@ Handle intermediate_groups() {
   return Handle(p, H5Pclose);
 }
 
+/// Creates a dataset at `path` (and any missing groups on the way); invalid on failure.
+Handle create_dataset(hid_t file, const std::string& path, hid_t type, hid_t space, hid_t dcpl = H5P_DEFAULT) {
+  Handle lcpl = intermediate_groups();
+  return Handle(H5Dcreate2(file, path.c_str(), type, space, lcpl.get(), dcpl, H5P_DEFAULT), H5Dclose);
+}
+
 std::string shape_text(const std::vector<hsize_t>& dims) {
   std::string s = "(";
   for (std::size_t i = 0; i < dims.size(); ++i) s += (i ? ", " : "") + std::to_string(dims[i]);
@@ -82,7 +88,6 @@ void Writer::group(const std::string& path) {
 
 void Writer::write_doubles(const std::string& path, const std::vector<hsize_t>& dims, const double* data,
                            const std::string& units) {
-  Handle lcpl = intermediate_groups();
   Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
   const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
   // Large datasets (Taylor M1 tensors of big bases are mostly zeros for symmetric bodies) are
@@ -99,9 +104,7 @@ void Writer::write_doubles(const std::string& path, const std::vector<hsize_t>& 
       H5Pset_deflate(dcpl.get(), 4);
     }
   }
-  Handle ds(H5Dcreate2(file_.get(), path.c_str(), H5T_IEEE_F64LE, space.get(), lcpl.get(), dcpl.get(),
-                       H5P_DEFAULT),
-            H5Dclose);
+  Handle ds = create_dataset(file_.get(), path, H5T_IEEE_F64LE, space.get(), dcpl.get());
   if (!ds.valid()) fail(path, "cannot create dataset");
   if (count > 0 && H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
     fail(path, "cannot write dataset");
@@ -132,22 +135,17 @@ void Writer::tensor(const std::string& path, const std::vector<Eigen::MatrixXd>&
 }
 
 void Writer::integers(const std::string& path, const Eigen::VectorXi& value) {
-  Handle lcpl = intermediate_groups();
   const hsize_t dims[1] = {hsize_t(value.size())};
   Handle space(H5Screate_simple(1, dims, nullptr), H5Sclose);
-  Handle ds(H5Dcreate2(file_.get(), path.c_str(), H5T_STD_I32LE, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
-            H5Dclose);
+  Handle ds = create_dataset(file_.get(), path, H5T_STD_I32LE, space.get());
   if (!ds.valid()) fail(path, "cannot create dataset");
   if (value.size() > 0 && H5Dwrite(ds.get(), H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.data()) < 0)
     fail(path, "cannot write dataset");
 }
 
 void Writer::scalar(const std::string& path, double value, const std::string& units) {
-  Handle lcpl = intermediate_groups();
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle ds(H5Dcreate2(file_.get(), path.c_str(), H5T_IEEE_F64LE, space.get(), lcpl.get(), H5P_DEFAULT,
-                       H5P_DEFAULT),
-            H5Dclose);
+  Handle ds = create_dataset(file_.get(), path, H5T_IEEE_F64LE, space.get());
   if (!ds.valid() || H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, &value) < 0)
     fail(path, "cannot write scalar");
   ds.reset();
@@ -155,32 +153,26 @@ void Writer::scalar(const std::string& path, double value, const std::string& un
 }
 
 void Writer::integer(const std::string& path, long long value) {
-  Handle lcpl = intermediate_groups();
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle ds(H5Dcreate2(file_.get(), path.c_str(), H5T_STD_I64LE, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
-            H5Dclose);
+  Handle ds = create_dataset(file_.get(), path, H5T_STD_I64LE, space.get());
   if (!ds.valid() || H5Dwrite(ds.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, &value) < 0)
     fail(path, "cannot write integer");
 }
 
 void Writer::string(const std::string& path, const std::string& value) {
-  Handle lcpl = intermediate_groups();
   Handle type = vlen_string_type();
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle ds(H5Dcreate2(file_.get(), path.c_str(), type.get(), space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
-            H5Dclose);
+  Handle ds = create_dataset(file_.get(), path, type.get(), space.get());
   const char* text = value.c_str();
   if (!ds.valid() || H5Dwrite(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &text) < 0)
     fail(path, "cannot write string");
 }
 
 void Writer::strings(const std::string& path, const std::vector<std::string>& value) {
-  Handle lcpl = intermediate_groups();
   Handle type = vlen_string_type();
   const hsize_t dims[1] = {hsize_t(value.size())};
   Handle space(H5Screate_simple(1, dims, nullptr), H5Sclose);
-  Handle ds(H5Dcreate2(file_.get(), path.c_str(), type.get(), space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
-            H5Dclose);
+  Handle ds = create_dataset(file_.get(), path, type.get(), space.get());
   if (!ds.valid()) fail(path, "cannot create string list");
   std::vector<const char*> texts;
   for (const auto& s : value) texts.push_back(s.c_str());

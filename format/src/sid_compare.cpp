@@ -2,7 +2,7 @@
 #include "isosid/format/sid_compare.hpp"
 
 #include "isosid/format/rigid_invariants.hpp"
-#include "sid_layout.hpp"
+#include "isosid/format/sid_layout.hpp"
 
 #include <Eigen/SVD>
 #include <algorithm>
@@ -199,29 +199,29 @@ void compare_terms(const Sid& a, const Sid& b, const MatrixXd& Q, const Scales& 
   auto unchanged = [](const MatrixXd& X) { return X; };
   auto congruent = [&](const MatrixXd& X) { return MatrixXd(Q.transpose() * X * Q); };
   struct Rule {
-    const char* name;
+    Taylor Sid::*member;
     std::function<MatrixXd(const MatrixXd&)> m0;
     std::function<MatrixXd(const MatrixXd&)> m1_each;
     double floor0, floor1;
   };
   const std::vector<Rule> rules = {
-      {"mdCM", unchanged, unchanged, sm * L, sm},
-      {"J", unchanged, unchanged, sm * sm * L * L, sm * L},
-      {"Ct", same_rows, same_rows, sm, 1.0},
-      {"Cr", same_rows, same_rows, sm * L, 1.0},
-      {"Me", congruent, congruent, 1.0, 1.0},
-      {"Gr", [&](const MatrixXd& X) { return blocks_modal(X, Q, 3); }, [&](const MatrixXd& X) { return blocks_modal(X, Q, 3); }, sm * L, 1.0},
-      {"Ge", [&](const MatrixXd& X) { return blocks_modal(rows_modal(X, Q), Q, 3); }, unchanged, 1.0, 1.0},
-      {"Oe", same_rows, same_rows, sm * L, 1.0},
-      {"ksigma", same_rows, same_rows, s.omega2 * sm * L, s.omega2},
-      {"Ke", congruent, congruent, s.omega2, s.omega2},
-      {"De", congruent, congruent, std::sqrt(s.omega2), std::sqrt(s.omega2)},
+      {&Sid::mdCM, unchanged, unchanged, sm * L, sm},
+      {&Sid::J, unchanged, unchanged, sm * sm * L * L, sm * L},
+      {&Sid::Ct, same_rows, same_rows, sm, 1.0},
+      {&Sid::Cr, same_rows, same_rows, sm * L, 1.0},
+      {&Sid::Me, congruent, congruent, 1.0, 1.0},
+      {&Sid::Gr, [&](const MatrixXd& X) { return blocks_modal(X, Q, 3); }, [&](const MatrixXd& X) { return blocks_modal(X, Q, 3); }, sm * L, 1.0},
+      {&Sid::Ge, [&](const MatrixXd& X) { return blocks_modal(rows_modal(X, Q), Q, 3); }, unchanged, 1.0, 1.0},
+      {&Sid::Oe, same_rows, same_rows, sm * L, 1.0},
+      {&Sid::ksigma, same_rows, same_rows, s.omega2 * sm * L, s.omega2},
+      {&Sid::Ke, congruent, congruent, s.omega2, s.omega2},
+      {&Sid::De, congruent, congruent, std::sqrt(s.omega2), std::sqrt(s.omega2)},
   };
-  for (const auto& spec : layout::terms()) {
-    const Rule& rule = *std::find_if(rules.begin(), rules.end(), [&](const Rule& r) { return spec.name == std::string(r.name); });
-    const Taylor& ta = a.*(spec.member);
-    const Taylor& tb = b.*(spec.member);
-    const std::string p = layout::term_path(spec.name);
+  for (const layout::Term& term : layout::terms()) {
+    const Rule& rule = *std::find_if(rules.begin(), rules.end(), [&](const Rule& r) { return r.member == term.member; });
+    const Taylor& ta = a.*(term.member);
+    const Taylor& tb = b.*(term.member);
+    const std::string p = term.item.at();
     cmp.values(p + "/M0", ta.M0, rule.m0(tb.M0), rule.floor0);
     cmp.slices(p + "/M1", ta.M1, tb.M1.empty() ? tb.M1 : slices_modal(tb.M1, Q, rule.m1_each), rule.floor1);
   }
@@ -231,7 +231,7 @@ void compare_parts(const Sid& a, const Sid& b, const MatrixXd& Q, const Scales& 
   const double inv_sm = 1.0 / s.sqrt_m, L = s.L;
   for (std::size_t i = 0; i < a.nodes.size(); ++i) {
     const Node &na = a.nodes[i], &nb = b.nodes[i];
-    const std::string p = layout::node_path(na.name);
+    const std::string p = layout::node::group.at(na.name);
     cmp.values(p + "/origin/M0", na.origin.M0, nb.origin.M0, L);
     cmp.slices(p + "/origin/M1", na.origin.M1, nb.origin.M1.empty() ? nb.origin.M1 : slices_modal(nb.origin.M1, Q, [](const MatrixXd& x) { return x; }), inv_sm);
     cmp.values(p + "/phi", na.phi, cols_modal(nb.phi, Q), inv_sm);
@@ -241,7 +241,7 @@ void compare_parts(const Sid& a, const Sid& b, const MatrixXd& Q, const Scales& 
   }
   for (std::size_t i = 0; i < a.contact_surfaces.size(); ++i) {
     const ContactSurface &ca = a.contact_surfaces[i], &cb = b.contact_surfaces[i];
-    const std::string p = layout::contact_path(ca.name);
+    const std::string p = layout::contact::group.at(ca.name);
     cmp.values(p + "/parameter", ca.parameter, cb.parameter, 1.0);
     cmp.values(p + "/element", ca.element.cast<double>(), cb.element.cast<double>(), 0.0);
     cmp.values(p + "/position", ca.position, cb.position, L);
@@ -251,7 +251,7 @@ void compare_parts(const Sid& a, const Sid& b, const MatrixXd& Q, const Scales& 
   }
   for (std::size_t i = 0; i < a.master_patches.size(); ++i) {
     const MasterPatch &ma = a.master_patches[i], &mb = b.master_patches[i];
-    const std::string p = layout::master_path(ma.name);
+    const std::string p = layout::master::group.at(ma.name);
     cmp.same(p + "/degrees", ma.degrees.size(), mb.degrees.size());
     for (std::size_t d = 0; d < ma.degrees.size() && d < mb.degrees.size(); ++d) {
       cmp.same(p + "/degrees[" + std::to_string(d) + "]", ma.degrees[d], mb.degrees[d]);
@@ -263,7 +263,7 @@ void compare_parts(const Sid& a, const Sid& b, const MatrixXd& Q, const Scales& 
   }
   for (std::size_t i = 0; i < a.stress_recovery.size(); ++i) {
     const StressRecovery &sa = a.stress_recovery[i], &sb = b.stress_recovery[i];
-    const std::string p = layout::stress_path(sa.name);
+    const std::string p = layout::stress::group.at(sa.name);
     cmp.same(p + "/components", sa.components.size(), sb.components.size());
     cmp.values(p + "/position", sa.position, sb.position, L);
     cmp.values(p + "/S", sa.S, cols_modal(sb.S, Q), s.E * inv_sm / L);
@@ -295,13 +295,13 @@ bool compare_structure(const Sid& a, const Sid& b, Comparer& cmp, const Comparis
   names("/stress", a.stress_recovery, b.stress_recovery);
   if (out.differences.size() != before) return false;
   for (std::size_t i = 0; i < a.contact_surfaces.size(); ++i)
-    cmp.same(layout::contact_path(a.contact_surfaces[i].name) + " points", a.contact_surfaces[i].points(),
+    cmp.same(layout::contact::group.at(a.contact_surfaces[i].name) + " points", a.contact_surfaces[i].points(),
              b.contact_surfaces[i].points());
   for (std::size_t i = 0; i < a.master_patches.size(); ++i)
-    cmp.same(layout::master_path(a.master_patches[i].name) + " control points", a.master_patches[i].weights.size(),
+    cmp.same(layout::master::group.at(a.master_patches[i].name) + " control points", a.master_patches[i].weights.size(),
              b.master_patches[i].weights.size());
   for (std::size_t i = 0; i < a.stress_recovery.size(); ++i)
-    cmp.same(layout::stress_path(a.stress_recovery[i].name) + " points", a.stress_recovery[i].position.rows(),
+    cmp.same(layout::stress::group.at(a.stress_recovery[i].name) + " points", a.stress_recovery[i].position.rows(),
              b.stress_recovery[i].position.rows());
   return out.differences.size() == before;
 }

@@ -1,9 +1,9 @@
-// Consistency checks of a SID; the field names are the HDF5 paths of the layout.
+// Consistency checks of a SID; field names, shape rules and list groups from the layout table.
 #include "isosid/format/sid_validate.hpp"
 
-#include "isosid/format/error.hpp"
 #include "isosid/format/bspline_basis.hpp"
-#include "sid_layout.hpp"
+#include "isosid/format/error.hpp"
+#include "isosid/format/sid_layout.hpp"
 
 #include <cmath>
 #include <set>
@@ -13,6 +13,7 @@ namespace {
 
 using Eigen::Index;
 using Eigen::MatrixXd;
+using namespace layout;
 
 class Checker {
 public:
@@ -39,10 +40,16 @@ public:
                       std::to_string(rows) + ", " + std::to_string(cols) + ")");
     finite(field, m);
   }
-  void taylor(const std::string& field, const Taylor& t, Index rows, Index cols, Index nq, bool order1_allowed) const {
+  /// The item's matrix shape rule, evaluated with `sizes`.
+  void shape(const layout::Item& item, std::string_view name, const MatrixXd& m, const layout::Sizes& sizes) const {
+    shape(item.at(name), m, sizes(item.shape.rows), sizes(item.shape.cols));
+  }
+  void taylor(const layout::Item& item, std::string_view name, const Taylor& t, const layout::Sizes& sizes) const {
+    const std::string field = item.at(name);
+    const Index rows = sizes(item.shape.rows), cols = sizes(item.shape.cols), nq = sizes(layout::kNq);
     shape(field + "/M0", t.M0, rows, cols);
     if (t.M1.empty()) return;
-    require(order1_allowed, field + "/M1", "this term has order 0 and takes no M1");
+    require(item.kind == layout::Kind::TaylorOrder1, field + "/M1", "this term has order 0 and takes no M1");
     require(Index(t.M1.size()) == nq, field + "/M1",
             "has " + std::to_string(t.M1.size()) + " slices, expected nq = " + std::to_string(nq));
     for (std::size_t k = 0; k < t.M1.size(); ++k) shape(field + "/M1[" + std::to_string(k) + "]", t.M1[k], rows, cols);
@@ -61,160 +68,154 @@ private:
 };
 
 void check_body(const Checker& c, const Sid& sid) {
-  c.require(!sid.body_name.empty(), "/body/name", "empty body name");
+  c.require(!sid.body_name.empty(), body::name.at(), "empty body name");
   const Material& m = sid.material;
-  c.finite("/body/youngs_modulus", m.youngs_modulus);
-  c.require(m.youngs_modulus > 0, "/body/youngs_modulus", "must be positive");
-  c.finite("/body/poisson_ratio", m.poisson_ratio);
-  c.require(m.poisson_ratio > -1 && m.poisson_ratio < 0.5, "/body/poisson_ratio", "must lie in (-1, 0.5)");
-  c.finite("/body/density", m.density);
-  c.require(m.density > 0, "/body/density", "must be positive");
-  c.finite("/body/thickness", sid.thickness);
-  c.require(sid.thickness > 0, "/body/thickness", "must be positive");
+  c.finite(body::youngs_modulus.at(), m.youngs_modulus);
+  c.require(m.youngs_modulus > 0, body::youngs_modulus.at(), "must be positive");
+  c.finite(body::poisson_ratio.at(), m.poisson_ratio);
+  c.require(m.poisson_ratio > -1 && m.poisson_ratio < 0.5, body::poisson_ratio.at(), "must lie in (-1, 0.5)");
+  c.finite(body::density.at(), m.density);
+  c.require(m.density > 0, body::density.at(), "must be positive");
+  c.finite(body::thickness.at(), sid.thickness);
+  c.require(sid.thickness > 0, body::thickness.at(), "must be positive");
 }
 
 void check_refmod(const Checker& c, const Sid& sid) {
   const RefMod& r = sid.refmod;
   const Index nq = r.nq();
-  c.finite("/refmod/mass", r.mass);
-  c.require(r.mass > 0, "/refmod/mass", "must be positive, is " + std::to_string(r.mass));
-  c.finite("/refmod/frequencies_hz", r.frequencies_hz);
+  c.finite(refmod::mass.at(), r.mass);
+  c.require(r.mass > 0, refmod::mass.at(), "must be positive, is " + std::to_string(r.mass));
+  c.finite(refmod::frequencies_hz.at(), r.frequencies_hz);
   for (Index i = 0; i < nq; ++i)
-    c.require(r.frequencies_hz(i) >= 0, "/refmod/frequencies_hz", "negative frequency at " + std::to_string(i));
-  c.require(Index(r.mode_names.size()) == nq, "/refmod/mode_names",
+    c.require(r.frequencies_hz(i) >= 0, refmod::frequencies_hz.at(), "negative frequency at " + std::to_string(i));
+  c.require(Index(r.mode_names.size()) == nq, refmod::mode_names.at(),
             "has " + std::to_string(r.mode_names.size()) + " names for nq = " + std::to_string(nq));
-  c.require(r.n_low >= 0 && r.n_low <= nq, "/refmod/n_low", "must lie in [0, nq]");
+  c.require(r.n_low >= 0 && r.n_low <= nq, refmod::n_low.at(), "must lie in [0, nq]");
   const Damping& d = sid.damping;
-  for (auto [name, v] : {std::pair{"kappa", d.kappa}, {"f1_hz", d.f1_hz}, {"f2_hz", d.f2_hz},
-                         {"alpha1", d.alpha1}, {"alpha2", d.alpha2}}) {
-    c.finite(std::string("/damping/") + name, v);
-    c.require(v >= 0, std::string("/damping/") + name, "must not be negative");
+  for (auto [item, v] : {std::pair{&damping::kappa, d.kappa}, {&damping::f1_hz, d.f1_hz}, {&damping::f2_hz, d.f2_hz},
+                         {&damping::alpha1, d.alpha1}, {&damping::alpha2, d.alpha2}}) {
+    c.finite(item->at(), v);
+    c.require(v >= 0, item->at(), "must not be negative");
   }
 }
 
 void check_terms(const Checker& c, const Sid& sid) {
   const Index nq = sid.nq();
-  struct Shape {
-    Index rows, cols;
-    bool order1;
+  const layout::Sizes sizes(nq, sid.dim());
+  for (const Term& term : terms()) c.taylor(term.item, {}, sid.*(term.member), sizes);
+  auto m0_path = [](Taylor Sid::*member) {
+    for (const Term& term : terms())
+      if (term.member == member) return term.item.at() + "/M0";
+    return std::string();
   };
-  const std::vector<std::pair<std::string, Shape>> shapes = {
-      {"mdCM", {3, 1, true}},       {"J", {3, 3, true}},        {"Ct", {nq, 3, true}},
-      {"Cr", {nq, 3, true}},        {"Me", {nq, nq, false}},    {"Gr", {3, 3 * nq, true}},
-      {"Ge", {nq, 3 * nq, false}},  {"Oe", {nq, 6, true}},      {"ksigma", {nq, 1, true}},
-      {"Ke", {nq, nq, false}},      {"De", {nq, nq, false}}};
-  for (const auto& spec : layout::terms()) {
-    const Taylor& t = sid.*(spec.member);
-    const std::string field = layout::term_path(spec.name);
-    for (const auto& [name, s] : shapes)
-      if (name == spec.name) c.taylor(field, t, s.rows, s.cols, nq, s.order1);
-  }
-  c.symmetric("/terms/J/M0", sid.J.M0);
-  c.symmetric("/terms/Me/M0", sid.Me.M0);
-  c.symmetric("/terms/Ke/M0", sid.Ke.M0);
-  c.symmetric("/terms/De/M0", sid.De.M0);
+  for (Taylor Sid::*member : {&Sid::J, &Sid::Me, &Sid::Ke, &Sid::De}) c.symmetric(m0_path(member), (sid.*member).M0);
   for (Index i = 0; i < nq; ++i)
-    c.require(sid.Me.M0(i, i) > 0, "/terms/Me/M0", "non-positive diagonal entry at " + std::to_string(i));
+    c.require(sid.Me.M0(i, i) > 0, m0_path(&Sid::Me), "non-positive diagonal entry at " + std::to_string(i));
 }
 
-void check_unique(const Checker& c, const std::string& group, std::set<std::string>& seen, const std::string& name) {
-  c.require(!name.empty() && name.find('/') == std::string::npos, group, "invalid name '" + name + "'");
-  c.require(seen.insert(name).second, group, "duplicate name '" + name + "'");
+/// Checks that the members of a list group have distinct names usable in a path, then each member.
+template <class Member, class CheckMember>
+void check_list(const Checker& c, const Item& list, const std::vector<Member>& members, CheckMember check_member) {
+  std::set<std::string> seen;
+  for (const Member& m : members) {
+    c.require(!m.name.empty() && m.name.find('/') == std::string::npos, list.at(), "invalid name '" + m.name + "'");
+    c.require(seen.insert(m.name).second, list.at(), "duplicate name '" + m.name + "'");
+    check_member(m);
+  }
 }
 
 void check_nodes(const Checker& c, const Sid& sid) {
-  std::set<std::string> seen;
-  for (const Node& n : sid.nodes) {
-    check_unique(c, "/nodes", seen, n.name);
-    const std::string p = layout::node_path(n.name);
-    c.taylor(p + "/origin", n.origin, 3, 1, sid.nq(), true);
-    c.shape(p + "/phi", n.phi, 3, sid.nq());
-    c.shape(p + "/psi", n.psi, 3, sid.nq());
-    c.taylor(p + "/AP", n.AP, 3, 3, sid.nq(), true);
-  }
+  const Sizes sizes(sid.nq(), sid.dim());
+  check_list(c, node::list, sid.nodes, [&](const Node& n) {
+    c.taylor(node::origin, n.name, n.origin, sizes);
+    c.shape(node::phi, n.name, n.phi, sizes);
+    c.shape(node::psi, n.name, n.psi, sizes);
+    c.taylor(node::AP, n.name, n.AP, sizes);
+  });
 }
 
 void check_master_patches(const Checker& c, const Sid& sid) {
-  std::set<std::string> seen;
-  const int dim = sid.dim();
-  for (const MasterPatch& m : sid.master_patches) {
-    check_unique(c, "/master", seen, m.name);
-    const std::string p = layout::master_path(m.name);
-    c.require(!m.degrees.empty() && m.degrees.size() <= 3, p + "/degrees", "needs 1 to 3 parametric directions");
-    c.require(m.knots.size() == m.degrees.size(), p + "/knots", "one knot vector per direction required");
+  check_list(c, master::list, sid.master_patches, [&](const MasterPatch& m) {
+    const std::string degrees = master::degrees.at(m.name);
+    c.require(!m.degrees.empty() && m.degrees.size() <= 3, degrees, "needs 1 to 3 parametric directions");
+    c.require(m.knots.size() == m.degrees.size(), master::group.at(m.name) + "/knots",
+              "one knot vector per direction required");
     Index ncp = 1;
     for (std::size_t d = 0; d < m.degrees.size(); ++d) {
-      const std::string f = p + "/knots_" + std::to_string(d);
+      const std::string f = master::knots.at(m.name, std::to_string(d));
       c.finite(f, m.knots[d]);
-      c.require(m.degrees[d] >= 1 && m.degrees[d] <= kMaxDegree, p + "/degrees", "degree must lie in 1..15");
+      c.require(m.degrees[d] >= 1 && m.degrees[d] <= kMaxDegree, degrees, "degree must lie in 1..15");
       for (Index i = 1; i < m.knots[d].size(); ++i)
         c.require(m.knots[d](i) >= m.knots[d](i - 1), f, "knots not non-decreasing at " + std::to_string(i));
       const Index n = m.knots[d].size() - m.degrees[d] - 1;
       c.require(n > m.degrees[d], f, "too few knots for degree " + std::to_string(m.degrees[d]));
       ncp *= n;
     }
-    c.require(m.weights.size() == ncp, p + "/weights", "expected " + std::to_string(ncp) + " weights");
-    c.finite(p + "/weights", m.weights);
-    c.require(m.weights.size() == 0 || m.weights.minCoeff() > 0, p + "/weights", "weights must be positive");
-    c.shape(p + "/control_points", m.control_points, ncp, dim);
-    c.shape(p + "/Phi", m.Phi, ncp * dim, sid.nq());
-  }
+    const std::string weights = master::weights.at(m.name);
+    c.require(m.weights.size() == ncp, weights, "expected " + std::to_string(ncp) + " weights");
+    c.finite(weights, m.weights);
+    c.require(m.weights.size() == 0 || m.weights.minCoeff() > 0, weights, "weights must be positive");
+    Sizes sizes(sid.nq(), sid.dim());
+    sizes.set(Size::ControlPoints, ncp);
+    c.shape(master::control_points, m.name, m.control_points, sizes);
+    c.shape(master::Phi, m.name, m.Phi, sizes);
+  });
 }
 
 void check_contact(const Checker& c, const Sid& sid) {
-  std::set<std::string> seen;
-  const int dim = sid.dim();
-  for (const ContactSurface& s : sid.contact_surfaces) {
-    check_unique(c, "/contact", seen, s.name);
-    const std::string p = layout::contact_path(s.name);
+  check_list(c, contact::list, sid.contact_surfaces, [&](const ContactSurface& s) {
     const Index n = s.points();
-    c.require(n > 0, p + "/weight", "a contact surface needs at least one point");
-    c.finite(p + "/weight", s.weight);
-    c.require(s.weight.minCoeff() > 0, p + "/weight", "weights must be positive");
-    c.require(s.parameter.rows() == n, p + "/parameter", "one row per point expected");
-    c.finite(p + "/parameter", s.parameter);
-    c.require(s.element.size() == n, p + "/element", "one entry per point expected");
-    c.require(s.element.minCoeff() >= 0, p + "/element", "element indices must not be negative");
-    c.shape(p + "/position", s.position, n, dim);
-    c.shape(p + "/normal", s.normal, n, dim);
+    const std::string weight = contact::weight.at(s.name), parameter = contact::parameter.at(s.name),
+                      element = contact::element.at(s.name);
+    c.require(n > 0, weight, "a contact surface needs at least one point");
+    c.finite(weight, s.weight);
+    c.require(s.weight.minCoeff() > 0, weight, "weights must be positive");
+    c.require(s.parameter.rows() == n, parameter, "one row per point expected");
+    c.finite(parameter, s.parameter);
+    c.require(s.element.size() == n, element, "one entry per point expected");
+    c.require(s.element.minCoeff() >= 0, element, "element indices must not be negative");
+    Sizes sizes(sid.nq(), sid.dim());
+    sizes.set(Size::Points, n);
+    c.shape(contact::position, s.name, s.position, sizes);
+    c.shape(contact::normal, s.name, s.normal, sizes);
     for (Index g = 0; g < n; ++g)
-      c.require(std::abs(s.normal.row(g).norm() - 1.0) < 1e-8, p + "/normal", "not a unit vector at " + std::to_string(g));
-    c.shape(p + "/Psi", s.Psi, n * dim, sid.nq());
-    if (!s.master_patch.empty()) {
-      bool found = false;
-      for (const MasterPatch& m : sid.master_patches) found = found || m.name == s.master_patch;
-      c.require(found, p, "names master patch '" + s.master_patch + "', which is not in /master");
-    }
-  }
+      c.require(std::abs(s.normal.row(g).norm() - 1.0) < 1e-8, contact::normal.at(s.name),
+                "not a unit vector at " + std::to_string(g));
+    c.shape(contact::Psi, s.name, s.Psi, sizes);
+    if (!s.master_patch.empty())
+      c.require(find_master_patch(sid, s.master_patch) != nullptr, contact::group.at(s.name),
+                "names master patch '" + s.master_patch + "', which is not in " + master::list.at());
+  });
 }
 
 void check_stress(const Checker& c, const Sid& sid) {
-  std::set<std::string> seen;
-  for (const StressRecovery& s : sid.stress_recovery) {
-    check_unique(c, "/stress", seen, s.name);
-    const std::string p = layout::stress_path(s.name);
-    c.require(!s.components.empty(), p + "/components", "no stress components");
-    c.require(s.position.cols() == sid.dim(), p + "/position", "expected " + std::to_string(sid.dim()) + " columns");
-    c.finite(p + "/position", s.position);
-    c.shape(p + "/S", s.S, s.position.rows() * Index(s.components.size()), sid.nq());
-  }
+  check_list(c, stress::list, sid.stress_recovery, [&](const StressRecovery& s) {
+    const std::string position = stress::position.at(s.name);
+    c.require(!s.components.empty(), stress::components.at(s.name), "no stress components");
+    c.require(s.position.cols() == sid.dim(), position, "expected " + std::to_string(sid.dim()) + " columns");
+    c.finite(position, s.position);
+    Sizes sizes(sid.nq(), sid.dim());
+    sizes.set(Size::Points, s.position.rows()).set(Size::Components, Index(s.components.size()));
+    c.shape(stress::S, s.name, s.S, sizes);
+  });
 }
 
 void check_discretization(const Checker& c, const Sid& sid) {
   if (!sid.discretization) return;
   const Discretization& d = *sid.discretization;
   if (d.elements_per_level.size() == 0 || d.elements_per_level.size() != d.functions_per_level.size())
-    c.fail("/discretization/functions_per_level", "needs one entry per level, as elements_per_level");
+    c.fail(discretization::functions_per_level.at(), "needs one entry per level, as elements_per_level");
   if ((d.elements_per_level.array() < 0).any() || (d.functions_per_level.array() < 0).any() || d.free_dofs < 0)
-    c.fail("/discretization", "negative count");
+    c.fail(discretization::group.at(), "negative count");
 }
 
 void check_transfer(const Checker& c, const Sid& sid) {
   if (!sid.transfer) return;
   const TransferOperator& t = *sid.transfer;
-  const Index nc = t.coarse_to_fine.cols();
-  c.shape("/transfer/coarse_to_fine", t.coarse_to_fine, sid.nq(), nc);
-  c.shape("/transfer/fine_to_coarse", t.fine_to_coarse, nc, sid.nq());
+  Sizes sizes(sid.nq(), sid.dim());
+  sizes.set(Size::CoarseNq, t.coarse_to_fine.cols());
+  c.shape(transfer::coarse_to_fine, {}, t.coarse_to_fine, sizes);
+  c.shape(transfer::fine_to_coarse, {}, t.fine_to_coarse, sizes);
 }
 
 }  // namespace

@@ -1,135 +1,160 @@
-// Writes a SID to HDF5 (layout in format/README.md) through an atomic temporary file.
+// Writes a SID to HDF5 through an atomic temporary file; paths and units from the layout table.
 #include "isosid/format/hdf5_file.hpp"
+#include "isosid/format/sid_layout.hpp"
 #include "isosid/format/atomic_output.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "isosid/format/sid_validate.hpp"
-#include "sid_layout.hpp"
 
 namespace isosid::format {
 namespace {
 
-void write_taylor(h5::Writer& w, const std::string& path, const Taylor& t, const std::string& units) {
+using namespace layout;
+
+// Each item's path and units come from the layout table; `name` fills a list member's "<name>".
+void put_group(h5::Writer& w, const Item& item, std::string_view name = {}) { w.group(item.at(name)); }
+void put(h5::Writer& w, const Item& item, double value) { w.scalar(item.at(), value, item.units_text()); }
+void put_integer(h5::Writer& w, const Item& item, long long value) { w.integer(item.at(), value); }
+void put(h5::Writer& w, const Item& item, const std::string& value) { w.string(item.at(), value); }
+void put(h5::Writer& w, const Item& item, std::string_view name, const std::vector<std::string>& value) {
+  w.strings(item.at(name), value);
+}
+void put(h5::Writer& w, const Item& item, std::string_view name, const Eigen::MatrixXd& value) {
+  w.matrix(item.at(name), value, item.units_text());
+}
+void put(h5::Writer& w, const Item& item, std::string_view name, const Eigen::VectorXd& value) {
+  w.vector(item.at(name), value, item.units_text());
+}
+void put(h5::Writer& w, const Item& item, std::string_view name, const Eigen::VectorXi& value) {
+  w.integers(item.at(name), value);
+}
+void put_attribute(h5::Writer& w, const Item& item, std::string_view name, const std::string& value) {
+  w.attribute(item.at(name), std::string(item.attribute), value);
+}
+
+void put_taylor(h5::Writer& w, const Item& item, std::string_view name, const Taylor& t) {
+  const std::string path = item.at(name);
   w.group(path);
   w.attribute(path, "order", double(t.order()));
-  w.attribute(path, "units", units);
-  w.matrix(path + "/M0", t.M0, units);
-  if (t.order() == 1) w.tensor(path + "/M1", t.M1, units);
+  w.attribute(path, "units", item.units_text());
+  w.matrix(path + "/M0", t.M0, item.units_text());
+  if (t.order() == 1) w.tensor(path + "/M1", t.M1, item.units_text());
 }
 
 void write_body(h5::Writer& w, const Sid& sid) {
-  w.group("/body");
-  w.string("/body/name", sid.body_name);
-  w.string("/body/analysis_type", to_string(sid.analysis));
-  w.scalar("/body/youngs_modulus", sid.material.youngs_modulus, "Pa");
-  w.scalar("/body/poisson_ratio", sid.material.poisson_ratio, "1");
-  w.scalar("/body/density", sid.material.density, "kg/m^3");
-  w.scalar("/body/thickness", sid.thickness, "m");
+  put_group(w, body::group);
+  put(w, body::name, sid.body_name);
+  put(w, body::analysis_type, to_string(sid.analysis));
+  put(w, body::youngs_modulus, sid.material.youngs_modulus);
+  put(w, body::poisson_ratio, sid.material.poisson_ratio);
+  put(w, body::density, sid.material.density);
+  put(w, body::thickness, sid.thickness);
 }
 
 void write_refmod(h5::Writer& w, const Sid& sid) {
   const RefMod& r = sid.refmod;
-  w.group("/refmod");
-  w.attribute("/refmod", "q_units", "sqrt(kg)*m for mass-normalized modes ([q])");
-  w.scalar("/refmod/mass", r.mass, "kg");
-  w.integer("/refmod/nq", r.nq());
-  w.strings("/refmod/mode_names", r.mode_names);
-  w.vector("/refmod/frequencies_hz", r.frequencies_hz, "Hz");
-  w.integer("/refmod/n_low", r.n_low);
-  w.integer("/refmod/n_high", r.n_high());
-  w.string("/refmod/reduction_method", r.reduction_method);
-  w.string("/refmod/interface", r.interface_description);
+  put_group(w, refmod::group);
+  put_attribute(w, refmod::q_units, {}, "sqrt(kg)*m for mass-normalized modes ([q])");
+  put(w, refmod::mass, r.mass);
+  put_integer(w, refmod::nq, r.nq());
+  put(w, refmod::mode_names, {}, r.mode_names);
+  put(w, refmod::frequencies_hz, {}, r.frequencies_hz);
+  put_integer(w, refmod::n_low, r.n_low);
+  put_integer(w, refmod::n_high, r.n_high());
+  put(w, refmod::reduction_method, r.reduction_method);
+  put(w, refmod::interface, r.interface_description);
   const Damping& d = sid.damping;
-  w.group("/damping");
-  w.scalar("/damping/kappa", d.kappa, "1");
-  w.scalar("/damping/f1_hz", d.f1_hz, "Hz");
-  w.scalar("/damping/f2_hz", d.f2_hz, "Hz");
-  w.scalar("/damping/alpha1", d.alpha1, "1/s");
-  w.scalar("/damping/alpha2", d.alpha2, "s");
+  put_group(w, damping::group);
+  put(w, damping::kappa, d.kappa);
+  put(w, damping::f1_hz, d.f1_hz);
+  put(w, damping::f2_hz, d.f2_hz);
+  put(w, damping::alpha1, d.alpha1);
+  put(w, damping::alpha2, d.alpha2);
+}
+
+/// Writes a list group and, for each member, its group and then its content.
+template <class Member, class WriteMember>
+void write_list(h5::Writer& w, const Item& list, const Item& member_group, const std::vector<Member>& members,
+                WriteMember write_member) {
+  put_group(w, list);
+  for (const Member& m : members) {
+    put_group(w, member_group, m.name);
+    write_member(m);
+  }
 }
 
 void write_nodes(h5::Writer& w, const Sid& sid) {
-  w.group("/nodes");
-  for (const Node& n : sid.nodes) {
-    const std::string p = layout::node_path(n.name);
-    w.group(p);
-    write_taylor(w, p + "/origin", n.origin, "m");
-    w.matrix(p + "/phi", n.phi, "m/[q]");
-    w.matrix(p + "/psi", n.psi, "rad/[q]");
-    write_taylor(w, p + "/AP", n.AP, "1");
-  }
+  write_list(w, node::list, node::group, sid.nodes, [&](const Node& n) {
+    put_taylor(w, node::origin, n.name, n.origin);
+    put(w, node::phi, n.name, n.phi);
+    put(w, node::psi, n.name, n.psi);
+    put_taylor(w, node::AP, n.name, n.AP);
+  });
 }
 
 void write_master_patches(h5::Writer& w, const Sid& sid) {
-  w.group("/master");
-  for (const MasterPatch& m : sid.master_patches) {
-    const std::string p = layout::master_path(m.name);
-    w.group(p);
-    w.integers(p + "/degrees", Eigen::Map<const Eigen::VectorXi>(m.degrees.data(), Eigen::Index(m.degrees.size())));
-    for (std::size_t d = 0; d < m.knots.size(); ++d) w.vector(p + "/knots_" + std::to_string(d), m.knots[d], "1");
-    w.vector(p + "/weights", m.weights, "1");
-    w.matrix(p + "/control_points", m.control_points, "m");
-    w.matrix(p + "/Phi", m.Phi, "m/[q]");
-  }
+  write_list(w, master::list, master::group, sid.master_patches, [&](const MasterPatch& m) {
+    const Eigen::VectorXi degrees = Eigen::Map<const Eigen::VectorXi>(m.degrees.data(), Eigen::Index(m.degrees.size()));
+    put(w, master::degrees, m.name, degrees);
+    for (std::size_t d = 0; d < m.knots.size(); ++d)
+      w.vector(master::knots.at(m.name, std::to_string(d)), m.knots[d], master::knots.units_text());
+    put(w, master::weights, m.name, m.weights);
+    put(w, master::control_points, m.name, m.control_points);
+    put(w, master::Phi, m.name, m.Phi);
+  });
 }
 
 void write_contact(h5::Writer& w, const Sid& sid) {
-  w.group("/contact");
-  for (const ContactSurface& s : sid.contact_surfaces) {
-    const std::string p = layout::contact_path(s.name);
-    w.group(p);
-    w.attribute(p, "side", s.side);
-    w.attribute(p, "master_patch", s.master_patch);
-    w.matrix(p + "/parameter", s.parameter, "1");
-    w.integers(p + "/element", s.element);
-    w.matrix(p + "/position", s.position, "m");
-    w.matrix(p + "/normal", s.normal, "1");
-    w.vector(p + "/weight", s.weight, "m^2");
-    w.matrix(p + "/Psi", s.Psi, "m/[q]");
-  }
+  write_list(w, contact::list, contact::group, sid.contact_surfaces, [&](const ContactSurface& s) {
+    put_attribute(w, contact::side, s.name, s.side);
+    put_attribute(w, contact::master_patch, s.name, s.master_patch);
+    put(w, contact::parameter, s.name, s.parameter);
+    put(w, contact::element, s.name, s.element);
+    put(w, contact::position, s.name, s.position);
+    put(w, contact::normal, s.name, s.normal);
+    put(w, contact::weight, s.name, s.weight);
+    put(w, contact::Psi, s.name, s.Psi);
+  });
 }
 
 void write_stress(h5::Writer& w, const Sid& sid) {
-  w.group("/stress");
-  for (const StressRecovery& s : sid.stress_recovery) {
-    const std::string p = layout::stress_path(s.name);
-    w.group(p);
-    w.strings(p + "/components", s.components);
-    w.matrix(p + "/position", s.position, "m");
-    w.matrix(p + "/S", s.S, "Pa/[q]");
-  }
+  write_list(w, stress::list, stress::group, sid.stress_recovery, [&](const StressRecovery& s) {
+    put(w, stress::components, s.name, s.components);
+    put(w, stress::position, s.name, s.position);
+    put(w, stress::S, s.name, s.S);
+  });
 }
 
 void write_transfer(h5::Writer& w, const Sid& sid) {
   if (!sid.transfer) return;
-  w.group("/transfer");
-  w.string("/transfer/coarse_model_sha256", sid.transfer->coarse_model_sha256);
-  w.matrix("/transfer/coarse_to_fine", sid.transfer->coarse_to_fine, "1");
-  w.matrix("/transfer/fine_to_coarse", sid.transfer->fine_to_coarse, "1");
+  put_group(w, transfer::group);
+  put(w, transfer::coarse_model_sha256, sid.transfer->coarse_model_sha256);
+  put(w, transfer::coarse_to_fine, {}, sid.transfer->coarse_to_fine);
+  put(w, transfer::fine_to_coarse, {}, sid.transfer->fine_to_coarse);
 }
 
 void write_discretization(h5::Writer& w, const Sid& sid) {
   if (!sid.discretization) return;
-  w.group("/discretization");
-  w.integers("/discretization/elements_per_level", sid.discretization->elements_per_level);
-  w.integers("/discretization/functions_per_level", sid.discretization->functions_per_level);
-  w.integer("/discretization/free_dofs", sid.discretization->free_dofs);
+  put_group(w, discretization::group);
+  put(w, discretization::elements_per_level, {}, sid.discretization->elements_per_level);
+  put(w, discretization::functions_per_level, {}, sid.discretization->functions_per_level);
+  put_integer(w, discretization::free_dofs, sid.discretization->free_dofs);
 }
 
 void write_provenance(h5::Writer& w, const Sid& sid) {
   const Provenance& p = sid.provenance;
-  w.group("/provenance");
-  w.string("/provenance/model_file", p.model_file);
-  w.string("/provenance/model_sha256", p.model_sha256);
-  w.string("/provenance/program_version", p.program_version);
-  w.string("/provenance/created_utc", p.created_utc);
+  put_group(w, provenance::group);
+  put(w, provenance::model_file, p.model_file);
+  put(w, provenance::model_sha256, p.model_sha256);
+  put(w, provenance::program_version, p.program_version);
+  put(w, provenance::created_utc, p.created_utc);
   std::vector<std::string> names;
   Eigen::VectorXd seconds(Eigen::Index(p.timings_s.size()));
   for (std::size_t i = 0; i < p.timings_s.size(); ++i) {
     names.push_back(p.timings_s[i].first);
     seconds(Eigen::Index(i)) = p.timings_s[i].second;
   }
-  w.strings("/provenance/timing_names", names);
-  w.vector("/provenance/timings_s", seconds, "s");
+  put(w, provenance::timing_names, {}, names);
+  put(w, provenance::timings_s, {}, seconds);
 }
 
 }  // namespace
@@ -144,15 +169,15 @@ void write_sid(const Sid& sid, const std::string& path, const WriteOptions& opti
       write();
     };
     part("header", [&] {
-      w.group("/isosid");
-      w.integer("/isosid/version", kSchemaVersion);
-      w.string("/isosid/program_version", sid.provenance.program_version);
+      put_group(w, header::group);
+      put_integer(w, header::version, kSchemaVersion);
+      put(w, header::program_version, sid.provenance.program_version);
     });
     part("body", [&] { write_body(w, sid); });
     part("refmod", [&] { write_refmod(w, sid); });
     part("terms", [&] {
-      w.group("/terms");
-      for (const auto& spec : layout::terms()) write_taylor(w, layout::term_path(spec.name), sid.*(spec.member), spec.units);
+      put_group(w, terms_group);
+      for (const Term& term : terms()) put_taylor(w, term.item, {}, sid.*(term.member));
     });
     part("nodes", [&] { write_nodes(w, sid); });
     part("master", [&] { write_master_patches(w, sid); });

@@ -1,5 +1,5 @@
 // isosid-diff: are two SIDs the same body model? Exit 0 equal, 1 different, 2 bad input.
-#include "isosid/format/cli_parse.hpp"
+#include "isosid/common/cli_parse.hpp"
 #include "isosid/format/sid_compare.hpp"
 #include "isosid/format/sid_io.hpp"
 
@@ -8,7 +8,7 @@
 
 int main(int argc, char** argv) {
   using namespace isosid::format;
-  return run_guarded("isosid-diff", [&] {
+  return isosid::common::run_guarded("isosid-diff", [&] {
     CLI::App app{"Compares two SID files: scalars, invariants, frequencies, reduced matrices, and mode bases\n"
                  "by principal angles (mode signs and rotations within repeated frequencies do not count).",
                  "isosid-diff"};
@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
     app.add_option("a", file_a, "first SID file")->required();
     app.add_option("b", file_b, "second SID file")->required();
     app.add_option("--rtol", rtol, "relative tolerance (default 1e-6)")->check(CLI::PositiveNumber);
-    if (auto status = parse_command_line(app, argc, argv)) return *status;
+    if (auto status = isosid::common::parse_command_line(app, argc, argv)) return *status;
     const Sid a = read_sid(file_a);
     const Sid b = read_sid(file_b);
     const Comparison c = compare_sids(a, b, rtol);

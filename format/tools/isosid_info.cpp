@@ -1,7 +1,9 @@
-// isosid-info: what a SID file holds (body, invariants, modes, contact data, provenance).
-#include "isosid/format/cli_parse.hpp"
+// isosid-info: what a SID file holds (body, invariants, modes, contact data, provenance),
+// or with --layout the SID layout table that format/README.md shows.
+#include "isosid/common/cli_parse.hpp"
 #include "isosid/format/rigid_invariants.hpp"
 #include "isosid/format/sid_io.hpp"
+#include "isosid/format/sid_layout.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -131,13 +133,20 @@ void print_text(const Sid& sid, std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return run_guarded("isosid-info", [&] {
+  return isosid::common::run_guarded("isosid-info", [&] {
     CLI::App app{"Shows what a SID file holds: body, mass, centre of mass, inertia, modes, contact data.", "isosid-info"};
     std::string file;
-    bool as_json = false;
-    app.add_option("file", file, "SID file (.sid.h5)")->required();
+    bool as_json = false, print_layout = false;
+    auto* what = app.add_option_group("what", "a SID file, or --layout");
+    what->add_option("file", file, "SID file (.sid.h5)");
+    what->add_flag("--layout", print_layout, "print the SID file layout as a markdown table (as in format/README.md)");
+    what->require_option(1);
     app.add_flag("--json", as_json, "print JSON instead of text");
-    if (auto status = parse_command_line(app, argc, argv)) return *status;
+    if (auto status = isosid::common::parse_command_line(app, argc, argv)) return *status;
+    if (print_layout) {
+      std::cout << layout::markdown_table();
+      return 0;
+    }
     const Sid sid = read_sid(file);
     if (as_json)
       std::cout << describe(sid).dump(2) << "\n";

@@ -2,7 +2,7 @@
 #include "model/model_file.hpp"
 
 #include "geometry/primitives.hpp"
-#include "isosid/format/toml_fields.hpp"
+#include "isosid/common/toml_fields.hpp"
 
 #include <algorithm>
 #include <iomanip>
@@ -11,7 +11,7 @@
 namespace isosid::prep {
 namespace {
 
-using format::TomlView;
+using common::TomlView;
 
 const char* kComponents[3] = {"x", "y", "z"};
 
@@ -341,7 +341,7 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
 }  // namespace
 
 ModelSpec read_model_file(const std::string& path) {
-  const toml::table root = format::parse_toml_file(path);
+  const toml::table root = common::parse_toml_file(path);
   const TomlView top(root, path);
   top.allow_only({"body", "material", "geometry", "refinement", "boundary", "quadrature", "reduction", "damping",
                   "contact_surface", "node", "stress_line"});

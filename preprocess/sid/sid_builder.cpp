@@ -1,7 +1,8 @@
 // Composition of the SID; see sid_builder.hpp.
 #include "sid/sid_builder.hpp"
 
-#include "isosid/format/sha256.hpp"
+#include "isosid/format/error.hpp"
+#include "isosid/common/sha256.hpp"
 #include "isosid/version.hpp"
 #include "sid/contact_data.hpp"
 #include "sid/master_patch.hpp"
@@ -76,7 +77,7 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   mesh.free_dofs = body.dofs.free_count();
 
   sid.provenance.model_file = spec.file;
-  sid.provenance.model_sha256 = std::filesystem::is_regular_file(spec.file) ? format::sha256_file(spec.file) : "";
+  sid.provenance.model_sha256 = std::filesystem::is_regular_file(spec.file) ? common::sha256_file(spec.file) : "";
   sid.provenance.program_version = kProgramVersion;
   sid.provenance.created_utc = utc_now();
   return sid;

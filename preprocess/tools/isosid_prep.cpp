@@ -1,6 +1,6 @@
 // isosid-prep: builds an isogeometric body from a model file, assembles it, reduces it and
 // writes its SID (or, with --modes, reports its size and natural frequencies).
-#include "isosid/format/cli_parse.hpp"
+#include "isosid/common/cli_parse.hpp"
 #include "pipeline/prepare.hpp"
 #include "tools/prep_report.hpp"
 
@@ -17,7 +17,7 @@ std::string default_output(const std::string& model) {
 
 int main(int argc, char** argv) {
   using namespace isosid;
-  return format::run_guarded("isosid-prep", [&] {
+  return common::run_guarded("isosid-prep", [&] {
     CLI::App app{"Builds an isogeometric body from MODEL.toml, reduces it and writes its SID file.\n"
                  "With --modes N it only reports the model size and the N lowest frequencies.",
                  "isosid-prep"};
@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
     app.add_flag("--coarse", coarse,
                  "build the coarse model of a hierarchically refined body instead: the model without its "
                  "[refinement.hierarchical], reduced to its normal modes (what the refined SID's transfer maps from)");
-    if (auto status = format::parse_command_line(app, argc, argv)) return *status;
+    if (auto status = common::parse_command_line(app, argc, argv)) return *status;
 
     const prep::ModelSpec spec = coarse ? prep::coarse_model_spec(prep::read_model_file(model_file))
                                         : prep::read_model_file(model_file);  // instant; progress starts on valid input

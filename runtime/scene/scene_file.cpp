@@ -1,7 +1,7 @@
 // Scene file parsing and validation; see scene.hpp.
 #include "scene/scene.hpp"
 
-#include "isosid/format/toml_fields.hpp"
+#include "isosid/common/toml_fields.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -10,7 +10,7 @@
 namespace isosid::run {
 namespace {
 
-using format::TomlView;
+using common::TomlView;
 namespace fs = std::filesystem;
 
 Eigen::Vector3d vec3(const TomlView& t, const std::string& key, const Eigen::Vector3d& fallback) {
@@ -170,7 +170,7 @@ const ShapeSpec* Scene::fixed_surface(const std::string& name) const {
 }
 
 Scene read_scene_file(const std::string& path) {
-  const toml::table root = format::parse_toml_file(path);
+  const toml::table root = common::parse_toml_file(path);
   const TomlView top(root, path);
   top.allow_only({"simulation", "flexible_body", "rigid_body", "fixed_plane", "fixed_sphere", "fixed_cylinder", "contact",
                   "monitor", "reference"});

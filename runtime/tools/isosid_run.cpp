@@ -1,6 +1,6 @@
 // isosid-run: simulates a scene of reduced flexible bodies (SIDs) with Gauss-point penalty
 // contact and writes results.h5 and summary.json (the work is run::Simulation's).
-#include "isosid/format/cli_parse.hpp"
+#include "isosid/common/cli_parse.hpp"
 #include "output/recorder.hpp"
 #include "output/run_report.hpp"
 #include "scene/sid_provider.hpp"
@@ -43,7 +43,7 @@ std::string default_output(const std::string& scene_file) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return format::run_guarded("isosid-run", [&] {
+  return common::run_guarded("isosid-run", [&] {
     CLI::App app{"Simulates impacts of reduced flexible bodies (SIDs) described by a scene file.", "isosid-run"};
     std::string scene_file, out_dir;
     bool as_json = false, quiet = false;
@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
     app.add_option("-o,--output", out_dir, "results folder (default: out/<scene name>)");
     app.add_flag("--json", as_json, "print summary.json to stdout");
     app.add_flag("-q,--quiet", quiet, "no progress on stderr");
-    if (auto status = format::parse_command_line(app, argc, argv)) return *status;
+    if (auto status = common::parse_command_line(app, argc, argv)) return *status;
     for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, request_stop);  // stop at a sample, keep results
 
     run::Scene scene = run::read_scene_file(scene_file);
@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     }
     if (!outcome.completed()) {
       std::cerr << "isosid-run: failed: " << outcome.failure << "; results so far are in " << out_dir << "\n";
-      return format::kExitFailure;
+      return common::kExitFailure;
     }
     return 0;
   });

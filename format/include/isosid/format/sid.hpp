@@ -133,4 +133,11 @@ struct Sid {
   int dim() const { return spatial_dim(analysis); }
 };
 
+/// The master patch called `name`, or nullptr (how a contact surface finds its boundary NURBS).
+inline const MasterPatch* find_master_patch(const Sid& sid, const std::string& name) {
+  for (const MasterPatch& m : sid.master_patches)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
 }  // namespace isosid::format

@@ -1,15 +1,15 @@
 // Strict TOML field access; see toml_fields.hpp.
-#include "isosid/format/toml_fields.hpp"
+#include "isosid/common/toml_fields.hpp"
 
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 
-namespace isosid::format {
+namespace isosid::common {
 
 toml::table parse_toml_file(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "", "file not found");
+  if (!std::filesystem::is_regular_file(path, ec)) throw format::InputError(path, "", "file not found");
   try {
     return toml::parse_file(path);
   } catch (const toml::parse_error& e) {
@@ -18,7 +18,7 @@ toml::table parse_toml_file(const std::string& path) {
     std::string what(e.description());
     for (char& c : what)
       if (c == '\n') c = ' ';
-    throw InputError(path, where.str(), "TOML syntax error: " + what);
+    throw format::InputError(path, where.str(), "TOML syntax error: " + what);
   }
 }
 
@@ -71,8 +71,8 @@ double TomlView::as_number(const toml::node& n, const std::string& where) const 
   else if (auto i = n.value_exact<int64_t>())
     v = double(*i);
   else
-    throw InputError(file_, where, "must be a number");
-  if (!std::isfinite(v)) throw InputError(file_, where, "must be finite");
+    throw format::InputError(file_, where, "must be a number");
+  if (!std::isfinite(v)) throw format::InputError(file_, where, "must be finite");
   return v;
 }
 
@@ -124,7 +124,7 @@ std::vector<std::vector<double>> TomlView::number_rows(const std::string& key) c
   for (std::size_t i = 0; i < a->size(); ++i) {
     const toml::array* row = (*a)[i].as_array();
     const std::string where = field(key) + "[" + std::to_string(i) + "]";
-    if (!row) throw InputError(file_, where, "must be an array of numbers");
+    if (!row) throw format::InputError(file_, where, "must be an array of numbers");
     std::vector<double> r;
     for (std::size_t j = 0; j < row->size(); ++j) r.push_back(as_number((*row)[j], where + "[" + std::to_string(j) + "]"));
     out.push_back(std::move(r));
@@ -138,7 +138,7 @@ std::vector<long long> TomlView::integers(const std::string& key) const {
   std::vector<long long> out;
   for (std::size_t i = 0; i < a->size(); ++i) {
     auto v = (*a)[i].value_exact<int64_t>();
-    if (!v) throw InputError(file_, field(key) + "[" + std::to_string(i) + "]", "must be an integer");
+    if (!v) throw format::InputError(file_, field(key) + "[" + std::to_string(i) + "]", "must be an integer");
     out.push_back(*v);
   }
   return out;
@@ -150,10 +150,10 @@ std::vector<std::string> TomlView::strings(const std::string& key) const {
   std::vector<std::string> out;
   for (std::size_t i = 0; i < a->size(); ++i) {
     auto v = (*a)[i].value_exact<std::string>();
-    if (!v) throw InputError(file_, field(key) + "[" + std::to_string(i) + "]", "must be a string");
+    if (!v) throw format::InputError(file_, field(key) + "[" + std::to_string(i) + "]", "must be a string");
     out.push_back(*v);
   }
   return out;
 }
 
-}  // namespace isosid::format
+}  // namespace isosid::common

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <new>
 
-namespace isosid::format {
+namespace isosid::common {
 
 constexpr int kExitBadInput = 2;
 constexpr int kExitFailure = 1;
@@ -16,10 +16,10 @@ template <class Body>
 int run_guarded(const char* program, Body&& body) {
   try {
     return body();
-  } catch (const InputError& e) {
+  } catch (const format::InputError& e) {
     std::cerr << program << ": error: " << e.what() << "\n";
     return kExitBadInput;
-  } catch (const ComputationError& e) {
+  } catch (const format::ComputationError& e) {
     std::cerr << program << ": failed: " << e.what() << "\n";
     return kExitFailure;
   } catch (const std::bad_alloc&) {
@@ -31,4 +31,4 @@ int run_guarded(const char* program, Body&& body) {
   }
 }
 
-}  // namespace isosid::format
+}  // namespace isosid::common

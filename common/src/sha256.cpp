@@ -1,14 +1,13 @@
 // SHA-256 after FIPS 180-4, section 6.2.
-#include "isosid/format/sha256.hpp"
+#include "isosid/common/sha256.hpp"
 
 #include "isosid/format/error.hpp"
 
 #include <array>
 #include <cstdint>
 #include <fstream>
-#include <sstream>
 
-namespace isosid::format {
+namespace isosid::common {
 namespace {
 
 constexpr std::array<uint32_t, 64> kRoundConstants = {
@@ -49,27 +48,51 @@ void compress(std::array<uint32_t, 8>& h, const unsigned char* block) {
 
 }  // namespace
 
-std::string sha256_hex(const std::string& data) {
-  std::array<uint32_t, 8> h = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
-  std::string msg = data;
-  const uint64_t bits = uint64_t(data.size()) * 8;
-  msg.push_back(char(0x80));
-  while (msg.size() % 64 != 56) msg.push_back('\0');
-  for (int i = 7; i >= 0; --i) msg.push_back(char((bits >> (8 * i)) & 0xff));
-  for (std::size_t off = 0; off < msg.size(); off += 64) compress(h, reinterpret_cast<const unsigned char*>(msg.data() + off));
+void Sha256::compress_buffer() {
+  compress(state_, buffer_.data());
+  buffered_ = 0;
+}
+
+void Sha256::update(std::string_view bytes) {
+  message_bytes_ += bytes.size();
+  for (const char c : bytes) {
+    buffer_[buffered_++] = static_cast<unsigned char>(c);
+    if (buffered_ == buffer_.size()) compress_buffer();
+  }
+}
+
+std::string Sha256::hex_digest() {
+  const uint64_t bits = message_bytes_ * 8;
+  buffer_[buffered_++] = 0x80;
+  if (buffered_ > 56) {
+    while (buffered_ < 64) buffer_[buffered_++] = 0;
+    compress_buffer();
+  }
+  while (buffered_ < 56) buffer_[buffered_++] = 0;
+  for (int i = 7; i >= 0; --i) buffer_[buffered_++] = static_cast<unsigned char>((bits >> (8 * i)) & 0xff);
+  compress_buffer();
   static const char* hex = "0123456789abcdef";
   std::string out;
-  for (uint32_t v : h)
+  for (uint32_t v : state_)
     for (int i = 7; i >= 0; --i) out.push_back(hex[(v >> (4 * i)) & 0xf]);
   return out;
 }
 
-std::string sha256_file(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path, "", "cannot be read");
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return sha256_hex(ss.str());
+std::string sha256_hex(std::string_view data) {
+  Sha256 hasher;
+  hasher.update(data);
+  return hasher.hex_digest();
 }
 
-}  // namespace isosid::format
+std::string sha256_file(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw format::InputError(path, "", "cannot be read");
+  Sha256 hasher;
+  std::string chunk(std::size_t{1} << 16, '\0');
+  while (f.read(chunk.data(), std::streamsize(chunk.size())) || f.gcount() > 0)
+    hasher.update(std::string_view(chunk.data(), std::size_t(f.gcount())));
+  if (f.bad()) throw format::InputError(path, "", "cannot be read");
+  return hasher.hex_digest();
+}
+
+}  // namespace isosid::common

@@ -11,7 +11,7 @@
 #include <toml++/toml.h>
 #include <vector>
 
-namespace isosid::format {
+namespace isosid::common {
 
 /// Parses a TOML file; syntax errors become InputError with line and column.
 toml::table parse_toml_file(const std::string& path);
@@ -26,7 +26,7 @@ public:
   bool has(const std::string& key) const { return table_->contains(key); }
   std::string field(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
   const std::string& file() const { return file_; }
-  [[noreturn]] void fail(const std::string& key, const std::string& problem) const { throw InputError(file_, field(key), problem); }
+  [[noreturn]] void fail(const std::string& key, const std::string& problem) const { throw format::InputError(file_, field(key), problem); }
 
   TomlView table(const std::string& key) const;            ///< required sub-table
   std::optional<TomlView> optional_table(const std::string& key) const;
@@ -53,4 +53,4 @@ private:
   std::string file_, path_;
 };
 
-}  // namespace isosid::format
+}  // namespace isosid::common

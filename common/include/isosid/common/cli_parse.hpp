@@ -1,13 +1,13 @@
 // Command-line parsing shared by the isosid programs: help exits 0, a usage error exits 2
 // with one line (the convention for bad input).
 #pragma once
-#include "isosid/format/cli_guard.hpp"
+#include "isosid/common/cli_guard.hpp"
 
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <optional>
 
-namespace isosid::format {
+namespace isosid::common {
 
 /// Parses argv; returns an exit status if the program should stop now (help or usage error).
 inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
@@ -24,4 +24,4 @@ inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** arg
   return std::nullopt;
 }
 
-}  // namespace isosid::format
+}  // namespace isosid::common

@@ -1,0 +1,11 @@
+# Fails unless every entry of LINKS (isosid_format's INTERFACE_LINK_LIBRARIES, '|'-separated)
+# is in ALLOWED (Eigen, the HDF5 C libraries and the private options target).
+cmake_minimum_required(VERSION 3.20)
+string(REPLACE "|" ";" links "${LINKS}")
+string(REPLACE "|" ";" allowed "${ALLOWED}")
+message(STATUS "isosid_format links: ${links}")
+foreach(link IN LISTS links)
+  if(NOT link IN_LIST allowed)
+    message(FATAL_ERROR "isosid_format links '${link}', which is neither Eigen nor HDF5")
+  endif()
+endforeach()
