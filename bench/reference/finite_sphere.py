@@ -360,6 +360,7 @@ def mesh_law(R, E, nu, rho, n_phi, hz, levels, workdir, log):
         k = max(1, sum(1 for x in xs if x <= a))
         if k not in ks:
             ks.append(k)
+    ks += [k for k in (ks[-1] + 1, ks[-1] + 2) if k <= len(xs) - 1]  # reach past 1.3 x the Hertz peak
     segs, empty = [], []
     for k in ks:
         s = model.segment(k)
@@ -417,6 +418,7 @@ def write_csv(path, name, args, hz, segs_info, pts, result, command):
         f.write("# hertz: peak_force_n=%.8g contact_time_s=%.8g\n" % (hz["peak_force_n"], hz["contact_time_s"]))
         f.write("# impact: peak_force_n=%.8g contact_time_s=%.8g\n" % (result["peak_force_n"], result["contact_time_s"]))
         f.write("# regenerate: %s\n" % command)
+        f.write("# mesh convergence: finite_sphere_%s.log (what the run printed)\n" % name)
         f.write("force_n,delta_m,delta_hertz_m,delta_centre_m\n")
         for F, d, dc in pts:
             f.write("%.10e,%.10e,%.10e,%.10e\n" % (F, d, (F / hz["K"]) ** (2 / 3), dc))
@@ -426,11 +428,10 @@ def read_csv(path):
     head, rows = {}, []
     with open(path) as f:
         for line in f:
-            if line.startswith("#"):
+            if line.startswith(("# name=", "# hertz:", "# impact:")):
+                prefix = "" if line.startswith("# name=") else line[2:].split(":")[0] + "."
                 for k, v in re.findall(r"(\w+)=([^\s,]+)", line):
-                    key = line[1:].split(":")[0].strip() + "." + k if line[1:].split(":")[0].strip() in (
-                        "hertz", "impact") else k
-                    head[key] = v
+                    head[prefix + k] = v
             elif line[0].isdigit() or line[0] == "-":
                 rows.append([float(v) for v in line.split(",")])
     return head, rows
@@ -492,7 +493,12 @@ def main():
     p.add_argument("--out", default=None)
     args = p.parse_args()
     command = "bench/reference/finite_sphere.py " + " ".join(sys.argv[1:])
-    log = lambda s: print(s, file=sys.stderr, flush=True)
+    lines = []
+
+    def log(s):
+        print(s, file=sys.stderr, flush=True)
+        lines.append(s)
+
     hz = hertz(args.radius, args.E, args.nu, args.rho, args.v0)
     log("Hertz: peak %.4f N, contact time %.4f us, approach %.4f um, contact radius %.4f mm, mass %.6g kg"
         % (hz["peak_force_n"], 1e6 * hz["contact_time_s"], 1e6 * hz["delta_max_m"], 1e3 * hz["a_max_m"], hz["mass_kg"]))
@@ -520,6 +526,8 @@ def main():
     res = table[-1][3]
     out = args.out or os.path.join(HERE, "finite_sphere_%s.csv" % args.name)
     write_csv(out, args.name, args, hz, final_info, final_pts, res["finite_sphere"], command)
+    with open(os.path.splitext(out)[0] + ".log", "w") as f:  # the mesh convergence, as printed
+        f.write("# %s\n" % command + "\n".join(lines) + "\n")
     summary = {"name": args.name, "result": res, "meshes": [
         {"n_phi": n, "elements": i["elements"], "nodes": i["nodes"], "smallest_m": i["smallest_m"],
          "ccx_s": round(i["ccx_s"], 1), "solves": i["solves"], "empty_sets": i["empty_sets"],
