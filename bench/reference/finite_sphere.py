@@ -456,6 +456,8 @@ def evaluate(R, E, nu, rho, v0, pts):
                "peak_force": 100 * (res["peak_force_n"] / hz["peak_force_n"] - 1),
                "contact_time": 100 * (res["contact_time_s"] / hz["contact_time_s"] - 1)},
            "half_a_over_R_percent": 50 * a / R,
+           "approach_below_hertz_at_hertz_peak_percent": 100 * (1 - approach_at(
+               pts, hz["peak_force_n"], hz["K"]) / hz["delta_max_m"]),
            "law_points": len(pts), "law_force_range_n": [min(force), max(force)]}
     return out
 
