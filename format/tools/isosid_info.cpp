@@ -1,6 +1,7 @@
 // isosid-info: what a SID file holds (body, invariants, modes, contact data, provenance),
 // or with --layout the SID layout table that format/README.md shows.
 #include "isosid/common/cli_parse.hpp"
+#include "isosid/common/number_text.hpp"
 #include "isosid/format/rigid_invariants.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "isosid/format/sid_layout.hpp"
@@ -13,6 +14,8 @@
 
 namespace {
 using namespace isosid::format;
+using isosid::common::list_text;
+using isosid::common::number_text;
 using nlohmann::json;
 
 json matrix_json(const Eigen::MatrixXd& m) {
@@ -75,24 +78,14 @@ json describe(const Sid& sid) {
   return j;
 }
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
-std::string vec3(const Eigen::VectorXd& v) {
-  std::string s = "(";
-  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + fmt(v(i));
-  return s + ")";
-}
+std::string vec3(const Eigen::VectorXd& v) { return list_text(v, "(", ")"); }
 
 void print_text(const Sid& sid, std::ostream& out) {
   const RigidInvariants inv = rigid_invariants(sid);
   out << "body          " << sid.body_name << " (" << to_string(sid.analysis) << ")\n"
-      << "material      E = " << fmt(sid.material.youngs_modulus) << " Pa, nu = " << fmt(sid.material.poisson_ratio)
-      << ", rho = " << fmt(sid.material.density) << " kg/m^3\n"
-      << "mass          " << fmt(inv.mass) << " kg\n"
+      << "material      E = " << number_text(sid.material.youngs_modulus) << " Pa, nu = " << number_text(sid.material.poisson_ratio)
+      << ", rho = " << number_text(sid.material.density) << " kg/m^3\n"
+      << "mass          " << number_text(inv.mass) << " kg\n"
       << "centre of mass " << vec3(inv.center_of_mass) << " m\n"
       << "inertia (about the centre of mass) [kg m^2]\n";
   for (int i = 0; i < 3; ++i) out << "              " << vec3(inv.inertia_center.row(i).transpose()) << "\n";
@@ -100,14 +93,14 @@ void print_text(const Sid& sid, std::ostream& out) {
       << sid.refmod.reduction_method;
   if (!sid.refmod.interface_description.empty()) out << ", interface: " << sid.refmod.interface_description;
   out << "\nfrequencies   [Hz]";
-  for (Eigen::Index i = 0; i < sid.nq(); ++i) out << (i % 6 == 0 ? "\n              " : "  ") << fmt(sid.refmod.frequencies_hz(i));
-  out << "\ndamping       kappa = " << fmt(sid.damping.kappa) << ", band " << fmt(sid.damping.f1_hz) << "-"
-      << fmt(sid.damping.f2_hz) << " Hz: alpha1 = " << fmt(sid.damping.alpha1) << " 1/s, alpha2 = "
-      << fmt(sid.damping.alpha2) << " s\n";
+  for (Eigen::Index i = 0; i < sid.nq(); ++i) out << (i % 6 == 0 ? "\n              " : "  ") << number_text(sid.refmod.frequencies_hz(i));
+  out << "\ndamping       kappa = " << number_text(sid.damping.kappa) << ", band " << number_text(sid.damping.f1_hz) << "-"
+      << number_text(sid.damping.f2_hz) << " Hz: alpha1 = " << number_text(sid.damping.alpha1) << " 1/s, alpha2 = "
+      << number_text(sid.damping.alpha2) << " s\n";
   for (const Node& n : sid.nodes) out << "node          " << n.name << " at " << vec3(n.origin.M0.col(0)) << " m\n";
   for (const ContactSurface& c : sid.contact_surfaces)
     out << "contact       " << c.name << ": " << c.points() << " Gauss points on side '" << c.side << "', area "
-        << fmt(c.weight.sum()) << " m^2, master patch '" << c.master_patch << "'\n";
+        << number_text(c.weight.sum()) << " m^2, master patch '" << c.master_patch << "'\n";
   for (const MasterPatch& m : sid.master_patches) {
     out << "master patch  " << m.name << ": degrees";
     for (int d : m.degrees) out << " " << d;
@@ -127,7 +120,7 @@ void print_text(const Sid& sid, std::ostream& out) {
   }
   out << "provenance    " << sid.provenance.model_file << " (sha256 " << sid.provenance.model_sha256.substr(0, 12)
       << "...), isosid " << sid.provenance.program_version << ", " << sid.provenance.created_utc << "\n";
-  for (const auto& [name, s] : sid.provenance.timings_s) out << "  time        " << name << ": " << fmt(s) << " s\n";
+  for (const auto& [name, s] : sid.provenance.timings_s) out << "  time        " << name << ": " << number_text(s) << " s\n";
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // isosid-prep's reports; see prep_report.hpp.
 #include "tools/prep_report.hpp"
 
+#include "isosid/common/number_text.hpp"
 #include "model/placement.hpp"
 
 #include <cstdio>
@@ -9,20 +10,10 @@
 
 namespace isosid::prep {
 namespace {
+using common::list_text;
+using common::number_text;
 
 std::vector<double> as_vector(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
-
-std::string format_number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
-
-std::string bracketed(const Eigen::VectorXd& v) {
-  std::string s = "[";
-  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + format_number(v(i));
-  return s + "]";
-}
 
 nlohmann::json timings_json(const StageTimings& timings) {
   nlohmann::json j = nlohmann::json::object();
@@ -55,7 +46,7 @@ nlohmann::json body_json(const BodyModel& body, double mass, std::string& levels
                    std::to_string(h.functions_per_level[level]) + " functions, split";
     for (int f : h.mesh.factors[level]) levels_text += " " + std::to_string(f);
     levels_text += ", domain";
-    for (std::size_t k = 0; k < d.lo.size(); ++k) levels_text += " [" + format_number(d.lo[k]) + ", " + format_number(d.hi[k]) + "]";
+    for (std::size_t k = 0; k < d.lo.size(); ++k) levels_text += " [" + number_text(d.lo[k]) + ", " + number_text(d.hi[k]) + "]";
     levels_text += "\n";
   }
   return j;
@@ -65,7 +56,7 @@ nlohmann::json body_json(const BodyModel& body, double mass, std::string& levels
 /// the model file gave.
 nlohmann::json placement_json(const ModelSpec& spec, std::string& text) {
   auto located = [](const BodyPoint& p) { return nlohmann::json{{"parameter", as_vector(p.parameter)}, {"point_m", as_vector(p.x)}}; };
-  auto described = [](const BodyPoint& p) { return "parameter " + bracketed(p.parameter) + " = " + bracketed(p.x) + " m"; };
+  auto described = [](const BodyPoint& p) { return "parameter " + list_text(p.parameter) + " = " + list_text(p.x) + " m"; };
   auto given = [](const GivenPoint& g) { return std::string(g.physical ? "point" : "parameter"); };
   nlohmann::json j = {{"nodes", nlohmann::json::array()}, {"stress_lines", nlohmann::json::array()}};
   for (const NodeSpec& n : spec.nodes) {
