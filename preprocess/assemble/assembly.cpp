@@ -2,8 +2,8 @@
 #include "assemble/assembly.hpp"
 
 #include "assemble/boundary_quadrature.hpp"
-#include "assemble/element_evaluator.hpp"
-#include "assemble/element_quadrature.hpp"
+#include "space/element_evaluator.hpp"
+#include "space/element_quadrature.hpp"
 
 #include <omp.h>
 

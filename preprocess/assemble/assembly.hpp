@@ -1,8 +1,8 @@
 // Sparse assembly of consistent mass and stiffness matrices (and boundary loads) on the free
 // DOFs, element by element with the (p+1)^d Gauss rule, in parallel over elements.
 #pragma once
-#include "assemble/analysis_space.hpp"
-#include "assemble/dof_map.hpp"
+#include "space/analysis_space.hpp"
+#include "space/dof_map.hpp"
 #include "assemble/elasticity.hpp"
 
 #include <Eigen/Sparse>

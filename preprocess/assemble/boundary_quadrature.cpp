@@ -1,8 +1,8 @@
 // Side quadrature; see boundary_quadrature.hpp.
 #include "assemble/boundary_quadrature.hpp"
 
-#include "assemble/element_evaluator.hpp"
-#include "assemble/gauss_quadrature.hpp"
+#include "space/element_evaluator.hpp"
+#include "space/gauss_quadrature.hpp"
 
 #include <algorithm>
 

@@ -4,7 +4,7 @@
 #include "geometry/nurbs_patch.hpp"
 #include "isosid/format/sid.hpp"
 #include "refine/graded_knots.hpp"
-#include "refine/hierarchical_mesh.hpp"
+#include "thb/hierarchical_mesh.hpp"
 
 #include <array>
 #include <optional>

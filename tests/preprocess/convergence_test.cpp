@@ -2,7 +2,7 @@
 // optimal rates h^(p+1) and h^p under uniform refinement (research notes section 4).
 // Thick cylinder under internal pressure (Lame) in plane strain and axisymmetric, and the
 // plate with a circular hole under remote tension (Kirsch, plane stress).
-#include "assemble/element_quadrature.hpp"
+#include "space/element_quadrature.hpp"
 #include "assemble/point_operator.hpp"
 #include "geometry/primitives.hpp"
 #include "reduce/sparse_cholesky.hpp"

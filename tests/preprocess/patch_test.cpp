@@ -6,7 +6,7 @@
 // cases therefore integrate with 6 extra points (measured: 1e-7 at +2, 1e-8 at +4, < 1e-10
 // at +6). Polynomial distortions pass with the default rule.
 #include "assemble/point_operator.hpp"
-#include "assemble/element_quadrature.hpp"
+#include "space/element_quadrature.hpp"
 #include "geometry/primitives.hpp"
 #include "reduce/sparse_cholesky.hpp"
 #include "refine/patch_refinement.hpp"

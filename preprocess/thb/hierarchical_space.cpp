@@ -1,7 +1,7 @@
 // THB space construction; see hierarchical_space.hpp.
-#include "assemble/hierarchical_space.hpp"
+#include "thb/hierarchical_space.hpp"
 
-#include "assemble/span_extraction.hpp"
+#include "space/span_extraction.hpp"
 #include "refine/knot_insertion.hpp"
 
 #include <algorithm>

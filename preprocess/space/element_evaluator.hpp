@@ -1,7 +1,7 @@
 // Rational basis functions, their physical gradients and the geometry map at a point of an
 // element, from the element's extraction operator (works for any way C_e was built).
 #pragma once
-#include "assemble/analysis_space.hpp"
+#include "space/analysis_space.hpp"
 
 #include <Eigen/Dense>
 

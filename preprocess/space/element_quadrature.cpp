@@ -1,7 +1,7 @@
 // Tensor Gauss rules on elements; see element_quadrature.hpp.
-#include "assemble/element_quadrature.hpp"
+#include "space/element_quadrature.hpp"
 
-#include "assemble/gauss_quadrature.hpp"
+#include "space/gauss_quadrature.hpp"
 
 namespace isosid::prep {
 

@@ -1,5 +1,5 @@
 // Coincident-point merging and free-DOF numbering; see dof_map.hpp.
-#include "assemble/dof_map.hpp"
+#include "space/dof_map.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Evaluation of rational element functions; see element_evaluator.hpp.
-#include "assemble/element_evaluator.hpp"
+#include "space/element_evaluator.hpp"
 
-#include "assemble/bernstein.hpp"
+#include "space/bernstein.hpp"
 
 namespace isosid::prep {
 

@@ -1,7 +1,7 @@
 // 1D and tensor Bezier extraction; see span_extraction.hpp.
-#include "assemble/span_extraction.hpp"
+#include "space/span_extraction.hpp"
 
-#include "assemble/bernstein.hpp"
+#include "space/bernstein.hpp"
 
 #include <Eigen/LU>
 #include <cmath>

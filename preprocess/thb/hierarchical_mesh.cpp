@@ -1,5 +1,5 @@
 // Levels and nested domains of a THB refinement; see hierarchical_mesh.hpp.
-#include "refine/hierarchical_mesh.hpp"
+#include "thb/hierarchical_mesh.hpp"
 
 #include "isosid/format/error.hpp"
 

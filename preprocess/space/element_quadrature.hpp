@@ -1,7 +1,7 @@
 // Gauss points of an element: reference coordinates and parametric weights (det J and the
 // measure factor are applied by the caller at the evaluated point).
 #pragma once
-#include "assemble/analysis_space.hpp"
+#include "space/analysis_space.hpp"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 // Analysis spaces; see analysis_space.hpp.
-#include "assemble/analysis_space.hpp"
+#include "space/analysis_space.hpp"
 
-#include "assemble/hierarchical_space.hpp"
+#include "thb/hierarchical_space.hpp"
 
 namespace isosid::prep {
 

@@ -1,5 +1,5 @@
 // Bernstein basis; see bernstein.hpp.
-#include "assemble/bernstein.hpp"
+#include "space/bernstein.hpp"
 
 namespace isosid::prep {
 

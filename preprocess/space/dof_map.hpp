@@ -2,7 +2,7 @@
 // of revolution, seams) merged into one node, `dim` displacement components per node, and
 // constrained components eliminated from the free numbering.
 #pragma once
-#include "assemble/analysis_space.hpp"
+#include "space/analysis_space.hpp"
 
 #include <vector>
 
