@@ -11,6 +11,12 @@ int AnalysisSpace::bernstein_count() const {
   return n;
 }
 
+double AnalysisSpace::parametric_size(const Element& e) const {
+  double size = 1;
+  for (int d = 0; d < param_dim(); ++d) size *= e.hi(d) - e.lo(d);
+  return size;
+}
+
 bool AnalysisSpace::on_side(const Element& e, PatchSide side) const {
   const auto d = side.direction;
   return side.end == 0 ? e.lo(d) == param_lo(d) : e.hi(d) == param_hi(d);

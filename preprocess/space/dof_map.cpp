@@ -61,6 +61,17 @@ void DofMap::fix(int node, int component) {
   renumber();
 }
 
+void DofMap::element_nodes(const Element& element, std::vector<int>& nodes) const {
+  nodes.clear();
+  for (int f : element.functions) nodes.push_back(node_of(f));
+}
+
+void DofMap::element_free_dofs(const Element& element, std::vector<int>& free) const {
+  free.clear();
+  for (int f : element.functions)
+    for (int a = 0; a < dim_; ++a) free.push_back(free_index(node_of(f), a));
+}
+
 void DofMap::renumber() {
   free_.assign(fixed_.size(), -1);
   n_free_ = 0;

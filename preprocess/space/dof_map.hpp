@@ -31,6 +31,10 @@ public:
   /// Free index of every nodal DOF (node-major), -1 where fixed.
   const std::vector<int>& free_indices() const { return free_; }
   int total_dofs() const { return node_count() * dim_; }
+  /// Node of each function of the element, in the element's order.
+  void element_nodes(const Element& element, std::vector<int>& nodes) const;
+  /// Free index of each DOF of the element (f*dim + a), -1 where fixed.
+  void element_free_dofs(const Element& element, std::vector<int>& free) const;
 
 private:
   void renumber();

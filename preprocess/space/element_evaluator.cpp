@@ -1,50 +1,51 @@
 // Evaluation of rational element functions; see element_evaluator.hpp.
 #include "space/element_evaluator.hpp"
 
-#include "space/bernstein.hpp"
-
 namespace isosid::prep {
 
-void ElementEvaluator::evaluate(const Element& e, const double* t, PointValues& out) const {
-  const int pd = space_.param_dim(), nb = int(e.C.cols()), nf = int(e.functions.size());
-  for (int d = 0; d < pd; ++d) bernstein(space_.degrees[std::size_t(d)], t[d], b_[d], db_[d]);
-  // tensor Bernstein values and parametric gradients (first direction fastest)
-  Eigen::VectorXd B(nb);
-  Eigen::MatrixXd dB(nb, pd);
-  for (int b = 0; b < nb; ++b) {
-    int rest = b;
-    int digit[3] = {0, 0, 0};
-    for (int d = 0; d < pd; ++d) {
-      digit[d] = rest % (space_.degrees[std::size_t(d)] + 1);
-      rest /= space_.degrees[std::size_t(d)] + 1;
-    }
-    double v = 1;
-    for (int d = 0; d < pd; ++d) v *= b_[d](digit[d]);
-    B(b) = v;
-    for (int g = 0; g < pd; ++g) {
-      double dv = 1;
-      for (int d = 0; d < pd; ++d) dv *= d == g ? db_[d](digit[d]) / (e.hi(d) - e.lo(d)) : b_[d](digit[d]);
-      dB(b, g) = dv;
-    }
-  }
-  const Eigen::VectorXd N = e.C * B;
-  const Eigen::MatrixXd dN = e.C * dB;
-  Eigen::VectorXd w(nf);
-  for (int f = 0; f < nf; ++f) w(f) = space_.weights(e.functions[std::size_t(f)]);
-  const double W = w.dot(N);
-  const Eigen::RowVectorXd dW = w.transpose() * dN;
-  out.R = w.cwiseProduct(N) / W;
-  out.dR_dxi = (w.asDiagonal() * dN - out.R * dW) / W;
-  const int phys = space_.phys_dim();
-  out.x = Eigen::VectorXd::Zero(phys);
-  out.J = Eigen::MatrixXd::Zero(phys, pd);
+void ElementEvaluator::evaluate(const Element& e, const BernsteinTable& table, ElementValues& out) const {
+  const int pd = space_.param_dim(), nf = int(e.functions.size());
+  w_.resize(nf);
+  P_.resize(nf, space_.phys_dim());
   for (int f = 0; f < nf; ++f) {
-    const auto P = space_.control_points.row(e.functions[std::size_t(f)]).transpose();
-    out.x += out.R(f) * P;
-    out.J += P * out.dR_dxi.row(f);
+    w_(f) = space_.weights(e.functions[f]);
+    P_.row(f) = space_.control_points.row(e.functions[f]);
   }
+  N_.noalias() = e.C * table.values;
+  W_.noalias() = w_.transpose() * N_;
+  // R = w N / W
+  out.R = N_;
+  out.R.array().colwise() *= w_.array();
+  out.R.array().rowwise() /= W_.array();
+  out.x.noalias() = P_.transpose() * out.R;
+  for (int d = 0; d < pd; ++d) {
+    // dR/dxi_d = (w dN - R dW) / W, with dN/dxi_d = C dB/dt_d / (element size in d)
+    dN_.noalias() = e.C * table.derivatives[d];
+    dN_ /= e.hi(d) - e.lo(d);
+    dW_.noalias() = w_.transpose() * dN_;
+    Eigen::MatrixXd& dR = out.dR_dxi[d];
+    dR = dN_;
+    dR.array().colwise() *= w_.array();
+    dR.array() -= out.R.array().rowwise() * dW_.array();
+    dR.array().rowwise() /= W_.array();
+    out.dx_dxi[d].noalias() = P_.transpose() * dR;
+  }
+}
+
+void ElementEvaluator::evaluate(const Element& e, const double* t, PointValues& out) const {
+  const int pd = space_.param_dim();
+  fill_bernstein_table(space_.degrees, Eigen::Map<const Eigen::VectorXd>(t, pd), point_table_);
+  evaluate(e, point_table_, point_values_);
+  out.R = point_values_.R.col(0);
+  out.x = point_values_.x.col(0);
+  out.dR_dxi.resize(out.R.size(), pd);
+  out.J.resize(out.x.size(), pd);
   out.xi.resize(pd);
-  for (int d = 0; d < pd; ++d) out.xi(d) = e.lo(d) + t[d] * (e.hi(d) - e.lo(d));
+  for (int d = 0; d < pd; ++d) {
+    out.dR_dxi.col(d) = point_values_.dR_dxi[d].col(0);
+    out.J.col(d) = point_values_.dx_dxi[d].col(0);
+    out.xi(d) = e.lo(d) + t[d] * (e.hi(d) - e.lo(d));
+  }
 }
 
 }  // namespace isosid::prep

@@ -12,13 +12,13 @@ std::vector<SpanExtraction> span_extractions(const KnotVector& U, int p) {
   std::vector<SpanExtraction> out;
   const std::vector<double> u = unique_knots(U);
   Eigen::MatrixXd Bmat(p + 1, p + 1), Nmat(p + 1, p + 1);
-  Eigen::VectorXd values, ders;
+  Eigen::VectorXd values(p + 1), ders(p + 1);
   for (std::size_t s = 0; s + 1 < u.size(); ++s) {
     const double lo = u[s], hi = u[s + 1];
     const int span = find_span(U, p, 0.5 * (lo + hi));
     for (int k = 0; k <= p; ++k) {
       const double t = 0.5 * (1 - std::cos(M_PI * (k + 0.5) / (p + 1)));
-      bernstein(p, t, values, ders);
+      bernstein(p, t, values.data(), ders.data());
       Bmat.row(k) = values.transpose();
       double N[16];
       basis_functions(U, p, span, lo + t * (hi - lo), N);
