@@ -3,7 +3,7 @@
 
 #include "space/bernstein.hpp"
 #include "space/gauss_quadrature.hpp"
-#include "space/multi_index.hpp"
+#include "geometry/multi_index.hpp"
 
 namespace isosid::prep {
 

@@ -20,9 +20,7 @@ std::vector<SpanExtraction> span_extractions(const KnotVector& U, int p) {
       const double t = 0.5 * (1 - std::cos(M_PI * (k + 0.5) / (p + 1)));
       bernstein(p, t, values.data(), ders.data());
       Bmat.row(k) = values.transpose();
-      double N[16];
-      basis_functions(U, p, span, lo + t * (hi - lo), N);
-      for (int j = 0; j <= p; ++j) Nmat(k, j) = N[j];
+      Nmat.row(k) = basis_row(U, p, lo + t * (hi - lo)).segment(span - p, p + 1).transpose();
     }
     out.push_back({lo, hi, span - p, Eigen::PartialPivLU<Eigen::MatrixXd>(Bmat).solve(Nmat).transpose()});
   }
