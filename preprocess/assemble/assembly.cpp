@@ -32,9 +32,9 @@ Eigen::VectorXd assemble_traction(const AnalysisSpace& space, const DofMap& dofs
   std::vector<int> free;
   for (const BoundaryPoint& bp : boundary_points(space, elasticity, side)) {
     const Eigen::VectorXd traction = t(bp.x, bp.normal);
-    dofs.element_free_dofs(space.elements[std::size_t(bp.element)], free);
+    dofs.element_free_dofs(space.elements[bp.element], free);
     for (int i = 0; i < int(free.size()); ++i)
-      if (free[std::size_t(i)] >= 0) f(free[std::size_t(i)]) += bp.weight * bp.R(i / dim) * traction(i % dim);
+      if (free[i] >= 0) f(free[i]) += bp.weight * bp.R(i / dim) * traction(i % dim);
   }
   return f;
 }

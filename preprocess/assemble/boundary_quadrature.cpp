@@ -18,7 +18,7 @@ std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Ela
   std::vector<QuadratureRule> rules;
   std::vector<int> rule_sizes;
   for (int d : tangential) {
-    rules.push_back(gauss_legendre(points_per_direction > 0 ? points_per_direction : space.degrees[std::size_t(d)] + 1));
+    rules.push_back(gauss_legendre(points_per_direction > 0 ? points_per_direction : space.degrees[d] + 1));
     rule_sizes.push_back(int(rules.back().points.size()));
   }
 
@@ -26,7 +26,7 @@ std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Ela
   PointValues v;
   std::vector<BoundaryPoint> out;
   for (int e = 0; e < int(space.elements.size()); ++e) {
-    const Element& el = space.elements[std::size_t(e)];
+    const Element& el = space.elements[e];
     if (!space.on_side(el, side)) continue;
     // reference sub-range [t0, t1] of each tangential direction (the clipped interval)
     std::vector<double> t0(tangential.size(), 0.0), t1(tangential.size(), 1.0);

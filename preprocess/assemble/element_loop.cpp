@@ -55,7 +55,7 @@ std::vector<SparseMatrix> assemble_matrices(const AnalysisSpace& space, const El
     Eigen::MatrixXd local, spread;
 #pragma omp for schedule(dynamic, 8)
     for (int e = 0; e < n_elements; ++e) {
-      const Element& el = space.elements[std::size_t(e)];
+      const Element& el = space.elements[e];
       evaluator.evaluate(el, rule.basis, points.values);
       map_to_physical(space.parametric_size(el), rule, elasticity, points);
       for (std::size_t k = 0; k < terms.size(); ++k) {

@@ -14,14 +14,14 @@ ElementPattern::ElementPattern(const AnalysisSpace& space, const DofMap& dofs, U
   std::vector<int> nodes;
   for (const Element& e : space.elements) {
     dofs.element_nodes(e, nodes);
-    for (int g : nodes) coupled[std::size_t(g)].insert(coupled[std::size_t(g)].end(), nodes.begin(), nodes.end());
+    for (int g : nodes) coupled[g].insert(coupled[g].end(), nodes.begin(), nodes.end());
   }
   auto unknown = [&](int node, int a) { return unknowns == Unknowns::FreeDofs ? dofs.free_index(node, a) : node; };
   // columns in increasing unknown order: free indices grow with (node, component)
   column_start_.reserve(std::size_t(size_) + 1);
   column_start_.push_back(0);
   for (int g = 0; g < dofs.node_count(); ++g) {
-    std::vector<int>& around = coupled[std::size_t(g)];
+    std::vector<int>& around = coupled[g];
     std::sort(around.begin(), around.end());
     around.erase(std::unique(around.begin(), around.end()), around.end());
     for (int b = 0; b < components_; ++b) {
@@ -52,14 +52,14 @@ void PatternAccumulator::add(const Element& element, const Eigen::MatrixXd& loca
   p.element_unknowns(element, index_);
   by_row_.clear();
   for (int i = 0; i < int(index_.size()); ++i)
-    if (index_[std::size_t(i)] >= 0) by_row_.emplace_back(index_[std::size_t(i)], i);
+    if (index_[i] >= 0) by_row_.emplace_back(index_[i], i);
   std::sort(by_row_.begin(), by_row_.end());
   const bool same_component_only = p.coupling_ == Coupling::SameComponent;
   for (int j = 0; j < int(index_.size()); ++j) {
-    const int column = index_[std::size_t(j)];
+    const int column = index_[j];
     if (column < 0) continue;
     // walk the column's sorted rows alongside the element's sorted rows
-    const int* row = p.rows_.data() + p.column_start_[std::size_t(column)];
+    const int* row = p.rows_.data() + p.column_start_[column];
     for (const auto& [global, i] : by_row_) {
       if (same_component_only && i % p.components_ != j % p.components_) continue;
       while (*row < global) ++row;
