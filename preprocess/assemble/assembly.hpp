@@ -1,16 +1,15 @@
 // Sparse assembly of consistent mass and stiffness matrices (and boundary loads) on the free
-// DOFs, element by element with the (p+1)^d Gauss rule, in parallel over elements.
+// DOFs: compositions of integrands and patterns run by the one element loop (element_loop.hpp).
 #pragma once
-#include "assemble/analysis_space.hpp"
-#include "assemble/dof_map.hpp"
 #include "assemble/elasticity.hpp"
+#include "assemble/element_pattern.hpp"
+#include "space/analysis_space.hpp"
+#include "space/dof_map.hpp"
 
 #include <Eigen/Sparse>
 #include <functional>
 
 namespace isosid::prep {
-
-using SparseMatrix = Eigen::SparseMatrix<double>;
 
 struct SystemMatrices {
   SparseMatrix K, M;  ///< free DOFs x free DOFs

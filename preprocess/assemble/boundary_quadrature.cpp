@@ -1,8 +1,9 @@
 // Side quadrature; see boundary_quadrature.hpp.
 #include "assemble/boundary_quadrature.hpp"
 
-#include "assemble/element_evaluator.hpp"
-#include "assemble/gauss_quadrature.hpp"
+#include "space/element_evaluator.hpp"
+#include "space/gauss_quadrature.hpp"
+#include "geometry/multi_index.hpp"
 
 #include <algorithm>
 
@@ -15,13 +16,17 @@ std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Ela
   for (int d = 0; d < pd; ++d)
     if (d != side.direction) tangential.push_back(d);
   std::vector<QuadratureRule> rules;
-  for (int d : tangential) rules.push_back(gauss_legendre(points_per_direction > 0 ? points_per_direction : space.degrees[std::size_t(d)] + 1));
+  std::vector<int> rule_sizes;
+  for (int d : tangential) {
+    rules.push_back(gauss_legendre(points_per_direction > 0 ? points_per_direction : space.degrees[d] + 1));
+    rule_sizes.push_back(int(rules.back().points.size()));
+  }
 
   const ElementEvaluator evaluator(space);
   PointValues v;
   std::vector<BoundaryPoint> out;
   for (int e = 0; e < int(space.elements.size()); ++e) {
-    const Element& el = space.elements[std::size_t(e)];
+    const Element& el = space.elements[e];
     if (!space.on_side(el, side)) continue;
     // reference sub-range [t0, t1] of each tangential direction (the clipped interval)
     std::vector<double> t0(tangential.size(), 0.0), t1(tangential.size(), 1.0);
@@ -34,14 +39,14 @@ std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Ela
       t1[k] = (hi - el.lo(d)) / (el.hi(d) - el.lo(d));
     }
     if (empty) continue;
-    std::vector<int> g(tangential.size(), 0);
-    while (true) {
+    MultiIndex g(int(tangential.size()), rule_sizes);
+    do {
       double t[3] = {0, 0, 0};
       double w = 1;
       t[side.direction] = side.end;
       for (std::size_t k = 0; k < tangential.size(); ++k) {
-        t[tangential[k]] = t0[k] + (t1[k] - t0[k]) * rules[k].points(g[k]);
-        w *= rules[k].weights(g[k]) * (t1[k] - t0[k]) * (el.hi(tangential[k]) - el.lo(tangential[k]));
+        t[tangential[k]] = t0[k] + (t1[k] - t0[k]) * rules[k].points(g[int(k)]);
+        w *= rules[k].weights(g[int(k)]) * (t1[k] - t0[k]) * (el.hi(tangential[k]) - el.lo(tangential[k]));
       }
       evaluator.evaluate(el, t, v);
       Eigen::VectorXd n;
@@ -69,10 +74,7 @@ std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Ela
         bp.R = v.R;
         out.push_back(std::move(bp));
       }
-      std::size_t k = 0;
-      while (k < g.size() && ++g[k] >= int(rules[k].points.size())) g[k++] = 0;
-      if (k == g.size()) break;
-    }
+    } while (g.next());
   }
   return out;
 }

@@ -1,7 +1,7 @@
 // Gauss points on a side of the body with outward normals and measure-weighted quadrature
 // weights (length x thickness, length x 2 pi r, or area): for tractions and contact surfaces.
 #pragma once
-#include "assemble/analysis_space.hpp"
+#include "space/analysis_space.hpp"
 #include "assemble/elasticity.hpp"
 
 #include <array>

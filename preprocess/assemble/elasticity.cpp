@@ -35,9 +35,29 @@ Elasticity::Elasticity(AnalysisType type, const format::Material& material, doub
       D_.bottomRightCorner(3, 3).diagonal().setConstant(mu);
       break;
   }
+  // strain rows: channel c (derivative c, or hoop) of displacement component a
+  const int d = dim();
+  auto set = [&](int strain, int channel, int component) { S_(strain, channel * d + component) = 1.0; };
+  switch (type) {
+    case AnalysisType::PlaneStrain:
+    case AnalysisType::PlaneStress:  // xx yy xy
+      S_ = Eigen::MatrixXd::Zero(3, 2 * d);
+      set(0, 0, 0); set(1, 1, 1); set(2, 1, 0); set(2, 0, 1);
+      break;
+    case AnalysisType::Axisymmetric:  // x = r (radial), y = z (axis); rr zz tt rz
+      S_ = Eigen::MatrixXd::Zero(4, 3 * d);
+      set(0, 0, 0); set(1, 1, 1); set(2, 2, 0); set(3, 1, 0); set(3, 0, 1);
+      break;
+    case AnalysisType::Solid:  // xx yy zz xy yz xz
+      S_ = Eigen::MatrixXd::Zero(6, 3 * d);
+      set(0, 0, 0); set(1, 1, 1); set(2, 2, 2); set(3, 1, 0); set(3, 0, 1); set(4, 2, 1); set(4, 1, 2);
+      set(5, 2, 0); set(5, 0, 2);
+      break;
+  }
+  E_ = S_.transpose() * D_ * S_;
 }
 
-double Elasticity::measure(const Eigen::VectorXd& x) const {
+double Elasticity::measure(const Eigen::Ref<const Eigen::VectorXd>& x) const {
   switch (type_) {
     case AnalysisType::PlaneStrain:
     case AnalysisType::PlaneStress: return thickness_;
@@ -49,39 +69,13 @@ double Elasticity::measure(const Eigen::VectorXd& x) const {
 
 void Elasticity::strain_operator(const Eigen::VectorXd& R, const Eigen::MatrixXd& dR, const Eigen::VectorXd& x,
                                  Eigen::MatrixXd& B) const {
-  const int nf = int(R.size()), d = dim();
+  const int nf = int(R.size()), d = dim(), nc = channel_count();
   B.setZero(strain_count(), nf * d);
-  for (int f = 0; f < nf; ++f) {
-    const int c = f * d;
-    switch (type_) {
-      case AnalysisType::PlaneStrain:
-      case AnalysisType::PlaneStress:
-        B(0, c) = dR(f, 0);
-        B(1, c + 1) = dR(f, 1);
-        B(2, c) = dR(f, 1);
-        B(2, c + 1) = dR(f, 0);
-        break;
-      case AnalysisType::Axisymmetric:  // x = r (radial), y = z (axis)
-        B(0, c) = dR(f, 0);
-        B(1, c + 1) = dR(f, 1);
-        // hoop strain u_r / r; on the axis (u_r = 0 there) its limit is du_r/dr
-        B(2, c) = x(0) > 0 ? R(f) / x(0) : dR(f, 0);
-        B(3, c) = dR(f, 1);
-        B(3, c + 1) = dR(f, 0);
-        break;
-      case AnalysisType::Solid:
-        B(0, c) = dR(f, 0);
-        B(1, c + 1) = dR(f, 1);
-        B(2, c + 2) = dR(f, 2);
-        B(3, c) = dR(f, 1);
-        B(3, c + 1) = dR(f, 0);
-        B(4, c + 1) = dR(f, 2);
-        B(4, c + 2) = dR(f, 1);
-        B(5, c) = dR(f, 2);
-        B(5, c + 2) = dR(f, 0);
-        break;
+  for (int f = 0; f < nf; ++f)
+    for (int c = 0; c < nc; ++c) {
+      const double channel = c < d ? dR(f, c) : hoop(R(f), dR(f, 0), x(0));
+      for (int a = 0; a < d; ++a) B.col(f * d + a) += S_.col(c * d + a) * channel;
     }
-  }
 }
 
 std::vector<std::string> Elasticity::stress_components() const {

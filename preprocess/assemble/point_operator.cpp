@@ -1,7 +1,7 @@
 // Pointwise displacement and strain operators; see point_operator.hpp.
 #include "assemble/point_operator.hpp"
 
-#include "assemble/element_evaluator.hpp"
+#include "space/element_evaluator.hpp"
 
 namespace isosid::prep {
 
@@ -27,7 +27,7 @@ PointOperator point_operator(const AnalysisSpace& space, const DofMap& dofs, con
 bool locate(const AnalysisSpace& space, const Eigen::VectorXd& xi, int& element, double* t) {
   const int pd = space.param_dim();
   for (int e = 0; e < int(space.elements.size()); ++e) {
-    const Element& el = space.elements[std::size_t(e)];
+    const Element& el = space.elements[e];
     bool inside = true;
     for (int d = 0; d < pd && inside; ++d) inside = xi(d) >= el.lo(d) && xi(d) <= el.hi(d);
     if (!inside) continue;
@@ -43,7 +43,7 @@ std::optional<PointOperator> point_operator_at(const AnalysisSpace& space, const
   int e = 0;
   double t[3] = {0, 0, 0};
   if (!locate(space, xi, e, t)) return std::nullopt;
-  return point_operator(space, dofs, elasticity, space.elements[std::size_t(e)], t);
+  return point_operator(space, dofs, elasticity, space.elements[e], t);
 }
 
 Eigen::MatrixXd PointOperator::gather(const Eigen::MatrixXd& nodal) const {

@@ -2,8 +2,8 @@
 // containing it: u = N u_e, strain = B u_e, stress = D B u_e. Used for error norms, stress
 // recovery rows and contact shape rows.
 #pragma once
-#include "assemble/analysis_space.hpp"
-#include "assemble/dof_map.hpp"
+#include "space/analysis_space.hpp"
+#include "space/dof_map.hpp"
 #include "assemble/elasticity.hpp"
 
 #include <optional>

@@ -1,6 +1,8 @@
 // NURBS patch evaluation and sides; see nurbs_patch.hpp.
 #include "geometry/nurbs_patch.hpp"
 
+#include "geometry/multi_index.hpp"
+
 #include "isosid/format/error.hpp"
 
 #include <cmath>
@@ -53,15 +55,17 @@ void NurbsPatch::evaluate(const Eigen::VectorXd& xi, Eigen::VectorXd& x, Eigen::
   Eigen::MatrixXd dA = Eigen::MatrixXd::Zero(cols, pd);
   double W = 0;
   Eigen::VectorXd dW = Eigen::VectorXd::Zero(pd);
-  std::vector<int> local(static_cast<std::size_t>(pd), 0), ijk(static_cast<std::size_t>(pd));
-  while (true) {
+  std::vector<int> local_count(static_cast<std::size_t>(pd)), ijk(static_cast<std::size_t>(pd));
+  for (int d = 0; d < pd; ++d) local_count[std::size_t(d)] = degrees[std::size_t(d)] + 1;
+  MultiIndex local(pd, local_count);
+  do {
     double value = 1;
     Eigen::VectorXd grad = Eigen::VectorXd::Ones(pd);
     for (int d = 0; d < pd; ++d) {
       const auto dd = std::size_t(d);
-      ijk[dd] = spans[dd] - degrees[dd] + local[dd];
-      value *= ders[dd](0, local[dd]);
-      for (int e = 0; e < pd; ++e) grad(e) *= ders[dd](e == d ? 1 : 0, local[dd]);
+      ijk[dd] = spans[dd] - degrees[dd] + local[d];
+      value *= ders[dd](0, local[d]);
+      for (int e = 0; e < pd; ++e) grad(e) *= ders[dd](e == d ? 1 : 0, local[d]);
     }
     const int i = flat_index(n, ijk);
     const double w = weights(i);
@@ -69,10 +73,7 @@ void NurbsPatch::evaluate(const Eigen::VectorXd& xi, Eigen::VectorXd& x, Eigen::
     dA += w * points.row(i).transpose() * grad.transpose();
     W += value * w;
     dW += w * grad;
-    int d = 0;
-    while (d < pd && ++local[std::size_t(d)] > degrees[std::size_t(d)]) local[std::size_t(d++)] = 0;
-    if (d == pd) break;
-  }
+  } while (local.next());
   x = A / W;
   if (dx_dxi) *dx_dxi = (dA - x * dW.transpose()) / W;
 }
@@ -89,6 +90,15 @@ std::optional<PatchSide> NurbsPatch::side(const std::string& name) const {
   return std::nullopt;
 }
 
+Eigen::VectorXd basis_row(const KnotVector& U, int p, double u) {
+  Eigen::VectorXd row = Eigen::VectorXd::Zero(basis_count(U, p));
+  const int span = find_span(U, p, u);
+  double N[format::kMaxDegree + 1];
+  basis_functions(U, p, span, u, N);
+  for (int j = 0; j <= p; ++j) row(span - p + j) = N[j];
+  return row;
+}
+
 Eigen::VectorXd NurbsPatch::greville(int i) const {
   const std::vector<int> n = counts();
   Eigen::VectorXd g(param_dim());
@@ -96,7 +106,7 @@ Eigen::VectorXd NurbsPatch::greville(int i) const {
   for (int d = 0; d < param_dim(); ++d) {
     const int k = rest % n[std::size_t(d)], p = degrees[std::size_t(d)];
     rest /= n[std::size_t(d)];
-    g(d) = knots[std::size_t(d)].segment(k + 1, p).sum() / p;
+    g(d) = greville_abscissa(knots[std::size_t(d)], p, k);
   }
   return g;
 }
@@ -104,15 +114,9 @@ Eigen::VectorXd NurbsPatch::greville(int i) const {
 std::vector<int> NurbsPatch::side_points(PatchSide side) const {
   const std::vector<int> n = counts();
   std::vector<int> out;
-  std::vector<int> ijk(n.size(), 0);
-  for (int i = 0; i < count(); ++i) {
-    int rest = i;
-    for (std::size_t d = 0; d < n.size(); ++d) {
-      ijk[d] = rest % n[d];
-      rest /= n[d];
-    }
-    if (ijk[std::size_t(side.direction)] == (side.end == 0 ? 0 : n[std::size_t(side.direction)] - 1)) out.push_back(i);
-  }
+  MultiIndex ijk(param_dim(), n);
+  for (int i = 0; i < count(); ++i, ijk.next())
+    if (ijk[side.direction] == (side.end == 0 ? 0 : n[std::size_t(side.direction)] - 1)) out.push_back(i);
   return out;
 }
 
@@ -123,16 +127,11 @@ std::vector<int> NurbsPatch::collapsed_directions(PatchSide side) const {
   for (int d = 0; d < param_dim(); ++d) {
     if (d == side.direction) continue;
     bool collapsed = true;
-    for (int i = 0; i < count() && collapsed; ++i) {
-      std::vector<int> ijk(n.size());
-      int rest = i;
-      for (std::size_t k = 0; k < n.size(); ++k) {
-        ijk[k] = rest % n[k];
-        rest /= n[k];
-      }
-      if (ijk[std::size_t(side.direction)] != (side.end == 0 ? 0 : n[std::size_t(side.direction)] - 1) || ijk[std::size_t(d)] == 0) continue;
-      std::vector<int> first = ijk;
-      first[std::size_t(d)] = 0;
+    MultiIndex ijk(param_dim(), n);
+    for (int i = 0; i < count() && collapsed; ++i, ijk.next()) {
+      if (ijk[side.direction] != (side.end == 0 ? 0 : n[std::size_t(side.direction)] - 1) || ijk[d] == 0) continue;
+      std::vector<int> first(n.size());
+      for (int k = 0; k < param_dim(); ++k) first[std::size_t(k)] = k == d ? 0 : ijk[k];
       collapsed = (points.row(i) - points.row(flat_index(n, first))).norm() <= tol;
     }
     if (collapsed) out.push_back(d);

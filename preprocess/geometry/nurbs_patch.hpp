@@ -20,6 +20,12 @@ using format::KnotVector;
 using format::unique_knots;
 using format::validate_knot_vector;
 
+/// Greville abscissa of basis function i of (U, p): the mean of its p interior knots.
+inline double greville_abscissa(const KnotVector& U, int p, int i) { return U.segment(i + 1, p).sum() / p; }
+
+/// Values of all n basis functions of (U, p) at u (length n, mostly zero).
+Eigen::VectorXd basis_row(const KnotVector& U, int p, double u);
+
 /// A boundary side: the face where parameter `direction` is at its lower (end 0) or upper (end 1) bound.
 struct PatchSide {
   int direction = 0;

@@ -1,9 +1,9 @@
 // A body ready for analysis: the refined patch, its analysis space, elasticity and DOFs
 // with boundary conditions applied (axis conditions of axisymmetric bodies included).
 #pragma once
-#include "assemble/analysis_space.hpp"
-#include "assemble/hierarchical_space.hpp"
-#include "assemble/dof_map.hpp"
+#include "space/analysis_space.hpp"
+#include "thb/hierarchical_space.hpp"
+#include "space/dof_map.hpp"
 #include "assemble/elasticity.hpp"
 #include "model/model_file.hpp"
 

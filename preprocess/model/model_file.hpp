@@ -5,7 +5,7 @@
 #include "isosid/format/sid.hpp"
 #include "model/placement.hpp"
 #include "refine/graded_knots.hpp"
-#include "refine/hierarchical_mesh.hpp"
+#include "thb/hierarchical_mesh.hpp"
 
 #include <array>
 #include <optional>

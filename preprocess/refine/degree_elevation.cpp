@@ -16,21 +16,12 @@ KnotVector elevated_knots(const KnotVector& U, int p, int t) {
   return Eigen::Map<Eigen::VectorXd>(out.data(), Eigen::Index(out.size()));
 }
 
-Eigen::VectorXd basis_row(const KnotVector& U, int p, double u) {
-  Eigen::VectorXd row = Eigen::VectorXd::Zero(basis_count(U, p));
-  const int span = find_span(U, p, u);
-  double N[16];
-  basis_functions(U, p, span, u, N);
-  for (int j = 0; j <= p; ++j) row(span - p + j) = N[j];
-  return row;
-}
-
 Eigen::MatrixXd degree_elevation_matrix(const KnotVector& U, int p, int t) {
   const KnotVector Un = elevated_knots(U, p, t);
   const int q = p + t, nn = basis_count(Un, q), no = basis_count(U, p);
   Eigen::MatrixXd A(nn, nn), B(nn, no);
   for (int j = 0; j < nn; ++j) {
-    const double g = Un.segment(j + 1, q).sum() / q;  // Greville abscissa
+    const double g = greville_abscissa(Un, q, j);
     A.row(j) = basis_row(Un, q, g).transpose();
     B.row(j) = basis_row(U, p, g).transpose();
   }

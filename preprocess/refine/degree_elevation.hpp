@@ -16,7 +16,4 @@ KnotVector elevated_knots(const KnotVector& U, int p, int t);
 /// which is delicate to port, by a well-conditioned banded solve).
 Eigen::MatrixXd degree_elevation_matrix(const KnotVector& U, int p, int t);
 
-/// Values of all n basis functions of (U, p) at u (length n, mostly zero).
-Eigen::VectorXd basis_row(const KnotVector& U, int p, double u);
-
 }  // namespace isosid::prep

@@ -87,14 +87,9 @@ format::MasterPatch master_patch(const BodyModel& body, const std::string& name,
     const KnotVector& U = p.knots[std::size_t(d)];
     const int deg = p.degrees[std::size_t(d)], count = basis_count(U, deg);
     std::vector<double> gd;
-    for (int i = 0; i < count; ++i) gd.push_back(U.segment(i + 1, deg).sum() / deg);
-    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(count, count);
-    for (int k = 0; k < count; ++k) {
-      double N[16];
-      const int span = find_span(U, deg, gd[std::size_t(k)]);
-      basis_functions(U, deg, span, gd[std::size_t(k)], N);
-      for (int j = 0; j <= deg; ++j) a(k, span - deg + j) = N[j];
-    }
+    for (int i = 0; i < count; ++i) gd.push_back(greville_abscissa(U, deg, i));
+    Eigen::MatrixXd a(count, count);
+    for (int k = 0; k < count; ++k) a.row(k) = basis_row(U, deg, gd[std::size_t(k)]).transpose();
     A.push_back(std::move(a));
     g.push_back(std::move(gd));
   }

@@ -1,7 +1,7 @@
 // Coarse <-> fine transfer; see transfer.hpp.
 #include "sid/transfer.hpp"
 
-#include "assemble/gauss_quadrature.hpp"
+#include "space/gauss_quadrature.hpp"
 #include "assemble/point_operator.hpp"
 #include "sid/sid_builder.hpp"
 

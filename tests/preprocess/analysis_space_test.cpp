@@ -1,8 +1,8 @@
 // Element extraction: the rational element functions reproduce the patch's geometry and
 // basis, form a partition of unity, and their quadrature integrates areas and volumes.
-#include "assemble/analysis_space.hpp"
-#include "assemble/element_evaluator.hpp"
-#include "assemble/gauss_quadrature.hpp"
+#include "space/analysis_space.hpp"
+#include "space/element_evaluator.hpp"
+#include "space/gauss_quadrature.hpp"
 #include "geometry/primitives.hpp"
 #include "refine/patch_refinement.hpp"
 

@@ -4,13 +4,13 @@
 // spaces, Rayleigh-Ritz); the hierarchical sphere's size against the graded one; coarse <->
 // fine transfer. Tolerances: 1e-12 for pointwise identities of exact arithmetic (round-off of
 // sums of O(10) products of O(1) numbers), 1e-10 for solves and quadrature-based quantities.
-#include "assemble/element_evaluator.hpp"
+#include "space/element_evaluator.hpp"
 #include "assemble/point_operator.hpp"
 #include "geometry/primitives.hpp"
 #include "pipeline/prepare.hpp"
 #include "reduce/body_reduction.hpp"
 #include "reduce/modal_analysis.hpp"
-#include "refine/level_factors.hpp"
+#include "thb/level_factors.hpp"
 #include "sid/sid_builder.hpp"
 #include "sid/master_patch.hpp"
 #include "sid/transfer.hpp"

@@ -4,7 +4,7 @@
 // seed 001 Sect. 2.3 and 4.3). The boxes are built from a refinement request.
 #pragma once
 #include "geometry/nurbs_patch.hpp"
-#include "refine/level_factors.hpp"
+#include "thb/level_factors.hpp"
 
 #include <array>
 #include <string>

@@ -1,7 +1,7 @@
 // THB space construction; see hierarchical_space.hpp.
-#include "assemble/hierarchical_space.hpp"
+#include "thb/hierarchical_space.hpp"
 
-#include "assemble/span_extraction.hpp"
+#include "space/span_extraction.hpp"
 #include "refine/knot_insertion.hpp"
 
 #include <algorithm>
@@ -61,11 +61,11 @@ struct Level {
   }
   /// Support box of a tensor function.
   void support(const std::vector<int>& ijk, int dims, const std::vector<int>& p, std::vector<double>& lo, std::vector<double>& hi) const {
-    lo.resize(std::size_t(dims));
-    hi.resize(std::size_t(dims));
+    lo.resize(dims);
+    hi.resize(dims);
     for (int d = 0; d < dims; ++d) {
-      lo[std::size_t(d)] = U[std::size_t(d)](ijk[std::size_t(d)]);
-      hi[std::size_t(d)] = U[std::size_t(d)](ijk[std::size_t(d)] + p[std::size_t(d)] + 1);
+      lo[d] = U[d](ijk[d]);
+      hi[d] = U[d](ijk[d] + p[d] + 1);
     }
   }
 };
@@ -75,13 +75,13 @@ public:
   Builder(const NurbsPatch& patch, const HierarchicalMesh& mesh) : patch_(patch), mesh_(mesh), pd_(patch.param_dim()) {
     for (int l = 0; l < mesh.levels(); ++l) {
       Level lv;
-      lv.U = mesh.knots[std::size_t(l)];
-      lv.domain = mesh.domains[std::size_t(l)];
+      lv.U = mesh.knots[l];
+      lv.domain = mesh.domains[l];
       for (int d = 0; d < pd_; ++d) {
-        const int p = mesh.degrees[std::size_t(d)];
-        lv.n.push_back(basis_count(lv.U[std::size_t(d)], p));
-        lv.spans.push_back(span_extractions(lv.U[std::size_t(d)], p));
-        if (l > 0) lv.two_scale.push_back(two_scale(levels_.back().U[std::size_t(d)], lv.U[std::size_t(d)], p));
+        const int p = mesh.degrees[d];
+        lv.n.push_back(basis_count(lv.U[d], p));
+        lv.spans.push_back(span_extractions(lv.U[d], p));
+        if (l > 0) lv.two_scale.push_back(two_scale(levels_.back().U[d], lv.U[d], p));
       }
       levels_.push_back(std::move(lv));
     }
@@ -113,34 +113,34 @@ private:
     std::vector<SparseRow> rows(std::size_t(T.rows()));
     for (Eigen::Index j = 0; j < T.rows(); ++j)
       for (Eigen::Index k = 0; k < T.cols(); ++k)
-        if (T(j, k) != 0.0) rows[std::size_t(j)].emplace_back(int(k), T(j, k));
+        if (T(j, k) != 0.0) rows[j].emplace_back(int(k), T(j, k));
     return rows;
   }
 
   /// Level-l functions whose support overlaps Omega^l, in flat-index order.
   std::vector<long long> overlapping_functions(int l) const {
-    const Level& lv = levels_[std::size_t(l)];
-    std::vector<int> first(static_cast<std::size_t>(pd_)), last(static_cast<std::size_t>(pd_));
+    const Level& lv = levels_[l];
+    std::vector<int> first(pd_), last(pd_);
     for (int d = 0; d < pd_; ++d) {
-      const KnotVector& U = lv.U[std::size_t(d)];
-      const int p = mesh_.degrees[std::size_t(d)];
-      const double lo = lv.domain.lo[std::size_t(d)], hi = lv.domain.hi[std::size_t(d)];
-      first[std::size_t(d)] = lv.n[std::size_t(d)];
-      last[std::size_t(d)] = -1;
-      for (int i = 0; i < lv.n[std::size_t(d)]; ++i)
+      const KnotVector& U = lv.U[d];
+      const int p = mesh_.degrees[d];
+      const double lo = lv.domain.lo[d], hi = lv.domain.hi[d];
+      first[d] = lv.n[d];
+      last[d] = -1;
+      for (int i = 0; i < lv.n[d]; ++i)
         if (U(i) < hi && U(i + p + 1) > lo) {
-          first[std::size_t(d)] = std::min(first[std::size_t(d)], i);
-          last[std::size_t(d)] = i;
+          first[d] = std::min(first[d], i);
+          last[d] = i;
         }
     }
     std::vector<long long> out;
     std::vector<int> ijk = first;
     for (int d = 0; d < pd_; ++d)
-      if (last[std::size_t(d)] < first[std::size_t(d)]) return out;
+      if (last[d] < first[d]) return out;
     while (true) {
       out.push_back(lv.flat(ijk));
       int d = 0;
-      while (d < pd_ && ++ijk[std::size_t(d)] > last[std::size_t(d)]) ijk[std::size_t(d)] = first[std::size_t(d)], ++d;
+      while (d < pd_ && ++ijk[d] > last[d]) ijk[d] = first[d], ++d;
       if (d == pd_) break;
     }
     return out;
@@ -150,13 +150,13 @@ private:
     if (l >= int(levels_.size())) return false;
     std::vector<double> lo, hi;
     lv.support(lv.multi(f), pd_, mesh_.degrees, lo, hi);
-    return levels_[std::size_t(l)].domain.contains(lo, hi);
+    return levels_[l].domain.contains(lo, hi);
   }
 
   void number_active_functions(AnalysisSpace& s, std::vector<int>& per_level) {
     int next = 0;
     for (int l = 0; l < int(levels_.size()); ++l) {
-      Level& lv = levels_[std::size_t(l)];
+      Level& lv = levels_[l];
       int count = 0;
       for (long long f : overlapping_functions(l))
         if (inside(l, lv, f) && !inside(l + 1, lv, f)) {
@@ -172,7 +172,7 @@ private:
   /// its support lies in Omega^l (truncated away or represented at finer levels), else its
   /// refinement of the parent level's representation.
   const SparseRow& truncated(int l, long long f) {
-    Level& lv = levels_[std::size_t(l)];
+    Level& lv = levels_[l];
     if (auto it = lv.truncated.find(f); it != lv.truncated.end()) return it->second;
     SparseRow row;
     if (auto a = lv.active.find(f); a != lv.active.end()) row.emplace_back(a->second, 1.0);
@@ -182,7 +182,7 @@ private:
 
   /// Coefficients of level-l function f on the patch's (level-0) functions: B^0 = T^T B^l.
   const SparseRow& on_patch(int l, long long f) {
-    Level& lv = levels_[std::size_t(l)];
+    Level& lv = levels_[l];
     if (auto it = lv.on_patch.find(f); it != lv.on_patch.end()) return it->second;
     SparseRow row;
     if (l == 0) row.emplace_back(int(f), 1.0);
@@ -193,22 +193,22 @@ private:
   /// sum_k T(f, k) parent(k): the two-scale relation applied to rows of the parent level.
   template <class ParentRow>
   SparseRow refine(int l, long long f, ParentRow parent) {
-    const Level& lv = levels_[std::size_t(l)];
-    const Level& up = levels_[std::size_t(l - 1)];
+    const Level& lv = levels_[l];
+    const Level& up = levels_[l - 1];
     const std::vector<int> ijk = lv.multi(f);
     SparseRow row;
-    std::vector<std::size_t> k(std::size_t(pd_), 0);
-    std::vector<int> parent_ijk(static_cast<std::size_t>(pd_));
+    std::vector<std::size_t> k(pd_, 0);
+    std::vector<int> parent_ijk(pd_);
     while (true) {
       double c = 1;
       for (int d = 0; d < pd_; ++d) {
-        const auto& entry = lv.two_scale[std::size_t(d)][std::size_t(ijk[std::size_t(d)])][k[std::size_t(d)]];
-        parent_ijk[std::size_t(d)] = entry.first;
+        const auto& entry = lv.two_scale[d][ijk[d]][k[d]];
+        parent_ijk[d] = entry.first;
         c *= entry.second;
       }
       add_scaled(row, parent(up.flat(parent_ijk)), c);
       int d = 0;
-      while (d < pd_ && ++k[std::size_t(d)] >= lv.two_scale[std::size_t(d)][std::size_t(ijk[std::size_t(d)])].size()) k[std::size_t(d++)] = 0;
+      while (d < pd_ && ++k[d] >= lv.two_scale[d][ijk[d]].size()) k[d++] = 0;
       if (d == pd_) break;
     }
     return row;
@@ -216,58 +216,58 @@ private:
 
   /// Active elements of level l: its cells in Omega^l and not in Omega^{l+1}.
   int add_active_elements(int l, AnalysisSpace& s) {
-    const Level& lv = levels_[std::size_t(l)];
-    std::vector<std::vector<int>> cells(static_cast<std::size_t>(pd_));
+    const Level& lv = levels_[l];
+    std::vector<std::vector<int>> cells(pd_);
     for (int d = 0; d < pd_; ++d)
-      for (int c = 0; c < int(lv.spans[std::size_t(d)].size()); ++c) {
-        const SpanExtraction& sp = lv.spans[std::size_t(d)][std::size_t(c)];
-        ParameterBox line{{lv.domain.lo[std::size_t(d)]}, {lv.domain.hi[std::size_t(d)]}};
-        if (line.contains({sp.lo}, {sp.hi})) cells[std::size_t(d)].push_back(c);
+      for (int c = 0; c < int(lv.spans[d].size()); ++c) {
+        const SpanExtraction& sp = lv.spans[d][c];
+        ParameterBox line{{lv.domain.lo[d]}, {lv.domain.hi[d]}};
+        if (line.contains({sp.lo}, {sp.hi})) cells[d].push_back(c);
       }
     int count = 0;
-    std::vector<std::size_t> e(std::size_t(pd_), 0);
+    std::vector<std::size_t> e(pd_, 0);
     for (const auto& c : cells)
       if (c.empty()) return 0;
-    std::vector<double> lo(static_cast<std::size_t>(pd_)), hi(static_cast<std::size_t>(pd_));
+    std::vector<double> lo(pd_), hi(pd_);
     while (true) {
       for (int d = 0; d < pd_; ++d) {
-        const SpanExtraction& sp = lv.spans[std::size_t(d)][std::size_t(cells[std::size_t(d)][e[std::size_t(d)]])];
-        lo[std::size_t(d)] = sp.lo;
-        hi[std::size_t(d)] = sp.hi;
+        const SpanExtraction& sp = lv.spans[d][cells[d][e[d]]];
+        lo[d] = sp.lo;
+        hi[d] = sp.hi;
       }
-      if (l + 1 >= int(levels_.size()) || !levels_[std::size_t(l + 1)].domain.contains(lo, hi)) {
+      if (l + 1 >= int(levels_.size()) || !levels_[l + 1].domain.contains(lo, hi)) {
         s.elements.push_back(element(l, e, cells));
         ++count;
       }
       int d = 0;
-      while (d < pd_ && ++e[std::size_t(d)] >= cells[std::size_t(d)].size()) e[std::size_t(d++)] = 0;
+      while (d < pd_ && ++e[d] >= cells[d].size()) e[d++] = 0;
       if (d == pd_) break;
     }
     return count;
   }
 
   Element element(int l, const std::vector<std::size_t>& e, const std::vector<std::vector<int>>& cells) {
-    const Level& lv = levels_[std::size_t(l)];
+    const Level& lv = levels_[l];
     Element el;
     el.level = l;
     std::vector<const Eigen::MatrixXd*> C1d;
-    std::vector<int> first(static_cast<std::size_t>(pd_));
+    std::vector<int> first(pd_);
     for (int d = 0; d < pd_; ++d) {
-      const SpanExtraction& sp = lv.spans[std::size_t(d)][std::size_t(cells[std::size_t(d)][e[std::size_t(d)]])];
+      const SpanExtraction& sp = lv.spans[d][cells[d][e[d]]];
       el.lo(d) = sp.lo;
       el.hi(d) = sp.hi;
-      first[std::size_t(d)] = sp.first_function;
+      first[d] = sp.first_function;
       C1d.push_back(&sp.C);
     }
     const Eigen::MatrixXd tensor = tensor_extraction(C1d);  // local level-l functions x Bernstein
     // THB functions on the element: C_e = sum over local functions of their truncated rows
     std::map<int, Eigen::RowVectorXd> rows;
-    std::vector<int> ijk(static_cast<std::size_t>(pd_));
+    std::vector<int> ijk(pd_);
     for (Eigen::Index j = 0; j < tensor.rows(); ++j) {
       Eigen::Index rest = j;
       for (int d = 0; d < pd_; ++d) {
-        const int p1 = mesh_.degrees[std::size_t(d)] + 1;
-        ijk[std::size_t(d)] = first[std::size_t(d)] + int(rest % p1);
+        const int p1 = mesh_.degrees[d] + 1;
+        ijk[d] = first[d] + int(rest % p1);
         rest /= p1;
       }
       for (const auto& [thb, c] : truncated(l, lv.flat(ijk))) {
@@ -293,7 +293,7 @@ private:
     s.control_points.resize(n, cols);
     std::vector<Eigen::Triplet<double>> t;
     for (int l = 0; l < int(levels_.size()); ++l) {
-      for (const auto& [f, thb] : levels_[std::size_t(l)].active) {  // on_patch fills only the on_patch memos
+      for (const auto& [f, thb] : levels_[l].active) {  // on_patch fills only the on_patch memos
         const SparseRow& row = on_patch(l, f);
         double w = 0;
         Eigen::RowVectorXd wx = Eigen::RowVectorXd::Zero(cols);

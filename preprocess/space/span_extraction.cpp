@@ -1,7 +1,7 @@
 // 1D and tensor Bezier extraction; see span_extraction.hpp.
-#include "assemble/span_extraction.hpp"
+#include "space/span_extraction.hpp"
 
-#include "assemble/bernstein.hpp"
+#include "space/bernstein.hpp"
 
 #include <Eigen/LU>
 #include <cmath>
@@ -12,17 +12,15 @@ std::vector<SpanExtraction> span_extractions(const KnotVector& U, int p) {
   std::vector<SpanExtraction> out;
   const std::vector<double> u = unique_knots(U);
   Eigen::MatrixXd Bmat(p + 1, p + 1), Nmat(p + 1, p + 1);
-  Eigen::VectorXd values, ders;
+  Eigen::VectorXd values(p + 1), ders(p + 1);
   for (std::size_t s = 0; s + 1 < u.size(); ++s) {
     const double lo = u[s], hi = u[s + 1];
     const int span = find_span(U, p, 0.5 * (lo + hi));
     for (int k = 0; k <= p; ++k) {
       const double t = 0.5 * (1 - std::cos(M_PI * (k + 0.5) / (p + 1)));
-      bernstein(p, t, values, ders);
+      bernstein(p, t, values.data(), ders.data());
       Bmat.row(k) = values.transpose();
-      double N[16];
-      basis_functions(U, p, span, lo + t * (hi - lo), N);
-      for (int j = 0; j <= p; ++j) Nmat(k, j) = N[j];
+      Nmat.row(k) = basis_row(U, p, lo + t * (hi - lo)).segment(span - p, p + 1).transpose();
     }
     out.push_back({lo, hi, span - p, Eigen::PartialPivLU<Eigen::MatrixXd>(Bmat).solve(Nmat).transpose()});
   }

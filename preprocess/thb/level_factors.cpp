@@ -1,5 +1,5 @@
 // Seed 001 Alg. 3; see level_factors.hpp.
-#include "refine/level_factors.hpp"
+#include "thb/level_factors.hpp"
 
 #include <algorithm>
 #include <stdexcept>

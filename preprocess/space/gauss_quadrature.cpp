@@ -1,5 +1,5 @@
 // Gauss-Legendre nodes by Newton's method on P_n (converges from the Chebyshev-like guess).
-#include "assemble/gauss_quadrature.hpp"
+#include "space/gauss_quadrature.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -6,8 +6,8 @@
 // coefficients of the patch's weight function, so the geometry map stays the patch's exactly.
 // A one-level hierarchy is the patch's tensor-product space.
 #pragma once
-#include "assemble/analysis_space.hpp"
-#include "refine/hierarchical_mesh.hpp"
+#include "space/analysis_space.hpp"
+#include "thb/hierarchical_mesh.hpp"
 
 #include <Eigen/Sparse>
 

@@ -29,6 +29,8 @@ struct AnalysisSpace {
   int phys_dim() const { return int(control_points.cols()); }
   int n_functions() const { return int(weights.size()); }
   int bernstein_count() const;
+  /// Product of the element's parametric extents (length, area or volume in xi).
+  double parametric_size(const Element& e) const;
   /// True if the element touches the patch side.
   bool on_side(const Element& e, PatchSide side) const;
 };

@@ -1,7 +1,7 @@
 // Analysis spaces; see analysis_space.hpp.
-#include "assemble/analysis_space.hpp"
+#include "space/analysis_space.hpp"
 
-#include "assemble/hierarchical_space.hpp"
+#include "thb/hierarchical_space.hpp"
 
 namespace isosid::prep {
 
@@ -9,6 +9,12 @@ int AnalysisSpace::bernstein_count() const {
   int n = 1;
   for (int p : degrees) n *= p + 1;
   return n;
+}
+
+double AnalysisSpace::parametric_size(const Element& e) const {
+  double size = 1;
+  for (int d = 0; d < param_dim(); ++d) size *= e.hi(d) - e.lo(d);
+  return size;
 }
 
 bool AnalysisSpace::on_side(const Element& e, PatchSide side) const {

@@ -1,5 +1,5 @@
 // Levels and nested domains of a THB refinement; see hierarchical_mesh.hpp.
-#include "refine/hierarchical_mesh.hpp"
+#include "thb/hierarchical_mesh.hpp"
 
 #include "isosid/format/error.hpp"
 
@@ -36,7 +36,7 @@ double chord(const NurbsPatch& p, const std::vector<double>& point, int d, doubl
 /// (the parameter bound if it never does).
 double walk(const NurbsPatch& p, const std::vector<double>& point, int d, double length, double bound) {
   if (chord(p, point, d, bound) <= length) return bound;
-  double near = point[std::size_t(d)], far = bound;
+  double near = point[d], far = bound;
   for (int it = 0; it < 60; ++it) {
     const double mid = 0.5 * (near + far);
     (chord(p, point, d, mid) < length ? near : far) = mid;
@@ -50,15 +50,15 @@ ParameterBox request_box(const NurbsPatch& base, const HierarchicalRequest& r, c
   ParameterBox box;
   if (!r.box.empty()) {
     for (int d = 0; d < pd; ++d) {
-      box.lo.push_back(r.box[std::size_t(d)][0]);
-      box.hi.push_back(r.box[std::size_t(d)][1]);
+      box.lo.push_back(r.box[d][0]);
+      box.hi.push_back(r.box[d][1]);
     }
     return box;
   }
   const double size = (base.points.colwise().maxCoeff() - base.points.colwise().minCoeff()).norm();
   for (int d = 0; d < pd; ++d) {
     const double range = base.upper(d) - base.lower(d), step = 1e-6 * range;
-    const double t = std::min(r.point[std::size_t(d)] + step, base.upper(d)), s = std::max(r.point[std::size_t(d)] - step, base.lower(d));
+    const double t = std::min(r.point[d] + step, base.upper(d)), s = std::max(r.point[d] - step, base.lower(d));
     const double speed = std::max(chord(base, r.point, d, t), chord(base, r.point, d, s)) / step;
     if (speed < 1e-9 * size / range)
       throw format::InputError(file, std::string(kField) + ".point",
@@ -79,8 +79,8 @@ double largest_speed(const NurbsPatch& base, const ParameterBox& box, int d) {
   Eigen::MatrixXd J;
   for (int corner = 0; corner <= (1 << pd); ++corner) {
     for (int k = 0; k < pd; ++k)
-      xi(k) = corner == (1 << pd) ? 0.5 * (box.lo[std::size_t(k)] + box.hi[std::size_t(k)])
-                                  : ((corner >> k) & 1 ? box.hi[std::size_t(k)] : box.lo[std::size_t(k)]);
+      xi(k) = corner == (1 << pd) ? 0.5 * (box.lo[k] + box.hi[k])
+                                  : ((corner >> k) & 1 ? box.hi[k] : box.lo[k]);
     base.evaluate(xi, x, &J);
     speed = std::max(speed, J.col(d).norm());
   }
@@ -152,33 +152,33 @@ HierarchicalMesh hierarchical_mesh(const NurbsPatch& base, const HierarchicalReq
   for (int d = 0; d < pd; ++d)
     for (int end = 0; end < 2; ++end) {
       const double bound = end ? base.upper(d) : base.lower(d);
-      if (std::abs((end ? box.hi : box.lo)[std::size_t(d)] - bound) > 1e-12 * (base.upper(d) - base.lower(d))) continue;
+      if (std::abs((end ? box.hi : box.lo)[d] - bound) > 1e-12 * (base.upper(d) - base.lower(d))) continue;
       const std::vector<int> collapsed = base.collapsed_directions({d, end});
       if (int(collapsed.size()) == pd - 1) continue;  // collapsed to a point: nodes merge across levels
       for (int c : collapsed)
-        if (box.lo[std::size_t(c)] > base.lower(c) || box.hi[std::size_t(c)] < base.upper(c))
+        if (box.lo[c] > base.lower(c) || box.hi[c] < base.upper(c))
           throw format::InputError(file, std::string(kField) + (r.box.empty() ? ".width" : ".box"),
                                    std::string("touches side ") + side_name({d, end}) + ", which collapses along " +
                                        direction_name(c) + ", so it must span " + direction_name(c) + " whole");
     }
 
   // factors per direction (Alg. 3), padded with 1 at the coarse end to a common level count
-  std::vector<std::vector<int>> factors(static_cast<std::size_t>(pd));
+  std::vector<std::vector<int>> factors(pd);
   std::size_t refined_levels = 0;
   for (int d = 0; d < pd; ++d) {
-    const double extent = box.hi[std::size_t(d)] - box.lo[std::size_t(d)];
+    const double extent = box.hi[d] - box.lo[d];
     const double finest = r.smallest > 0 ? r.smallest / largest_speed(base, box, d) : extent / r.elements_across;
-    const double ratio = longest_span(base.knots[std::size_t(d)], box.lo[std::size_t(d)], box.hi[std::size_t(d)]) / finest;
+    const double ratio = longest_span(base.knots[d], box.lo[d], box.hi[d]) / finest;
     if (ratio > 1e7)
       throw format::InputError(file, std::string(kField) + (r.smallest > 0 ? ".smallest" : ".elements_across"),
                                std::string("asks for a subdivision by ") + std::to_string(std::llround(ratio)) + " along " +
                                    direction_name(d) + "; refine the coarse model or ask for larger elements");
     try {
-      factors[std::size_t(d)] = level_factors(int(std::ceil(ratio - 1e-9)), r.limits);
+      factors[d] = level_factors(int(std::ceil(ratio - 1e-9)), r.limits);
     } catch (const std::invalid_argument& e) {
       throw format::InputError(file, kField, std::string(direction_name(d)) + ": " + e.what());
     }
-    refined_levels = std::max(refined_levels, factors[std::size_t(d)].size());
+    refined_levels = std::max(refined_levels, factors[d].size());
   }
   // the largest splits go to the coarsest levels: the jumps in element size next to the
   // contact stay small (measured on scene A: ascending order, as Alg. 3 lists them, puts a
@@ -192,8 +192,8 @@ HierarchicalMesh hierarchical_mesh(const NurbsPatch& base, const HierarchicalReq
     std::vector<KnotVector> U;
     std::vector<int> f;
     for (int d = 0; d < pd; ++d) {
-      f.push_back(factors[std::size_t(d)][l]);
-      U.push_back(subdivide(m.knots.back()[std::size_t(d)], f.back()));
+      f.push_back(factors[d][l]);
+      U.push_back(subdivide(m.knots.back()[d], f.back()));
     }
     m.knots.push_back(std::move(U));
     m.factors.push_back(std::move(f));
@@ -206,24 +206,24 @@ HierarchicalMesh hierarchical_mesh(const NurbsPatch& base, const HierarchicalReq
   const int L = m.levels() - 1, reach = r.admissibility - 1;
   m.domains.resize(std::size_t(L + 1));
   for (int l = L; l >= 1; --l) {
-    ParameterBox& dom = m.domains[std::size_t(l)];
-    dom.lo.resize(std::size_t(pd));
-    dom.hi.resize(std::size_t(pd));
+    ParameterBox& dom = m.domains[l];
+    dom.lo.resize(pd);
+    dom.hi.resize(pd);
     for (int d = 0; d < pd; ++d) {
-      const std::vector<double> parent = unique_knots(m.knots[std::size_t(l - 1)][std::size_t(d)]);
-      double lo = box.lo[std::size_t(d)], hi = box.hi[std::size_t(d)];
+      const std::vector<double> parent = unique_knots(m.knots[l - 1][d]);
+      double lo = box.lo[d], hi = box.hi[d];
       if (l < L) {
-        lo = m.domains[std::size_t(l + 1)].lo[std::size_t(d)];
-        hi = m.domains[std::size_t(l + 1)].hi[std::size_t(d)];
+        lo = m.domains[l + 1].lo[d];
+        hi = m.domains[l + 1].hi[d];
         if (l + reach <= L) {
-          const std::vector<double> own = unique_knots(m.knots[std::size_t(l)][std::size_t(d)]);
-          const int p = m.degrees[std::size_t(d)];
-          lo = std::min(lo, step_knots(own, m.domains[std::size_t(l + reach)].lo[std::size_t(d)], p, true));
-          hi = std::max(hi, step_knots(own, m.domains[std::size_t(l + reach)].hi[std::size_t(d)], p, false));
+          const std::vector<double> own = unique_knots(m.knots[l][d]);
+          const int p = m.degrees[d];
+          lo = std::min(lo, step_knots(own, m.domains[l + reach].lo[d], p, true));
+          hi = std::max(hi, step_knots(own, m.domains[l + reach].hi[d], p, false));
         }
       }
-      dom.lo[std::size_t(d)] = snap(parent, lo, true);
-      dom.hi[std::size_t(d)] = snap(parent, hi, false);
+      dom.lo[d] = snap(parent, lo, true);
+      dom.hi[d] = snap(parent, hi, false);
     }
   }
   return m;

@@ -1,0 +1,52 @@
+// Element integrands: each turns the evaluated Gauss points of one element into its local
+// matrix; the element loop (element_loop.hpp) does the rest (quadrature, threads, scatter).
+#pragma once
+#include "assemble/elasticity.hpp"
+#include "space/element_evaluator.hpp"
+
+#include <Eigen/Dense>
+#include <array>
+
+namespace isosid::prep {
+
+/// An element's Gauss points, evaluated and mapped to physical space.
+struct ElementPoints {
+  ElementValues values;                  ///< R, x and parametric derivatives, one column per point
+  std::array<Eigen::MatrixXd, 3> dR_dx;  ///< per physical direction: nf x points
+  Eigen::VectorXd weight;                ///< Gauss weight x element size x |det J| x measure factor
+};
+
+class ElementIntegrand {
+public:
+  virtual ~ElementIntegrand() = default;
+  /// Unknowns per function in the local matrix: dim for vector integrands, 1 for scalar ones
+  /// (which the loop spreads over the displacement components when assembling on DOFs).
+  virtual int components() const = 0;
+  /// The local matrix, rows and columns f*components() + a.
+  virtual void element_matrix(const ElementPoints& p, Eigen::MatrixXd& local) const = 0;
+};
+
+/// Stiffness int B^T D B dV, from the products of the strain channels (elasticity.hpp):
+/// one GEMM over all points per element instead of B^T D B per point.
+class StiffnessIntegrand : public ElementIntegrand {
+public:
+  explicit StiffnessIntegrand(const Elasticity& elasticity) : elasticity_(elasticity) {}
+  int components() const override { return elasticity_.dim(); }
+  void element_matrix(const ElementPoints& p, Eigen::MatrixXd& local) const override;
+
+private:
+  const Elasticity& elasticity_;
+};
+
+/// Scalar mass rho int R_i R_j dV (consistent mass on each component, or over nodes).
+class MassIntegrand : public ElementIntegrand {
+public:
+  explicit MassIntegrand(double density) : density_(density) {}
+  int components() const override { return 1; }
+  void element_matrix(const ElementPoints& p, Eigen::MatrixXd& local) const override;
+
+private:
+  double density_;
+};
+
+}  // namespace isosid::prep
