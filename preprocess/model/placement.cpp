@@ -1,9 +1,11 @@
 // Nearest-point projection and line sampling on a body; see placement.hpp.
 #include "model/placement.hpp"
 
+#include "geometry/multi_index.hpp"
 #include "model/body_model.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -24,23 +26,19 @@ std::vector<Eigen::VectorXd> sample_axes(const NurbsPatch& patch) {
 
 Eigen::VectorXd best_sample(const NurbsPatch& patch, const Eigen::VectorXd& target) {
   const std::vector<Eigen::VectorXd> axes = sample_axes(patch);
-  Eigen::Index total = 1;
-  for (const Eigen::VectorXd& a : axes) total *= a.size();
+  std::array<Eigen::Index, 3> extents{1, 1, 1};
+  for (int d = 0; d < patch.param_dim(); ++d) extents[std::size_t(d)] = axes[std::size_t(d)].size();
   Eigen::VectorXd xi(patch.param_dim()), best, x;
   double best_d2 = std::numeric_limits<double>::infinity();
-  for (Eigen::Index s = 0; s < total; ++s) {
-    Eigen::Index rest = s;
-    for (int d = 0; d < patch.param_dim(); ++d) {
-      const Eigen::VectorXd& a = axes[std::size_t(d)];
-      xi(d) = a(rest % a.size());
-      rest /= a.size();
-    }
+  MultiIndex sample(patch.param_dim(), extents);
+  do {
+    for (int d = 0; d < patch.param_dim(); ++d) xi(d) = axes[std::size_t(d)](sample[d]);
     patch.evaluate(xi, x);
     if (const double d2 = (x - target).squaredNorm(); d2 < best_d2) {
       best_d2 = d2;
       best = xi;
     }
-  }
+  } while (sample.next());
   return best;
 }
 
