@@ -93,8 +93,8 @@ RunOutcome Simulation::run(SimulationObserver& observer) {
   RunOutcome outcome;
   const auto wall0 = Clock::now();
   const std::clock_t cpu0 = std::clock();
-  start(observer);
   try {
+    start(observer);
     if (!advance_to(scene_.simulation.end_time, observer)) outcome.status = "interrupted";
   } catch (const format::ComputationError& e) {
     outcome.status = "failed";
