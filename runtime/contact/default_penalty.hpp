@@ -1,6 +1,6 @@
 // The penalty factor a contact gets when its scene gives none: c_p = 1000 E* / h, from the
 // materials of the bodies in contact (E* the combined plane-strain modulus) and the size h of
-// the smallest contact element (the contact resolution of the surfaces).
+// the fine contact elements (the contact resolution of the surfaces).
 #pragma once
 #include "body/floating_body.hpp"
 
@@ -11,9 +11,10 @@ namespace isosid::run {
 /// 0.1 % or less (scene A: 0.04 % at 5e18) while costing few extra steps (bench/RESULTS.md).
 constexpr double kPenaltyStiffnessRatio = 1000;
 
-/// The smallest element of a contact surface, m: its length along a curve (2D, divided out of
-/// the 2 pi r or thickness weights) or the square root of its area (3D).
-double smallest_contact_element(const format::ContactSurface& surface, const format::Sid& sid);
+/// The size of a contact surface's fine elements, m: the lower quartile over its elements of
+/// their length along a curve (2D, the 2 pi r or thickness divided out of the weights) or the
+/// square root of their area (3D).
+double contact_element_size(const format::ContactSurface& surface, const format::Sid& sid);
 
 /// Combined modulus E* of two bodies: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2; a body without
 /// elastic coordinates (rigid) adds nothing. `master` may be null (a fixed surface).
