@@ -5,11 +5,12 @@
 #include "isosid/format/sid_io.hpp"
 
 #include <cstdio>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace isosid::run {
 namespace fs = std::filesystem;
