@@ -32,6 +32,13 @@ void check_agree(const json& reference, const json& other, std::initializer_list
 }
 
 
+/// `text` with its first `from` replaced by `to` (which must be there).
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
 const std::string kImpact = R"(
 [simulation]
 dimension = "axisymmetric"
@@ -130,11 +137,6 @@ TEST_CASE("an elastic sphere impact conserves energy and rebounds", "[runtime]")
 
 TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[runtime]") {
   const test::ScratchDir dir("bad-scenes");
-  auto replace = [](std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    return text.replace(at, from.size(), to);
-  };
   struct Case {
     std::string text, expected;
   };
@@ -180,9 +182,7 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
 TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run at a sample and keep its results so far", "[runtime][signals]") {
   const test::ScratchDir dir("signals");
   // the impact at 1 ns steps: about a second per 100 us simulated, far longer than the test waits
-  std::string scene = kImpact;
-  scene.replace(scene.find("end_time = 100e-6"), 17, "end_time = 1e-3\nmax_step = 1e-9");
-  std::ofstream(dir.path("s.scene.toml")) << scene;
+  std::ofstream(dir.path("s.scene.toml")) << replace(kImpact, "end_time = 100e-6", "end_time = 1e-3\nmax_step = 1e-9");
   for (const auto& [signal, status] : std::vector<std::pair<std::string, int>>{{"TERM", 143}, {"INT", 130}, {"HUP", 129}}) {
     const std::string out = dir.path("out-" + signal);
     // started in the background; the signal follows once the run has marked its folder
@@ -209,12 +209,9 @@ TEST_CASE("a scene whose model isosid-prep refuses: exit 2 and isosid-prep's one
   const test::ScratchDir dir("bad-model");
   std::ifstream golden(kGolden + "/sphere_small.model.toml");
   std::string model((std::istreambuf_iterator<char>(golden)), std::istreambuf_iterator<char>());
-  model.replace(model.find("youngs_modulus = 7.28e10"), 24, "youngs_modulus = -1.0");
-  std::ofstream(dir.path("bad.model.toml")) << model;
-  std::string scene = kImpact;
-  const std::string sid = "sid = \"" + kGolden + "/sphere_small.sid.h5\"";
-  scene.replace(scene.find(sid), sid.size(), "sid = \"bad.sid.h5\"\nmodel = \"bad.model.toml\"");
-  std::ofstream(dir.path("s.scene.toml")) << scene;
+  std::ofstream(dir.path("bad.model.toml")) << replace(model, "youngs_modulus = 7.28e10", "youngs_modulus = -1.0");
+  std::ofstream(dir.path("s.scene.toml")) << replace(kImpact, "sid = \"" + kGolden + "/sphere_small.sid.h5\"",
+                                                     "sid = \"bad.sid.h5\"\nmodel = \"bad.model.toml\"");
   const auto r = test::run_program("ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_RUN_EXE + " -q " +
                                    dir.path("s.scene.toml") + " -o " + dir.path("out"));
   INFO(r.err);
@@ -226,10 +223,8 @@ TEST_CASE("a scene whose model isosid-prep refuses: exit 2 and isosid-prep's one
 
 TEST_CASE("bodies may start interpenetrating where the scene allows it", "[runtime]") {
   const test::ScratchDir dir("initial-penetration");
-  std::string scene = kImpact;
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"position = [0.0, 0.0100001, 0.0]", "position = [0.0, 0.009999, 0.0]"},
-                                 {"output_interval = 1e-6", "output_interval = 1e-6\nallow_initial_penetration = true"}})
-    scene.replace(scene.find(from), from.size(), to);
+  const std::string scene = replace(replace(kImpact, "position = [0.0, 0.0100001, 0.0]", "position = [0.0, 0.009999, 0.0]"),
+                                    "output_interval = 1e-6", "output_interval = 1e-6\nallow_initial_penetration = true");
   const json s = run_scene(dir, scene);
   CHECK(s["status"] == "completed");
   CHECK(s["contacts"][0]["start_s"].get<double>() == 0);  // in contact from the start
