@@ -14,7 +14,7 @@ PointOperator point_operator(const AnalysisSpace& space, const DofMap& dofs, con
   op.x = v.x;
   op.det_J = v.J.determinant();
   const int nf = int(element.functions.size()), dim = dofs.dim();
-  for (int f : element.functions) op.nodes.push_back(dofs.node_of(f));
+  dofs.element_nodes(element, op.nodes);
   op.N = Eigen::MatrixXd::Zero(dim, nf * dim);
   for (int f = 0; f < nf; ++f)
     for (int a = 0; a < dim; ++a) op.N(a, f * dim + a) = v.R(f);

@@ -1,6 +1,7 @@
 // THB space construction; see hierarchical_space.hpp.
 #include "thb/hierarchical_space.hpp"
 
+#include "geometry/multi_index.hpp"
 #include "space/span_extraction.hpp"
 #include "refine/knot_insertion.hpp"
 
@@ -134,15 +135,16 @@ private:
         }
     }
     std::vector<long long> out;
-    std::vector<int> ijk = first;
-    for (int d = 0; d < pd_; ++d)
+    std::vector<int> extent(pd_), ijk(pd_);
+    for (int d = 0; d < pd_; ++d) {
       if (last[d] < first[d]) return out;
-    while (true) {
-      out.push_back(lv.flat(ijk));
-      int d = 0;
-      while (d < pd_ && ++ijk[d] > last[d]) ijk[d] = first[d], ++d;
-      if (d == pd_) break;
+      extent[d] = last[d] - first[d] + 1;
     }
+    MultiIndex box(pd_, extent);
+    do {
+      for (int d = 0; d < pd_; ++d) ijk[d] = first[d] + box[d];
+      out.push_back(lv.flat(ijk));
+    } while (box.next());
     return out;
   }
 
@@ -197,9 +199,10 @@ private:
     const Level& up = levels_[l - 1];
     const std::vector<int> ijk = lv.multi(f);
     SparseRow row;
-    std::vector<std::size_t> k(pd_, 0);
-    std::vector<int> parent_ijk(pd_);
-    while (true) {
+    std::vector<int> parent_count(pd_), parent_ijk(pd_);
+    for (int d = 0; d < pd_; ++d) parent_count[d] = int(lv.two_scale[d][ijk[d]].size());
+    MultiIndex k(pd_, parent_count);
+    do {
       double c = 1;
       for (int d = 0; d < pd_; ++d) {
         const auto& entry = lv.two_scale[d][ijk[d]][k[d]];
@@ -207,10 +210,7 @@ private:
         c *= entry.second;
       }
       add_scaled(row, parent(up.flat(parent_ijk)), c);
-      int d = 0;
-      while (d < pd_ && ++k[d] >= lv.two_scale[d][ijk[d]].size()) k[d++] = 0;
-      if (d == pd_) break;
-    }
+    } while (k.next());
     return row;
   }
 
@@ -225,11 +225,14 @@ private:
         if (line.contains({sp.lo}, {sp.hi})) cells[d].push_back(c);
       }
     int count = 0;
-    std::vector<std::size_t> e(pd_, 0);
-    for (const auto& c : cells)
-      if (c.empty()) return 0;
+    std::vector<int> cell_count(pd_);
+    for (int d = 0; d < pd_; ++d) {
+      if (cells[d].empty()) return 0;
+      cell_count[d] = int(cells[d].size());
+    }
+    MultiIndex e(pd_, cell_count);
     std::vector<double> lo(pd_), hi(pd_);
-    while (true) {
+    do {
       for (int d = 0; d < pd_; ++d) {
         const SpanExtraction& sp = lv.spans[d][cells[d][e[d]]];
         lo[d] = sp.lo;
@@ -239,14 +242,11 @@ private:
         s.elements.push_back(element(l, e, cells));
         ++count;
       }
-      int d = 0;
-      while (d < pd_ && ++e[d] >= cells[d].size()) e[d++] = 0;
-      if (d == pd_) break;
-    }
+    } while (e.next());
     return count;
   }
 
-  Element element(int l, const std::vector<std::size_t>& e, const std::vector<std::vector<int>>& cells) {
+  Element element(int l, const MultiIndex& e, const std::vector<std::vector<int>>& cells) {
     const Level& lv = levels_[l];
     Element el;
     el.level = l;
@@ -262,14 +262,11 @@ private:
     const Eigen::MatrixXd tensor = tensor_extraction(C1d);  // local level-l functions x Bernstein
     // THB functions on the element: C_e = sum over local functions of their truncated rows
     std::map<int, Eigen::RowVectorXd> rows;
-    std::vector<int> ijk(pd_);
-    for (Eigen::Index j = 0; j < tensor.rows(); ++j) {
-      Eigen::Index rest = j;
-      for (int d = 0; d < pd_; ++d) {
-        const int p1 = mesh_.degrees[d] + 1;
-        ijk[d] = first[d] + int(rest % p1);
-        rest /= p1;
-      }
+    std::vector<int> local_count(pd_), ijk(pd_);
+    for (int d = 0; d < pd_; ++d) local_count[d] = mesh_.degrees[d] + 1;
+    MultiIndex local(pd_, local_count);
+    for (Eigen::Index j = 0; j < tensor.rows(); ++j, local.next()) {
+      for (int d = 0; d < pd_; ++d) ijk[d] = first[d] + local[d];
       for (const auto& [thb, c] : truncated(l, lv.flat(ijk))) {
         auto [it, fresh] = rows.try_emplace(thb, Eigen::RowVectorXd::Zero(tensor.cols()));
         it->second += c * tensor.row(j);
