@@ -4,6 +4,8 @@
 #include "pipeline/prepare.hpp"
 #include "tools/prep_report.hpp"
 
+#include <filesystem>
+
 namespace {
 
 std::string default_output(const std::string& model) {
@@ -45,6 +47,9 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (output.empty()) output = default_output(model_file);
+    std::error_code same_error;
+    if (std::filesystem::equivalent(model_file, output, same_error))
+      throw format::InputError(output, "-o", "is the model file itself; the SID would overwrite it");
     prep::print_sid_report(prep::prepare(spec, {.build_sid = true, .output = output}, observer), output, as_json);
     return 0;
   });

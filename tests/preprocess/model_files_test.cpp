@@ -6,7 +6,9 @@
 #include "preprocess/body_fixtures.hpp"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 using namespace isosid;
@@ -161,6 +163,16 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
   const auto missing = test::run_program(std::string(ISOSID_PREP_EXE) + " " + dir.path("nope.model.toml"));
   CHECK(missing.exit_status == 2);
   CHECK_THAT(missing.err, Contains("file not found"));
+  // the SID must not overwrite its own model
+  const std::string golden = std::string(ISOSID_GOLDEN_DIR) + "/beam_small.model.toml";
+  std::filesystem::copy_file(golden, dir.path("self.model.toml"));
+  const auto self = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("self.model.toml") + " -o " +
+                                      dir.path("self.model.toml"));
+  CHECK(self.exit_status == 2);
+  CHECK_THAT(self.err, Contains("-o: is the model file itself"));
+  CHECK(std::count(self.err.begin(), self.err.end(), '\n') == 1);
+  std::ifstream original(golden), kept(dir.path("self.model.toml"));
+  CHECK(std::string(std::istreambuf_iterator<char>(original), {}) == std::string(std::istreambuf_iterator<char>(kept), {}));
 }
 
 TEST_CASE("the seed beam model's first twelve elastic frequencies are converged to 0.1 %", "[model][slow]") {
