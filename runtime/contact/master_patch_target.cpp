@@ -11,8 +11,7 @@ namespace {
 const format::MasterPatch& find_master_patch(const FloatingBody& body, const std::string& surface, const std::string& contact) {
   const format::ContactSurface* s = body.contact_surface(surface);
   if (!s) throw format::InputError(contact, "target_surface", "the SID of '" + body.name() + "' has no contact surface '" + surface + "'");
-  for (const format::MasterPatch& m : body.sid().master_patches)
-    if (m.name == s->master_patch) return m;
+  if (const format::MasterPatch* m = format::find_master_patch(body.sid(), s->master_patch)) return *m;
   throw format::InputError(contact, "target_surface", "the SID of '" + body.name() + "' has no master patch '" + s->master_patch + "'");
 }
 }  // namespace

@@ -18,9 +18,7 @@ format::Node surface_node(const FloatingBody& body, const MonitorSpec& m, const 
   const std::string field = "monitor " + m.name;
   const format::ContactSurface* surface = body.contact_surface(m.surface);
   if (!surface) throw format::InputError(scene_file, field, "the SID of '" + m.body + "' has no contact surface '" + m.surface + "'");
-  const format::MasterPatch* patch = nullptr;
-  for (const format::MasterPatch& p : body.sid().master_patches)
-    if (p.name == surface->master_patch) patch = &p;
+  const format::MasterPatch* patch = format::find_master_patch(body.sid(), surface->master_patch);
   if (!patch) throw format::InputError(scene_file, field, "the SID of '" + m.body + "' has no master patch for '" + m.surface + "'");
   const int dim = body.sid().dim();
   const DeformedPatch geometry(*patch, dim);
@@ -206,6 +204,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
   const double wall_time = outcome.wall_time_s;
   j["wall_time_s"] = wall_time;
   j["cpu_time_s"] = outcome.cpu_time_s;
+  j["warnings"] = system_.warnings();
   j["end_time_s"] = time_.empty() ? 0.0 : time_.back();
   j["steps"] = stats.steps;
   j["rejected_steps"] = stats.attempts - stats.steps;

@@ -33,8 +33,8 @@ public:
 
   /// results.h5: written to a temporary file and renamed (never half-written).
   void write_results(const std::string& path) const;
-  /// summary.json: outcome, integrator statistics, contacts, bodies at y_final, energy
-  /// balance, monitors and the signed relative errors against the scene's reference values.
+  /// summary.json: outcome, warnings, integrator statistics, contacts, bodies at y_final,
+  /// energy balance, monitors and the signed relative errors against the scene's reference values.
   nlohmann::json summary(const IntegratorStats& stats, const RunOutcome& outcome, const double* y_final) const;
   double max_relative_energy_error() const;
 

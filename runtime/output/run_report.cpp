@@ -20,8 +20,7 @@ nlohmann::json write_run_report(const std::string& dir, const Recorder& recorder
                                 const RunOutcome& outcome) {
   const std::filesystem::path folder(dir);
   recorder.write_results((folder / "results.h5").string());
-  nlohmann::json summary = recorder.summary(simulation.stats(), outcome, simulation.state().data());
-  summary["warnings"] = simulation.system().warnings();
+  const nlohmann::json summary = recorder.summary(simulation.stats(), outcome, simulation.state().data());
   format::write_text_atomically((folder / "summary.json").string(), summary.dump(2) + "\n");
   return summary;
 }
