@@ -4,9 +4,8 @@
 #include "body/rigid_body_sid.hpp"
 #include "contact/master_patch_target.hpp"
 #include "contact/shape_target.hpp"
+#include "isosid/common/number_text.hpp"
 #include "isosid/format/error.hpp"
-
-#include <cstdio>
 
 namespace isosid::run {
 
@@ -48,14 +47,17 @@ void MultibodySystem::warn_of_many_dynamic_modes(const FloatingBody& body, const
   // an explicit integrator's step follows the highest integrated frequency: hundreds of
   // dynamic modes of a full model turn a sub-second run into tens of minutes
   if (body.n_dynamic() <= kManyDynamicModes) return;
-  const double f_max = body.sid().refmod.frequencies_hz(body.n_dynamic() - 1);
-  std::string advice = spec.high_modes == "quasistatic"
-                           ? "its SID marks no high modes (" + body.sid().refmod.reduction_method + " reduction); set quasistatic_above_hz"
-                           : "set high_modes = \"quasistatic\" (with quasistatic_above_hz for a SID without high modes)";
-  char what[160];
-  std::snprintf(what, sizeof what, "body '%s' integrates %lld modes dynamically (up to %.3g Hz), which makes small steps: ",
-                body.name().c_str(), static_cast<long long>(body.n_dynamic()), f_max);
-  warnings_.push_back(what + advice);
+  const format::RefMod& modes = body.sid().refmod;
+  std::string advice;
+  if (spec.high_modes != "quasistatic")
+    advice = "set high_modes = \"quasistatic\" (with quasistatic_above_hz for a SID without high modes)";
+  else if (spec.quasistatic_above_hz > 0)
+    advice = "lower quasistatic_above_hz";
+  else
+    advice = "its SID marks no high modes (" + modes.reduction_method + " reduction); set quasistatic_above_hz";
+  warnings_.push_back("body '" + body.name() + "' integrates " + std::to_string(body.n_dynamic()) +
+                      " modes dynamically (up to " + common::number_text(modes.frequencies_hz(body.n_dynamic() - 1)) +
+                      " Hz), which makes small steps: " + advice);
 }
 
 std::size_t MultibodySystem::body_index(const std::string& name) const {

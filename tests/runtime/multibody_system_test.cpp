@@ -30,6 +30,13 @@ TEST_CASE("MultibodySystem: hundreds of dynamic modes draw a warning", "[runtime
     REQUIRE(system.warnings().size() == 1);
     CHECK_THAT(system.warnings()[0], Contains("set quasistatic_above_hz"));
   }
+  SECTION("a split that still keeps hundreds of modes dynamic") {
+    scene.bodies[0].high_modes = "quasistatic";
+    scene.bodies[0].quasistatic_above_hz = sid.refmod.frequencies_hz(nq - 2);
+    const run::MultibodySystem system(scene, {sid});
+    REQUIRE(system.warnings().size() == 1);
+    CHECK_THAT(system.warnings()[0], Contains("lower quasistatic_above_hz"));
+  }
   SECTION("a split that keeps few modes dynamic") {
     scene.bodies[0].high_modes = "quasistatic";
     scene.bodies[0].quasistatic_above_hz = sid.refmod.frequencies_hz(9);
