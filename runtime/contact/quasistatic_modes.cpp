@@ -119,14 +119,17 @@ double QuasistaticModes::potential_change(double penalty_before) const {
   return change;
 }
 
+void QuasistaticModes::update_rotation_loads(const double* y) const {
+  rotation_loads_.setZero(size());
+  // held during the Newton iterations: they depend on q only through the small Oe1 terms
+  for (FloatingBody* b : bodies_)
+    b->add_quasistatic_rotation_loads(y, rotation_loads_.segment(b->quasistatic_offset(), b->n_quasistatic()));
+}
+
 int QuasistaticModes::solve(const double* y) const {
   if (size() == 0) return 0;
-  rotation_loads_.setZero(size());
-  for (FloatingBody* b : bodies_) {
-    z_.segment(b->quasistatic_offset(), b->n_quasistatic()) = b->quasistatic_modes();
-    // held during the Newton iterations: they depend on q only through the small Oe1 terms
-    b->add_quasistatic_rotation_loads(y, rotation_loads_.segment(b->quasistatic_offset(), b->n_quasistatic()));
-  }
+  for (FloatingBody* b : bodies_) z_.segment(b->quasistatic_offset(), b->n_quasistatic()) = b->quasistatic_modes();
+  update_rotation_loads(y);
   // Without friction the equilibrium minimizes the convex energy
   // Pi(z) = 1/2 z^T K z - z . loads + sum 1/2 c_p g^2 w, whose gradient is the residual R: Newton steps
   // with an Armijo line search on Pi converge across active-set changes, where a line search
@@ -156,6 +159,27 @@ int QuasistaticModes::solve(const double* y) const {
   }
   throw format::ComputationError("the quasistatic modes of " + names_ +
                                  " did not converge (Newton, 60 iterations): penalty too stiff for the contact resolution?");
+}
+
+double QuasistaticModes::friction_power(const double* y, const double* ydot, Eigen::Index n) const {
+  if (size() == 0 || conservative_) return 0;
+  friction_ = terms_.friction;  // of the converged z_ at y (solve's last residual)
+  if (friction_.isZero(0.0)) return 0;
+  // dR/dy ydot by a forward difference at fixed z, with the step of a Jacobian-vector product
+  // (sqrt(eps) relative to the state); its error only blurs the energy bookkeeping, never the motion
+  const Eigen::Map<const Eigen::VectorXd> state(y, n), rate(ydot, n);
+  const double rate_norm = rate.norm();
+  if (rate_norm == 0) return 0;
+  const double h = 1.5e-8 * (1.0 + state.norm()) / rate_norm;
+  shifted_y_ = state + h * rate;
+  const Eigen::VectorXd R0 = R_;
+  update_rotation_loads(shifted_y_.data());
+  residual(shifted_y_.data(), R_);
+  // the Jacobian of the shifted state: it differs from that at y by O(h)
+  solve_jacobian((R0 - R_) / h, z_rate_);
+  update_rotation_loads(y);
+  residual(y, R_);  // leaves R_, the terms and the penalty energy those of y again
+  return -friction_.dot(z_rate_);
 }
 
 }  // namespace isosid::run

@@ -25,9 +25,16 @@ public:
   /// Updates the bodies' quasistatic modes for state y (warm-started from their last values);
   /// returns the Newton iterations. Throws ComputationError (naming the bodies) on failure.
   int solve(const double* y) const;
+  /// Power dissipated by friction through the quasistatic modes at the state y just solved:
+  /// -f_t . dz/dt, f_t the friction part of their generalized contact force. The equilibrium
+  /// R(z, y) = 0 moves z along with y, at dz/dt = -J^-1 (dR/dy) ydot; ydot has n entries.
+  /// 0 without friction.
+  double friction_power(const double* y, const double* ydot, Eigen::Index n) const;
 
 private:
   void scatter(const Eigen::VectorXd& z) const;
+  /// Centrifugal and Coriolis loads on z at state y (held while Newton iterates).
+  void update_rotation_loads(const double* y) const;
   /// Residual K z - f(z) at the current z_, and the rank-one terms of its Jacobian.
   void residual(const double* y, Eigen::VectorXd& R) const;
   /// Solves (K + U V^T) x = b.
@@ -48,6 +55,7 @@ private:
   mutable QuasistaticTerms terms_;
   mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual
   mutable Eigen::VectorXd rotation_loads_;       ///< centrifugal and Coriolis loads on z
+  mutable Eigen::VectorXd shifted_y_, friction_, z_rate_;  ///< friction_power's buffers
 };
 
 }  // namespace isosid::run

@@ -10,11 +10,13 @@ namespace isosid::run {
 
 struct QuasistaticTerms {
   Eigen::VectorXd force;
+  Eigen::VectorXd friction;  ///< the friction part of `force` (its work on z is dissipated)
   Eigen::MatrixXd U, V;    ///< n x capacity; the first `rank` columns are in use
   Eigen::Index rank = 0;
 
   void reset(Eigen::Index n) {
     force.setZero(n);
+    friction.setZero(n);
     if (U.rows() != n) U.resize(n, 0), V.resize(n, 0);
     rank = 0;
   }

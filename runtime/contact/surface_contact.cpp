@@ -95,10 +95,12 @@ double SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& 
   // one side's block: its generalized force from the world force F, and its parts of
   // u = -df/dgap and v = dgap/dz; sign -1 for the target (reaction, gap decreasing with it)
   auto add_side = [&](const FloatingBody& b, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Matrix3d& A, double sign,
-                      const Eigen::Vector3d& F, const Eigen::Vector3d& dF_dgap, const Eigen::Vector3d& n, Eigen::Index k) {
+                      const Eigen::Vector3d& F, const Eigen::Vector3d& Ft, const Eigen::Vector3d& dF_dgap, const Eigen::Vector3d& n,
+                      Eigen::Index k) {
     const Eigen::Index nh = b.n_quasistatic(), at = b.quasistatic_offset();
     const auto Psi_h = Psi.rightCols(nh);
     add_elastic_force(Psi_h, sign * (A.transpose() * F), terms.force.segment(at, nh));
+    if (spec_.friction > 0) add_elastic_force(Psi_h, sign * (A.transpose() * Ft), terms.friction.segment(at, nh));
     add_elastic_force(Psi_h, -sign * (A.transpose() * dF_dgap), terms.U.col(k).segment(at, nh));
     add_elastic_force(Psi_h, sign * (A.transpose() * n), terms.V.col(k).segment(at, nh));
   };
@@ -106,15 +108,16 @@ double SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& 
     if (t.gap >= 0) return;
     const double w = surface_.weight(g), fn = -spec_.penalty * t.gap * w;
     energy += 0.5 * spec_.penalty * t.gap * t.gap * w;
-    Eigen::Vector3d F = fn * t.normal, dF_dgap = -spec_.penalty * w * t.normal;
+    Eigen::Vector3d F = fn * t.normal, Ft = Eigen::Vector3d::Zero(), dF_dgap = -spec_.penalty * w * t.normal;
     if (spec_.friction > 0) {  // the friction direction is held: quasistatic modes carry no velocity
       const Eigen::Vector3d dir = friction_per_normal_force(sliding_velocity(P, Psi, y, t));
-      F += fn * dir;
+      Ft = fn * dir;
+      F += Ft;
       dF_dgap += -spec_.penalty * w * dir;
     }
     const Eigen::Index k = terms.add_term();
-    if (slave_qs) add_side(body_, Psi, A, 1.0, F, dF_dgap, t.normal, k);
-    if (master_qs) add_side(*master, t.Psi, A_master, -1.0, F, dF_dgap, t.normal, k);
+    if (slave_qs) add_side(body_, Psi, A, 1.0, F, Ft, dF_dgap, t.normal, k);
+    if (master_qs) add_side(*master, t.Psi, A_master, -1.0, F, Ft, dF_dgap, t.normal, k);
   });
   return energy;
 }

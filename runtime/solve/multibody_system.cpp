@@ -84,6 +84,8 @@ void MultibodySystem::rhs(double, const double* y, double* ydot) const {
     dissipation += contacts_[k].apply(y, forces_[slave_body_[k]], reaction).friction_power;
   }
   for (std::size_t i = 0; i < bodies_.size(); ++i) dissipation += bodies_[i]->derivatives(y, forces_[i], gravity_, ydot);
+  ydot[size_ - 1] = 0;
+  dissipation += quasistatic_->friction_power(y, ydot, Eigen::Index(size_));
   ydot[size_ - 1] = dissipation;
 }
 
