@@ -31,6 +31,9 @@ public:
   /// warm start of iterative projections (NaN: none yet) and is updated. Returns false when
   /// x is no candidate (far from the target, or beside its edge).
   virtual bool project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d& hint) const = 0;
+  /// Principal curvatures (1/m, positive where convex) of the target at its point nearest
+  /// the world point x, at the state of the last update(): for the Hertz estimate of an impact.
+  virtual Eigen::Vector2d curvatures(const Eigen::Vector3d& x) const = 0;
 };
 
 }  // namespace isosid::run

@@ -11,19 +11,25 @@
 
 namespace isosid::run {
 
-double contact_element_size(const format::ContactSurface& surface, const format::Sid& sid) {
+std::map<int, double> contact_element_lengths(const format::ContactSurface& surface, const format::Sid& sid) {
   // the weights are the element's measure times the analysis' factor: 2 pi r (axisymmetric),
   // the thickness (planar) or 1 (an area, 3D)
-  std::map<int, double> size;
+  std::map<int, double> measure;
   for (Eigen::Index g = 0; g < surface.points(); ++g) {
     double factor = 1;
     if (sid.analysis == format::AnalysisType::Axisymmetric) factor = 2 * std::numbers::pi * std::abs(surface.position(g, 0));
     else if (sid.dim() == 2) factor = sid.thickness;
-    if (factor > 0) size[surface.element(g)] += surface.weight(g) / factor;
+    if (factor > 0) measure[surface.element(g)] += surface.weight(g) / factor;
   }
+  std::map<int, double> length;
+  for (const auto& [element, m] : measure)
+    if (m > 0) length[element] = sid.dim() == 3 ? std::sqrt(m) : m;
+  return length;
+}
+
+double contact_element_size(const format::ContactSurface& surface, const format::Sid& sid) {
   std::vector<double> lengths;
-  for (const auto& [element, measure] : size)
-    if (measure > 0) lengths.push_back(sid.dim() == 3 ? std::sqrt(measure) : measure);
+  for (const auto& [element, length] : contact_element_lengths(surface, sid)) lengths.push_back(length);
   if (lengths.empty()) return INFINITY;
   // the lower quartile: the finest elements, but not a sliver that grading left behind (a
   // sphere graded toward its pole can end with one element a tenth of its neighbours)

@@ -4,12 +4,18 @@
 #pragma once
 #include "body/floating_body.hpp"
 
+#include <map>
+
 namespace isosid::run {
 
 /// How many times stiffer than one contact element the penalty layer is: its compliance
 /// 1/c_p is 1e-3 of the element's h/E*, so it shifts forces and contact times by about
 /// 0.1 % or less (scene A: 0.04 % at 5e18) while costing few extra steps (bench/RESULTS.md).
 constexpr double kPenaltyStiffnessRatio = 1000;
+
+/// The length of each element of a contact surface (by element index), m: along a curve (2D,
+/// the 2 pi r or thickness divided out of the weights) or the square root of its area (3D).
+std::map<int, double> contact_element_lengths(const format::ContactSurface& surface, const format::Sid& sid);
 
 /// The size of a contact surface's fine elements, m: the lower quartile over its elements of
 /// their length along a curve (2D, the 2 pi r or thickness divided out of the weights) or the

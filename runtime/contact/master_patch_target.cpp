@@ -1,6 +1,8 @@
 // Projection onto a deformed master patch; see master_patch_target.hpp.
 #include "contact/master_patch_target.hpp"
 
+#include "contact/surface_curvature.hpp"
+
 #include "isosid/format/error.hpp"
 
 #include <cmath>
@@ -76,6 +78,14 @@ bool MasterPatchTarget::project(const Eigen::Vector3d& x_world, const double* y,
   patch_.shape_rows(point_, out.Psi);
   out.velocity = body_.point_velocity(point_.C, out.Psi, y);
   return true;
+}
+
+Eigen::Vector2d MasterPatchTarget::curvatures(const Eigen::Vector3d& x_world) const {
+  Eigen::Vector3d x = A_.transpose() * (x_world - r_);
+  if (dim_ == 2) x.z() = 0;
+  Eigen::Vector2d u = Eigen::Vector2d::Constant(NAN);
+  if (!patch_.closest_point(x, u, point_)) return Eigen::Vector2d::Constant(NAN);
+  return principal_curvatures(point_, normal(point_, u), patch_.parameter_dim(), body_.sid().analysis == format::AnalysisType::Axisymmetric);
 }
 
 }  // namespace isosid::run

@@ -17,6 +17,7 @@ public:
   void update(const double* y) const override;
   double clearance(const Eigen::Vector3d& center, double radius) const override;
   bool project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d& hint) const override;
+  Eigen::Vector2d curvatures(const Eigen::Vector3d& x) const override;
 
 private:
   /// The outward unit normal at an evaluated point (body frame).

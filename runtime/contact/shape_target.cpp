@@ -28,6 +28,16 @@ bool ShapeTarget::project(const Eigen::Vector3d& x, const double* y, TargetPoint
   return true;
 }
 
+Eigen::Vector2d ShapeTarget::curvatures(const Eigen::Vector3d&) const {
+  switch (shape_.kind) {
+    case ShapeSpec::Kind::Sphere: return Eigen::Vector2d::Constant(1 / shape_.radius);
+    case ShapeSpec::Kind::Cylinder: return {1 / shape_.radius, 0.0};  // across its axis, and along it
+    case ShapeSpec::Kind::Plane:
+    case ShapeSpec::Kind::Box: break;  // flat faces
+  }
+  return Eigen::Vector2d::Zero();
+}
+
 ShapeSpec rigid_body_shape(const BodySpec& body) {
   ShapeSpec s;
   s.name = body.name;

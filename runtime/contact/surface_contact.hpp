@@ -30,6 +30,7 @@ public:
   const std::string& name() const { return spec_.name; }
   const FloatingBody& body() const { return body_; }
   const ContactTarget& target() const { return target_; }
+  const format::ContactSurface& surface() const { return surface_; }
   /// Adds the contact forces to the slave's generalized forces and their reactions to the
   /// target body's (`target_force`, unused for fixed targets); returns what was found.
   ContactState apply(const double* y, GeneralizedForce& slave_force, GeneralizedForce* target_force) const;

@@ -50,6 +50,7 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
   contact_penetration_.resize(nc);
   intervals_.resize(nc);
   peak_force_.assign(nc, 0);
+  points_at_peak_.assign(nc, 0);
   impulse_.assign(nc, 0);
   max_penetration_.assign(nc, 0);
   active_.assign(nc, false);
@@ -99,7 +100,7 @@ void Recorder::step(double t, const double* y) {
   const double dt = t - last_step_t_;
   for (std::size_t k = 0; k < states.size(); ++k) {
     const double f = states[k].force.norm();
-    peak_force_[k] = std::max(peak_force_[k], f);
+    if (f > peak_force_[k]) peak_force_[k] = f, points_at_peak_[k] = states[k].active_points;
     impulse_[k] += 0.5 * (f + last_force_[k]) * dt;  // trapezoid over accepted steps
     last_force_[k] = f;
     max_penetration_[k] = std::max(max_penetration_[k], states[k].max_penetration);
@@ -226,6 +227,14 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     c["penalty_n_m3"] = system_.contacts()[k].penalty();
     c["penalty_source"] = system_.contacts()[k].penalty_derived() ? "derived: 1000 E*/h" : "scene";
     c["peak_force_n"] = peak_force_[k];
+    c["points_at_peak"] = points_at_peak_[k];  // Gauss points carrying load at the peak-force step
+    if (const auto& e = system_.impact_estimates()[k])
+      c["hertz_estimate"] = {{"approach_speed_m_s", e->approach_speed},
+                             {e->line_contact ? "contact_half_width_m" : "contact_radius_m", e->contact_radius},
+                             {"peak_force_n", e->peak_force},
+                             {"contact_time_s", e->line_contact ? json(nullptr) : json(e->contact_time)},
+                             {"contact_element_m", e->element_size},
+                             {"elements_per_radius", e->elements_per_radius()}};
     c["impulse_ns"] = impulse_[k];
     c["max_penetration_m"] = max_penetration_[k];
     j["contacts"].push_back(c);

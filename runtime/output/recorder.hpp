@@ -50,6 +50,7 @@ private:
   // per-step statistics
   std::vector<std::vector<ContactInterval>> intervals_;
   std::vector<double> peak_force_, impulse_, max_penetration_;
+  std::vector<int> points_at_peak_;
   std::vector<bool> active_;
   double last_step_t_ = 0;
   std::vector<double> last_force_;

@@ -41,6 +41,13 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   quasistatic_ = std::make_unique<QuasistaticModes>(bodies_, contacts_);
   forces_.resize(bodies_.size());
   for (std::size_t i = 0; i < bodies_.size(); ++i) warn_of_many_dynamic_modes(*bodies_[i], scene.bodies[i]);
+  std::vector<double> y0(size_);
+  initial_state(y0.data());
+  for (const SurfaceContact& c : contacts_) {
+    impact_estimates_.push_back(estimate_impact(c, y0.data()));
+    if (impact_estimates_.back())
+      if (std::string w = resolution_warning(c, *impact_estimates_.back()); !w.empty()) warnings_.push_back(w);
+  }
 }
 
 void MultibodySystem::warn_of_many_dynamic_modes(const FloatingBody& body, const BodySpec& spec) {

@@ -4,11 +4,13 @@
 #pragma once
 #include "body/floating_body.hpp"
 #include "contact/contact_target.hpp"
+#include "contact/impact_estimate.hpp"
 #include "contact/quasistatic_modes.hpp"
 #include "contact/surface_contact.hpp"
 #include "scene/scene.hpp"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace isosid::run {
@@ -36,6 +38,9 @@ public:
 
   const std::vector<std::unique_ptr<FloatingBody>>& bodies() const { return bodies_; }
   const std::vector<SurfaceContact>& contacts() const { return contacts_; }
+  /// The Hertz estimate of each contact's impact from the initial state (none where the
+  /// bodies do not approach or the contact is not of Hertz type).
+  const std::vector<std::optional<ImpactEstimate>>& impact_estimates() const { return impact_estimates_; }
   const FloatingBody& body(const std::string& name) const;
   /// What the user should know about the set-up (e.g. hundreds of dynamically integrated modes).
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -62,6 +67,7 @@ private:
   mutable std::vector<GeneralizedForce> forces_;
   mutable long quasistatic_iterations_ = 0;
   std::vector<std::string> warnings_;
+  std::vector<std::optional<ImpactEstimate>> impact_estimates_;
 };
 
 }  // namespace isosid::run

@@ -58,7 +58,6 @@ int main(int argc, char** argv) {
     if (out_dir.empty()) out_dir = default_output(scene_file);
     std::vector<format::Sid> sids = run::load_sids(scene, quiet);
     run::Simulation simulation(std::move(scene), std::move(sids));
-    for (const std::string& warning : simulation.system().warnings()) std::cerr << "isosid-run: warning: " << warning << "\n";
 
     ReportingRecorder recorder(simulation, quiet);
     if (g_stop_signal) {
@@ -70,6 +69,9 @@ int main(int argc, char** argv) {
     const nlohmann::json summary = run::write_run_report(out_dir, recorder, simulation, outcome);
 
     if (as_json) std::cout << summary.dump(2) << "\n";
+    // after the run: a refusal or a failure stays the one line; summary.json always holds them
+    if (!quiet && outcome.completed())
+      for (const std::string& warning : simulation.system().warnings()) std::cerr << "isosid-run: warning: " << warning << "\n";
     if (!quiet)
       std::fprintf(stderr, "isosid-run: %s in %.3f s wall, %ld steps -> %s\n%s", outcome.status.c_str(), outcome.wall_time_s,
                    summary["steps"].get<long>(), out_dir.c_str(), run::reference_lines(summary).c_str());
