@@ -26,7 +26,15 @@ def with_keys(text, values, insert_after=None):
             text = text.replace(insert_after + "\n", f"{insert_after}\n{key} = {literal}\n", 1)
         else:
             raise KeyError(f"{key} not in the file and no place to insert it")
-    return text
+    return without_unused_contact_resolution(text)
+
+
+def without_unused_contact_resolution(text):
+    """A model whose element sizes were all given in metres no longer derives them from its
+    [contact_resolution] (which isosid-prep refuses unused): the table is dropped."""
+    if 'smallest = "contact"' in text or "[contact_resolution]" not in text:
+        return text
+    return re.sub(r"^\[contact_resolution\]\n(?:[^\[\n][^\n]*\n|\n)*", "", text, flags=re.M)
 
 
 def write_variant(folder, label, scene, model, scene_keys=None, model_keys=None, sid_name=None):

@@ -93,6 +93,8 @@ long long TomlView::integer(const std::string& key) const {
 }
 long long TomlView::integer(const std::string& key, long long fallback) const { return has(key) ? integer(key) : fallback; }
 
+bool TomlView::holds_string(const std::string& key) const { return has(key) && node(key).is_string(); }
+
 std::string TomlView::string(const std::string& key) const {
   auto s = node(key).value_exact<std::string>();
   if (!s) fail(key, "must be a string");

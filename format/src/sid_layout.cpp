@@ -128,7 +128,7 @@ const std::vector<const Item*>& items() {
         &stress::list, &stress::group, &stress::components, &stress::position, &stress::S,
         &transfer::group, &transfer::coarse_model_sha256, &transfer::coarse_to_fine, &transfer::fine_to_coarse,
         &discretization::group, &discretization::elements_per_level, &discretization::functions_per_level,
-        &discretization::free_dofs,
+        &discretization::free_dofs, &discretization::contact_radius,
         &provenance::group, &provenance::model_file, &provenance::model_sha256, &provenance::program_version,
         &provenance::created_utc, &provenance::timing_names, &provenance::timings_s});
     return v;

@@ -118,6 +118,7 @@ void read_discretization(const h5::Reader& r, Sid& sid) {
   d.elements_per_level = r.integers(discretization::elements_per_level.at());
   d.functions_per_level = r.integers(discretization::functions_per_level.at());
   d.free_dofs = int(r.integer(discretization::free_dofs.at()));
+  if (r.exists(discretization::contact_radius.at())) d.contact_radius = r.scalar(discretization::contact_radius.at());
   sid.discretization = std::move(d);
 }
 

@@ -207,6 +207,7 @@ void check_discretization(const Checker& c, const Sid& sid) {
     c.fail(discretization::functions_per_level.at(), "needs one entry per level, as elements_per_level");
   if ((d.elements_per_level.array() < 0).any() || (d.functions_per_level.array() < 0).any() || d.free_dofs < 0)
     c.fail(discretization::group.at(), "negative count");
+  if (!(d.contact_radius >= 0) || !std::isfinite(d.contact_radius)) c.fail(discretization::contact_radius.at(), "must be a positive length");
 }
 
 void check_transfer(const Checker& c, const Sid& sid) {

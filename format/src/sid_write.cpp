@@ -138,6 +138,7 @@ void write_discretization(h5::Writer& w, const Sid& sid) {
   put(w, discretization::elements_per_level, {}, sid.discretization->elements_per_level);
   put(w, discretization::functions_per_level, {}, sid.discretization->functions_per_level);
   put_integer(w, discretization::free_dofs, sid.discretization->free_dofs);
+  if (sid.discretization->contact_radius > 0) put(w, discretization::contact_radius, sid.discretization->contact_radius);
 }
 
 void write_provenance(h5::Writer& w, const Sid& sid) {

@@ -66,7 +66,8 @@ json describe(const Sid& sid) {
   if (const auto& d = sid.discretization)
     j["mesh"] = json{{"elements_per_level", std::vector<int>(d->elements_per_level.begin(), d->elements_per_level.end())},
                      {"functions_per_level", std::vector<int>(d->functions_per_level.begin(), d->functions_per_level.end())},
-                     {"free_dofs", d->free_dofs}};
+                     {"free_dofs", d->free_dofs},
+                     {"contact_radius_m", d->contact_radius > 0 ? json(d->contact_radius) : json(nullptr)}};
   j["transfer"] = sid.transfer ? json{{"coarse_nq", sid.transfer->coarse_to_fine.cols()},
                                       {"coarse_model_sha256", sid.transfer->coarse_model_sha256}}
                                : json(nullptr);
@@ -113,6 +114,7 @@ void print_text(const Sid& sid, std::ostream& out) {
   if (const auto& d = sid.discretization) {
     out << "mesh          " << d->elements_per_level.sum() << " elements, " << d->functions_per_level.sum() << " functions, "
         << d->free_dofs << " free DOFs";
+    if (d->contact_radius > 0) out << ", contact elements sized for a contact radius of " << d->contact_radius << " m";
     if (d->elements_per_level.size() > 1)
       for (Eigen::Index l = 0; l < d->elements_per_level.size(); ++l)
         out << "\n  level " << l << "     " << d->elements_per_level(l) << " elements, " << d->functions_per_level(l) << " functions";

@@ -98,9 +98,16 @@ NurbsPatch read_geometry(const TomlView& g, format::AnalysisType analysis) {
   return p;
 }
 
+/// A `smallest` given as "contact": the element size of [contact_resolution].
+double contact_sized(const TomlView& t, const std::string& key, const ContactResolutionSpec* resolution) {
+  if (t.string(key) != "contact") t.fail(key, "must be a length in metres or \"contact\"");
+  if (!resolution) t.fail(key, "\"contact\" needs a [contact_resolution] table (the expected contact radius)");
+  return resolution->element_size();
+}
+
 /// [refinement.hierarchical]: a parameter box, or a point with a physical width; how fine
-/// (smallest element in metres, or elements across the box) and the level limits of seed 001.
-HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch) {
+/// (smallest element in metres, "contact", or elements across the box) and the level limits of seed 001.
+HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch, ContactResolutionSpec* resolution) {
   h.allow_only({"box", "point", "width", "smallest", "elements_across", "admissibility", "max_levels", "max_knots_per_level"});
   HierarchicalRequest q;
   const int pd = patch.param_dim();
@@ -126,7 +133,12 @@ HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch
     q.width = h.positive("width");
   }
   if (h.has("smallest") && h.has("elements_across")) h.fail("smallest", "give smallest or elements_across, not both");
-  if (h.has("smallest")) q.smallest = h.positive("smallest");
+  if (h.holds_string("smallest")) {
+    q.smallest = contact_sized(h, "smallest", resolution);
+    resolution->hierarchical = true;
+  } else if (h.has("smallest")) {
+    q.smallest = h.positive("smallest");
+  }
   const long long across = h.integer("elements_across", 16);
   if (across < 1 || across > 1000) h.fail("elements_across", "must lie in 1..1000");
   q.elements_across = int(across);
@@ -141,7 +153,7 @@ HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch
   return q;
 }
 
-RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch) {
+RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch, ContactResolutionSpec* resolution) {
   r.allow_only({"degrees", "subdivisions", "graded", "hierarchical"});
   RefinementSpec spec;
   const int pd = patch.param_dim();
@@ -169,12 +181,17 @@ RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch) {
     q.toward = g.number("toward");
     if (q.toward < patch.lower(q.direction) || q.toward > patch.upper(q.direction))
       g.fail("toward", "outside the parameter range of " + std::string(direction_name(q.direction)));
-    q.smallest = g.positive("smallest");
+    if (g.holds_string("smallest")) {
+      q.smallest = contact_sized(g, "smallest", resolution);
+      resolution->graded.push_back(spec.graded.size());
+    } else {
+      q.smallest = g.positive("smallest");
+    }
     q.growth = g.number("growth", 1.3);
     if (q.growth <= 1.0 || q.growth > 3.0) g.fail("growth", "must lie in (1, 3]");
     spec.graded.push_back(q);
   }
-  if (auto h = r.optional_table("hierarchical")) spec.hierarchical = read_hierarchical(*h, patch);
+  if (auto h = r.optional_table("hierarchical")) spec.hierarchical = read_hierarchical(*h, patch, resolution);
   return spec;
 }
 
@@ -343,8 +360,8 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
 ModelSpec read_model_file(const std::string& path) {
   const toml::table root = common::parse_toml_file(path);
   const TomlView top(root, path);
-  top.allow_only({"body", "material", "geometry", "refinement", "boundary", "quadrature", "reduction", "damping",
-                  "contact_surface", "node", "stress_line"});
+  top.allow_only({"body", "material", "geometry", "contact_resolution", "refinement", "boundary", "quadrature", "reduction",
+                  "damping", "contact_surface", "node", "stress_line"});
   ModelSpec m;
   m.file = path;
 
@@ -369,7 +386,18 @@ ModelSpec read_model_file(const std::string& path) {
   m.material.density = mat.positive("density");
 
   m.patch = read_geometry(top.table("geometry"), m.analysis);
-  if (auto r = top.optional_table("refinement")) m.refinement = read_refinement(*r, m.patch);
+  if (auto c = top.optional_table("contact_resolution")) {
+    c->allow_only({"contact_radius", "elements_per_radius"});
+    ContactResolutionSpec& resolution = m.contact_resolution.emplace();
+    resolution.contact_radius = c->positive("contact_radius");
+    resolution.elements_per_radius = c->positive("elements_per_radius", resolution.elements_per_radius);
+    if (resolution.elements_per_radius < 1 || resolution.elements_per_radius > 100)
+      c->fail("elements_per_radius", "must lie in 1..100");
+  }
+  if (auto r = top.optional_table("refinement"))
+    m.refinement = read_refinement(*r, m.patch, m.contact_resolution ? &*m.contact_resolution : nullptr);
+  if (m.contact_resolution && m.contact_resolution->graded.empty() && !m.contact_resolution->hierarchical)
+    top.table("contact_resolution").fail("contact_radius", "no refinement uses it (give a refinement smallest = \"contact\")");
   if (auto b = top.optional_table("boundary")) m.fixed = read_boundary(*b, m.patch, format::spatial_dim(m.analysis));
   if (auto q = top.optional_table("quadrature")) {
     q->allow_only({"extra_points"});
@@ -379,6 +407,16 @@ ModelSpec read_model_file(const std::string& path) {
   }
   read_sid_content(top, m);
   return m;
+}
+
+void set_contact_radius(ModelSpec& model, double radius, const std::string& source) {
+  if (!model.contact_resolution)
+    throw format::InputError(model.file, source, "the model sizes no elements from a contact radius (it has no [contact_resolution])");
+  if (!(radius > 0) || !std::isfinite(radius)) throw format::InputError(model.file, source, "must be a positive length in metres");
+  ContactResolutionSpec& resolution = *model.contact_resolution;
+  resolution.contact_radius = radius;
+  for (std::size_t k : resolution.graded) model.refinement.graded[k].smallest = resolution.element_size();
+  if (resolution.hierarchical) model.refinement.hierarchical->smallest = resolution.element_size();
 }
 
 }  // namespace isosid::prep

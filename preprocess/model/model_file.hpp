@@ -58,6 +58,17 @@ struct StressLineSpec {
   int points = 10;
 };
 
+/// [contact_resolution]: contact elements sized from the expected contact radius a (Hertz),
+/// for refinements that say smallest = "contact". isosid-run passes its estimate for the
+/// scene (isosid-prep --contact-radius), so a changed body or speed gets elements of a/8.
+struct ContactResolutionSpec {
+  double contact_radius = 0;           ///< m
+  double elements_per_radius = 8;      ///< smallest contact element = contact_radius / this
+  std::vector<std::size_t> graded;     ///< the refinement.graded entries sized by it
+  bool hierarchical = false;           ///< refinement.hierarchical sized by it
+  double element_size() const { return contact_radius / elements_per_radius; }
+};
+
 struct ModelSpec {
   std::string file;                 ///< path of the model file
   std::string body_name;
@@ -66,6 +77,7 @@ struct ModelSpec {
   double thickness = 1.0;
   NurbsPatch patch;                 ///< the coarse, exact geometry
   RefinementSpec refinement;
+  std::optional<ContactResolutionSpec> contact_resolution;
   std::vector<FixedComponents> fixed;
   int extra_quadrature_points = 0;
   ReductionSpec reduction;
@@ -77,5 +89,9 @@ struct ModelSpec {
 
 /// Reads and validates a model file; throws InputError(file, field, problem).
 ModelSpec read_model_file(const std::string& path);
+
+/// Sets the expected contact radius (m) of a model with [contact_resolution], and the sizes of
+/// the refinements derived from it. Throws InputError(model file, `source`) if it has none.
+void set_contact_radius(ModelSpec& model, double radius, const std::string& source);
 
 }  // namespace isosid::prep

@@ -75,6 +75,7 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   mesh.elements_per_level = body.hierarchy ? as_vector(body.hierarchy->elements_per_level) : Eigen::VectorXi::Constant(1, int(body.space.elements.size()));
   mesh.functions_per_level = body.hierarchy ? as_vector(body.hierarchy->functions_per_level) : Eigen::VectorXi::Constant(1, body.space.n_functions());
   mesh.free_dofs = body.dofs.free_count();
+  if (spec.contact_resolution) mesh.contact_radius = spec.contact_resolution->contact_radius;
 
   sid.provenance.model_file = spec.file;
   sid.provenance.model_sha256 = std::filesystem::is_regular_file(spec.file) ? common::sha256_file(spec.file) : "";

@@ -32,14 +32,19 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 100000));
     app.add_flag("--json", as_json, "print the result as JSON");
     app.add_flag("-q,--quiet", quiet, "no progress on stderr");
+    double contact_radius = 0;
+    app.add_option("--contact-radius", contact_radius,
+                   "expected contact radius in metres, for a model with [contact_resolution] (isosid-run passes its "
+                   "Hertz estimate for the scene)");
     bool coarse = false;
     app.add_flag("--coarse", coarse,
                  "build the coarse model of a hierarchically refined body instead: the model without its "
                  "[refinement.hierarchical], reduced to its normal modes (what the refined SID's transfer maps from)");
     if (auto status = common::parse_command_line(app, argc, argv)) return *status;
 
-    const prep::ModelSpec spec = coarse ? prep::coarse_model_spec(prep::read_model_file(model_file))
-                                        : prep::read_model_file(model_file);  // instant; progress starts on valid input
+    prep::ModelSpec spec = prep::read_model_file(model_file);  // instant; progress starts on valid input
+    if (app.count("--contact-radius")) prep::set_contact_radius(spec, contact_radius, "--contact-radius");
+    if (coarse) spec = prep::coarse_model_spec(std::move(spec));
     prep::StderrProgress progress("isosid-prep");
     prep::StageObserver& observer = quiet ? prep::no_progress() : progress;
     if (n_modes > 0) {

@@ -29,11 +29,16 @@ std::string find_prep() {
   return "isosid-prep";
 }
 
-/// Runs isosid-prep on `model`. Its progress lines pass through to stderr; its one-line
-/// error is held back and becomes this program's one line (exit 2 for a refused model).
-void run_prep(const std::string& model, const std::string& sid, bool quiet) {
+/// Runs isosid-prep on `model` (with --contact-radius if `contact_radius` > 0). Its progress
+/// lines pass through to stderr; its one-line error is held back and becomes this program's
+/// one line (exit 2 for a refused model).
+void run_prep(const std::string& model, const std::string& sid, bool quiet, double contact_radius = 0) {
   const std::string prep = find_prep();
-  if (!quiet) std::fprintf(stderr, "isosid-run: building %s from %s\n", sid.c_str(), model.c_str());
+  char radius[32];
+  std::snprintf(radius, sizeof radius, "%.17g", contact_radius);
+  if (!quiet)
+    std::fprintf(stderr, "isosid-run: building %s from %s%s%s\n", sid.c_str(), model.c_str(),
+                 contact_radius > 0 ? " for a contact radius of " : "", contact_radius > 0 ? radius : "");
   int channel[2];
   if (::pipe(channel) != 0) throw format::ComputationError("cannot start isosid-prep (no pipe)");
   const pid_t pid = ::fork();
@@ -45,6 +50,7 @@ void run_prep(const std::string& model, const std::string& sid, bool quiet) {
     ::close(channel[1]);
     std::vector<const char*> args = {prep.c_str(), model.c_str(), "-o", sid.c_str()};
     if (quiet) args.push_back("-q");
+    if (contact_radius > 0) args.insert(args.end(), {"--contact-radius", radius});
     args.push_back(nullptr);
     ::execvp(prep.c_str(), const_cast<char* const*>(args.data()));
     std::fprintf(stderr, "isosid-prep: failed: cannot execute %s (set ISOSID_PREP)\n", prep.c_str());
@@ -92,6 +98,11 @@ std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
     sids.push_back(format::read_sid(b.sid_file));
   }
   return sids;
+}
+
+format::Sid rebuild_sid(const BodySpec& body, double contact_radius, bool quiet) {
+  run_prep(body.model_file, body.sid_file, quiet, contact_radius);
+  return format::read_sid(body.sid_file);
 }
 
 }  // namespace isosid::run

@@ -4,6 +4,7 @@
 #include "output/recorder.hpp"
 #include "output/run_report.hpp"
 #include "scene/sid_provider.hpp"
+#include "solve/contact_resolution.hpp"
 #include "solve/simulation.hpp"
 
 #include <csignal>
@@ -57,6 +58,7 @@ int main(int argc, char** argv) {
     run::Scene scene = run::read_scene_file(scene_file);
     if (out_dir.empty()) out_dir = default_output(scene_file);
     std::vector<format::Sid> sids = run::load_sids(scene, quiet);
+    run::fit_contact_resolution(scene, sids, quiet);
     run::Simulation simulation(std::move(scene), std::move(sids));
 
     ReportingRecorder recorder(simulation, quiet);

@@ -63,7 +63,7 @@ std::string taylor_owner(const std::string& object) {
 TEST_CASE("a written SID holds exactly the items of the layout table", "[format][layout]") {
   const test::ScratchDir dir("layout");
   format::Sid sid = test::lumped_sid(test::random_lumped_body(12, 5, 4));
-  sid.discretization = format::Discretization{Eigen::VectorXi::Constant(2, 8), Eigen::VectorXi::Constant(2, 20), 60};
+  sid.discretization = format::Discretization{Eigen::VectorXi::Constant(2, 8), Eigen::VectorXi::Constant(2, 20), 60, 1.5e-4};
   REQUIRE(sid.transfer);
   REQUIRE(!sid.master_patches.empty());
   REQUIRE(!sid.stress_recovery.empty());

@@ -34,8 +34,8 @@ TEST_CASE("sphere contact cap: area 2 pi r^2 (1 - cos phi), outward normals, tra
   const auto b = prep::build_body(spec);
   const auto s = prep::contact_points(b, surface(spec));
   const double r = 0.01;
-  // the cap ends where the lower arc reaches parameter 0.2
-  const Eigen::Vector2d end = spec.patch.point(Eigen::Vector2d(0.2, 0.0));
+  // the cap ends where the lower arc reaches the end of the surface's interval
+  const Eigen::Vector2d end = spec.patch.point(Eigen::Vector2d(spec.contact_surfaces.at(0).interval.at(0)[1], 0.0));
   const double cos_phi = -end(1) / r;
   CHECK(s.weight.sum() == Approx(2 * M_PI * r * r * (1 - cos_phi)).epsilon(1e-10));
   for (Eigen::Index g = 0; g < s.points(); ++g) {

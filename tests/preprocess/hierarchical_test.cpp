@@ -201,7 +201,10 @@ TEST_CASE("a box across the half-disk's collapsed point: nodes merge across leve
 }
 
 TEST_CASE("the hierarchical sphere has at least 3x fewer DOFs than the graded one at the same smallest element", "[thb]") {
-  const auto graded = prep::build_body(model("sphere_axisym.model.toml"));
+  // the graded sphere sized for a contact radius of 8 x 25 um: the THB sphere's 25 um elements
+  auto graded_spec = model("sphere_axisym.model.toml");
+  prep::set_contact_radius(graded_spec, 8 * 25e-6, "test");
+  const auto graded = prep::build_body(graded_spec);
   const auto thb = prep::build_body(model("sphere_axisym_thb.model.toml"));
   CHECK(3 * thb.dofs.free_count() <= graded.dofs.free_count());
   // the smallest element along the contact side is the same 25 um in both

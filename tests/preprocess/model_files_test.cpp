@@ -151,6 +151,17 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
        "refinement.hierarchical.point: the parametrization collapses at the point along eta"},
       {hierarchical(kBall, "box = [[0.0, 0.1], [0.0, 0.1], [0.0, 0.5]]\nsmallest = 1e-3\n"),
        "refinement.hierarchical.box: touches side xi0, which collapses along zeta, so it must span zeta whole"},
+      // element sizes from the expected contact radius
+      {replace(kValid, "subdivisions = [4, 1]", "subdivisions = [4, 1]\n[[refinement.graded]]\ndirection = \"xi\"\ntoward = 0.0\nsmallest = \"contact\""),
+       "refinement.graded[0].smallest: \"contact\" needs a [contact_resolution] table"},
+      {replace(kValid, "subdivisions = [4, 1]", "subdivisions = [4, 1]\n[[refinement.graded]]\ndirection = \"xi\"\ntoward = 0.0\nsmallest = \"fine\""),
+       "refinement.graded[0].smallest: must be a length in metres or \"contact\""},
+      {replace(kValid, "[refinement]", "[contact_resolution]\ncontact_radius = 1e-4\n[refinement]"),
+       "contact_resolution.contact_radius: no refinement uses it"},
+      {replace(kValid, "[refinement]", "[contact_resolution]\ncontact_radius = -1e-4\n[refinement]"),
+       "contact_resolution.contact_radius: must be positive"},
+      {replace(kValid, "[refinement]", "[contact_resolution]\ncontact_radius = 1e-4\nelements_per_radius = 0.5\n[refinement]"),
+       "contact_resolution.elements_per_radius: must lie in 1..100"},
   };
   for (const Case& c : cases) {
     INFO(c.expected);
@@ -311,3 +322,36 @@ TEST_CASE("a stress line in metres must stay inside the body between its ends", 
   CHECK_THAT(r.err, Contains("m.model.toml") && Contains("stress_line[0].to_point: the line's point 2 lies"));
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
 }
+
+TEST_CASE("contact elements sized from the expected contact radius", "[model][contact]") {
+  // [contact_resolution] with smallest = "contact": the graded elements at the contact point
+  // are a / elements_per_radius; --contact-radius replaces a, and the SID records it
+  const test::ScratchDir dir("contact-resolution");
+  const std::string model = dir.path("sphere.model.toml");
+  std::filesystem::copy_file(std::string(ISOSID_MODELS_DIR) + "/sphere_axisym.model.toml", model);
+  auto spec = prep::read_model_file(model);
+  REQUIRE(spec.contact_resolution);
+  CHECK(spec.contact_resolution->element_size() == Approx(1.68e-4 / 8).epsilon(1e-12));
+  for (const auto& g : spec.refinement.graded) CHECK(g.smallest == Approx(1.68e-4 / 8).epsilon(1e-12));
+  prep::set_contact_radius(spec, 4e-4, "test");
+  for (const auto& g : spec.refinement.graded) CHECK(g.smallest == Approx(5e-5).epsilon(1e-12));
+  // the element at the pole along the lower arc: a/8 (graded knots meet the size exactly)
+  const auto body = prep::build_body(spec);
+  double pole = 1e9;
+  for (const auto& e : body.space.elements)
+    if (e.lo(0) == 0.0 && e.lo(1) == 0.0)
+      pole = (body.refined.point(Eigen::Vector2d(e.hi(0), 0)) - body.refined.point(Eigen::Vector2d(0, 0))).norm();
+  CHECK(pole == Approx(5e-5).epsilon(0.01));  // a chord of an arc element: 1 % above its length at most
+
+  const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q --contact-radius 4e-4 " + model + " -o " + dir.path("s.sid.h5"));
+  REQUIRE(r.exit_status == 0);
+  const auto info = test::run_program(std::string(ISOSID_INFO_EXE) + " --json " + dir.path("s.sid.h5"));
+  CHECK(nlohmann::json::parse(info.out)["mesh"]["contact_radius_m"].get<double>() == 4e-4);
+  // a model that sizes nothing from a contact radius refuses the option
+  const std::string beam = std::string(ISOSID_GOLDEN_DIR) + "/beam_small.model.toml";
+  const auto refused = test::run_program(std::string(ISOSID_PREP_EXE) + " -q --contact-radius 4e-4 " + beam + " -o " + dir.path("b.sid.h5"));
+  CHECK(refused.exit_status == 2);
+  CHECK_THAT(refused.err, Contains("--contact-radius") && Contains("sizes no elements from a contact radius"));
+  CHECK(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);
+}
+

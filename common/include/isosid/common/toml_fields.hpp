@@ -24,6 +24,7 @@ public:
   /// Refuses keys outside `allowed`.
   void allow_only(std::initializer_list<const char*> allowed) const;
   bool has(const std::string& key) const { return table_->contains(key); }
+  bool holds_string(const std::string& key) const;  ///< present and a string (for keys that take a number or a word)
   std::string field(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
   const std::string& file() const { return file_; }
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const { throw format::InputError(file_, field(key), problem); }

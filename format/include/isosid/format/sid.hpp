@@ -93,6 +93,7 @@ struct Discretization {
   Eigen::VectorXi elements_per_level;    ///< one entry per hierarchical level (one for a tensor mesh)
   Eigen::VectorXi functions_per_level;
   int free_dofs = 0;
+  double contact_radius = 0;   ///< m: the expected contact radius its contact elements were sized for (0: sized by hand)
 };
 
 struct Provenance {

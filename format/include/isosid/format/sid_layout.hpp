@@ -219,6 +219,8 @@ inline constexpr Item functions_per_level{"/discretization/functions_per_level",
                                           "", Presence::Optional, "basis functions per level"};
 inline constexpr Item free_dofs{"/discretization/free_dofs", {}, Kind::Int64, kScalar, "", Presence::Optional,
                                 "free degrees of freedom"};
+inline constexpr Item contact_radius{"/discretization/contact_radius_m", {}, Kind::Float64, kScalar, "m", Presence::Optional,
+                                     "the expected contact radius the contact elements were sized for ([contact_resolution]); absent: sized by hand"};
 }  // namespace discretization
 
 namespace provenance {

@@ -1,0 +1,41 @@
+// Contact elements fitted to the scene's impacts; see contact_resolution.hpp.
+#include "solve/contact_resolution.hpp"
+
+#include "scene/sid_provider.hpp"
+#include "solve/multibody_system.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace isosid::run {
+
+std::vector<std::string> fit_contact_resolution(const Scene& scene, std::vector<format::Sid>& sids, bool quiet) {
+  // the finest estimated contact radius of each body over its contacts
+  std::map<std::string, double> wanted;
+  {
+    const MultibodySystem probe(scene, sids);
+    for (std::size_t k = 0; k < probe.contacts().size(); ++k) {
+      const auto& estimate = probe.impact_estimates()[k];
+      if (!estimate) continue;
+      const SurfaceContact& contact = probe.contacts()[k];
+      for (const FloatingBody* b : {&contact.body(), contact.target().body()})
+        if (b) wanted[b->name()] = wanted.count(b->name()) ? std::min(wanted[b->name()], estimate->contact_radius) : estimate->contact_radius;
+    }
+  }
+  std::vector<std::string> rebuilt;
+  std::size_t next_sid = 0;
+  for (const BodySpec& body : scene.bodies) {
+    if (body.rigid) continue;
+    format::Sid& sid = sids[next_sid++];
+    const auto radius = wanted.find(body.name);
+    if (radius == wanted.end() || body.model_file.empty() || !sid.discretization || sid.discretization->contact_radius <= 0) continue;
+    const double built_for = sid.discretization->contact_radius;
+    // round-off of the estimate (its mass and curvatures come from the SID) must not rebuild
+    if (radius->second >= (1 - 1e-6) * built_for && radius->second <= 1.25 * built_for) continue;
+    sid = rebuild_sid(body, radius->second, quiet);
+    rebuilt.push_back(body.name);
+  }
+  return rebuilt;
+}
+
+}  // namespace isosid::run
