@@ -257,6 +257,10 @@ Vector3d FloatingBody::point_velocity(const Vector3d& P, const Eigen::Ref<const 
   return v(y) + orientation(y).toRotationMatrix() * (omega(y).cross(P) + u);
 }
 
+Vector3d FloatingBody::rigid_point_velocity(const Vector3d& P, const double* y) const {
+  return v(y) + orientation(y).toRotationMatrix() * omega(y).cross(P);
+}
+
 void FloatingBody::apply_force(const Vector3d& F_world, const Vector3d& P, const Eigen::Ref<const MatrixXd>& Psi,
                                const Matrix3d& A, GeneralizedForce& f) const {
   const Vector3d FK = A.transpose() * F_world;

@@ -99,6 +99,8 @@ public:
   double gravity_potential(const double* y, const Eigen::Vector3d& gravity) const;
 
   // --- points of the body ---
+  /// World velocity of the body-frame point P as if the body were rigid: v + A (omega x P).
+  Eigen::Vector3d rigid_point_velocity(const Eigen::Vector3d& body_point, const double* y) const;
   /// World velocity of the body-frame point P (3D) whose displacement rows are Psi.
   Eigen::Vector3d point_velocity(const Eigen::Vector3d& body_point, const Eigen::Ref<const Eigen::MatrixXd>& Psi,
                                  const double* y) const;

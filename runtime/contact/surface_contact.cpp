@@ -57,7 +57,7 @@ Eigen::Vector3d SurfaceContact::friction_per_normal_force(const Eigen::Vector3d&
 
 Eigen::Vector3d SurfaceContact::sliding_velocity(const Eigen::Vector3d& P, const Eigen::Ref<const Eigen::MatrixXd>& Psi,
                                                  const double* y, const TargetPoint& t) const {
-  const Eigen::Vector3d v = body_.point_velocity(P, Psi, y) - t.velocity;
+  const Eigen::Vector3d v = (Psi.cols() ? body_.point_velocity(P, Psi, y) : body_.rigid_point_velocity(P, y)) - t.velocity;
   return v - t.normal.dot(v) * t.normal;
 }
 
@@ -109,8 +109,12 @@ double SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& 
     const double w = surface_.weight(g), fn = -spec_.penalty * t.gap * w;
     energy += 0.5 * spec_.penalty * t.gap * t.gap * w;
     Eigen::Vector3d F = fn * t.normal, Ft = Eigen::Vector3d::Zero(), dF_dgap = -spec_.penalty * w * t.normal;
-    if (spec_.friction > 0) {  // the friction direction is held: quasistatic modes carry no velocity
-      const Eigen::Vector3d dir = friction_per_normal_force(sliding_velocity(P, Psi, y, t));
+    if (spec_.friction > 0) {
+      // Along the point's rigid-body sliding, held during the Newton iterations. The quasistatic
+      // modes carry no velocity, and a direction set by the dynamic modes' vibration alone pumps
+      // energy into them where the bodies do not slide (a disk dropped without spin rebounded
+      // 0.6-2.9 % faster than it came); where they slide, the two directions agree.
+      const Eigen::Vector3d dir = friction_per_normal_force(sliding_velocity(P, Psi.leftCols(0), y, t));
       Ft = fn * dir;
       F += Ft;
       dF_dgap += -spec_.penalty * w * dir;

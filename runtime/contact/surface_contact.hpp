@@ -54,7 +54,8 @@ private:
   double for_each_point(const double* y, F&& f) const;
   /// Regularized Coulomb friction force per unit normal force: -mu vt / sqrt(|vt|^2 + eps^2).
   Eigen::Vector3d friction_per_normal_force(const Eigen::Vector3d& vt) const;
-  /// World velocity of a slave point relative to the target, along the target's surface.
+  /// World velocity of a slave point relative to the target, along the target's surface; with
+  /// Psi of no columns, of the slave's frame motion only (its rigid-body sliding).
   Eigen::Vector3d sliding_velocity(const Eigen::Vector3d& P, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const double* y,
                                    const TargetPoint& t) const;
 
