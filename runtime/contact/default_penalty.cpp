@@ -47,14 +47,14 @@ double combined_modulus(const FloatingBody& slave, const FloatingBody* master) {
 }
 
 double default_penalty(const FloatingBody& slave, const format::ContactSurface& slave_surface, const FloatingBody* master,
-                       const format::ContactSurface* master_surface) {
+                       const format::ContactSurface* master_surface, double contact_radius) {
   double h = contact_element_size(slave_surface, slave.sid());
   if (master && master_surface) h = std::min(h, contact_element_size(*master_surface, master->sid()));
   const double modulus = combined_modulus(slave, master);
   if (!std::isfinite(h) || !std::isfinite(modulus))
     throw format::InputError(slave.name(), "penalty",
                              "cannot be derived (no contact element size or no elastic material): give it in the scene");
-  return kPenaltyStiffnessRatio * modulus / h;
+  return kPenaltyStiffnessRatio * modulus / std::max(h, contact_radius);
 }
 
 }  // namespace isosid::run

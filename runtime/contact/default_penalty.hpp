@@ -1,6 +1,7 @@
-// The penalty factor a contact gets when its scene gives none: c_p = 1000 E* / h, from the
-// materials of the bodies in contact (E* the combined plane-strain modulus) and the size h of
-// the fine contact elements (the contact resolution of the surfaces).
+// The penalty factor a contact gets when its scene gives none: c_p = 1000 E* / L, from the
+// materials of the bodies in contact (E* the combined plane-strain modulus) and the length L
+// over which the contact carries load: the Hertz contact radius a the impact will reach, or
+// the size h of the fine contact elements where that is larger or unknown.
 #pragma once
 #include "body/floating_body.hpp"
 
@@ -8,9 +9,12 @@
 
 namespace isosid::run {
 
-/// How many times stiffer than one contact element the penalty layer is: its compliance
-/// 1/c_p is 1e-3 of the element's h/E*, so it shifts forces and contact times by about
-/// 0.1 % or less (scene A: 0.04 % at 5e18) while costing few extra steps (bench/RESULTS.md).
+/// How many times stiffer than the contact patch the penalty layer is: its compliance 1/c_p
+/// is 1e-3 of a/E*, so it lengthens contact times by about 0.1 % (bench/RESULTS.md,
+/// contact-convergence). Scaled by the element size h instead (the rule used before), the
+/// penalty grows as the mesh is refined and the Gauss points' gaps, each forced to zero,
+/// over-constrain the surface: at a/32 a steel sphere's peak force rose by 0.2 % for every
+/// fourfold increase beyond about 100 E*/h (bench/RESULTS.md, penalty sweep).
 constexpr double kPenaltyStiffnessRatio = 1000;
 
 /// The length of each element of a contact surface (by element index), m: along a curve (2D,
@@ -26,8 +30,10 @@ double contact_element_size(const format::ContactSurface& surface, const format:
 /// elastic coordinates (rigid) adds nothing. `master` may be null (a fixed surface).
 double combined_modulus(const FloatingBody& slave, const FloatingBody* master);
 
-/// c_p = kPenaltyStiffnessRatio E* / h (N/m^3); `master_surface` (may be null) refines h.
+/// c_p = kPenaltyStiffnessRatio E* / max(a, h) (N/m^3), h the contact element size of both
+/// surfaces (`master_surface` may be null), a the expected contact radius or half-width (0:
+/// unknown, h alone).
 double default_penalty(const FloatingBody& slave, const format::ContactSurface& slave_surface, const FloatingBody* master,
-                       const format::ContactSurface* master_surface);
+                       const format::ContactSurface* master_surface, double contact_radius = 0);
 
 }  // namespace isosid::run

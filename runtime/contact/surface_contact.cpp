@@ -19,9 +19,8 @@ const format::ContactSurface& find_surface(const ContactSpec& spec, const Floati
 SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body, const ContactTarget& target)
     : spec_(spec), body_(body), target_(target), surface_(find_surface(spec, body)), dim_(body.sid().dim()) {
   if (spec_.penalty <= 0) {  // none in the scene: derived from the materials and the contact resolution
-    const FloatingBody* master = target.body();
-    spec_.penalty = default_penalty(body, surface_, master, master ? master->contact_surface(spec.target_surface) : nullptr);
-    penalty_derived_ = true;
+    spec_.penalty = derived_penalty(0);
+    penalty_source_ = "derived: 1000 E*/h";
   }
   hints_.assign(std::size_t(surface_.points()), Eigen::Vector2d::Constant(NAN));
   if (surface_.points() == 0) return;
@@ -30,6 +29,19 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
     bound_radius_ = std::max(bound_radius_, (surface_.position.row(g).transpose() - bound_center_.head(dim_)).norm());
     bound_growth_ = std::max(bound_growth_, surface_.Psi.middleRows(g * dim_, dim_).norm());
   }
+}
+
+double SurfaceContact::derived_penalty(double contact_radius) const {
+  const FloatingBody* master = target_.body();
+  return default_penalty(body_, surface_, master, master ? master->contact_surface(spec_.target_surface) : nullptr, contact_radius);
+}
+
+void SurfaceContact::fit_penalty_to_contact_radius(double contact_radius) {
+  if (penalty_source_ == "scene") return;
+  const double fitted = derived_penalty(contact_radius);
+  if (fitted == spec_.penalty) return;  // the elements are larger than the contact radius
+  spec_.penalty = fitted;
+  penalty_source_ = "derived: 1000 E*/a";
 }
 
 template <class F>

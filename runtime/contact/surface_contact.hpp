@@ -41,7 +41,11 @@ public:
   bool frictionless() const { return spec_.friction == 0; }
   /// Penalty factor, N/m^3: the scene's, or derived by default_penalty() where it gave none.
   double penalty() const { return spec_.penalty; }
-  bool penalty_derived() const { return penalty_derived_; }
+  /// Where the penalty came from: "scene", or the rule that derived it.
+  const std::string& penalty_source() const { return penalty_source_; }
+  /// A derived penalty follows the contact radius (or half-width) the impact is expected to
+  /// reach, m (default_penalty); a penalty the scene gave stays.
+  void fit_penalty_to_contact_radius(double contact_radius);
   /// Smallest signed gap over the contact points (negative: penetration), for event
   /// location; while the broad phase finds the surface clear, a positive lower bound.
   double min_gap(const double* y) const;
@@ -59,8 +63,11 @@ private:
   Eigen::Vector3d sliding_velocity(const Eigen::Vector3d& P, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const double* y,
                                    const TargetPoint& t) const;
 
+  /// default_penalty() for this contact's surfaces and a contact radius (0: unknown).
+  double derived_penalty(double contact_radius) const;
+
   ContactSpec spec_;
-  bool penalty_derived_ = false;
+  std::string penalty_source_ = "scene";
   const FloatingBody& body_;
   const ContactTarget& target_;
   const format::ContactSurface& surface_;

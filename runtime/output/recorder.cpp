@@ -225,7 +225,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     c["duration_s"] = list.empty() || list.back().end < 0 ? json(nullptr) : json(list.back().end - list.front().start);
     c["intervals"] = list.size();
     c["penalty_n_m3"] = system_.contacts()[k].penalty();
-    c["penalty_source"] = system_.contacts()[k].penalty_derived() ? "derived: 1000 E*/h" : "scene";
+    c["penalty_source"] = system_.contacts()[k].penalty_source();
     c["peak_force_n"] = peak_force_[k];
     c["points_at_peak"] = points_at_peak_[k];  // Gauss points carrying load at the peak-force step
     if (const auto& e = system_.impact_estimates()[k])

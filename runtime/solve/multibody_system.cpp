@@ -43,10 +43,11 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   for (std::size_t i = 0; i < bodies_.size(); ++i) warn_of_many_dynamic_modes(*bodies_[i], scene.bodies[i]);
   std::vector<double> y0(size_);
   initial_state(y0.data());
-  for (const SurfaceContact& c : contacts_) {
+  for (SurfaceContact& c : contacts_) {
     impact_estimates_.push_back(estimate_impact(c, y0.data()));
-    if (impact_estimates_.back())
-      if (std::string w = resolution_warning(c, *impact_estimates_.back()); !w.empty()) warnings_.push_back(w);
+    if (!impact_estimates_.back()) continue;
+    c.fit_penalty_to_contact_radius(impact_estimates_.back()->contact_radius);
+    if (std::string w = resolution_warning(c, *impact_estimates_.back()); !w.empty()) warnings_.push_back(w);
   }
 }
 

@@ -96,16 +96,28 @@ TEST_CASE("SurfaceContact: a surface clear of the target carries no force", "[ru
   CHECK(evaluated.contact.min_gap(evaluated.y.data()) > 0.25);
 }
 
-TEST_CASE("SurfaceContact: without a penalty in the scene it takes 1000 E*/h", "[runtime][unit]") {
+TEST_CASE("SurfaceContact: without a penalty in the scene it takes 1000 E*/max(a, h)", "[runtime][unit]") {
   const PenetratingBody setup(Eigen::Vector3d::Zero());
-  const EvaluatedContact evaluated(setup, 0.0, 0.0);  // no penalty given
-  const run::SurfaceContact& contact = evaluated.contact;
+  EvaluatedContact evaluated(setup, 0.0, 0.0);  // no penalty given
+  run::SurfaceContact& contact = evaluated.contact;
   // every point of the lumped surface is its own element of area 1e-5 .. 4e-5 m^2: h = sqrt(1e-5);
   // a fixed plane is rigid: E* = E / (1 - nu^2)
   const format::Material& m = setup.sid.material;
   const double expected = 1000 * m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio) / std::sqrt(1e-5);
-  CHECK(contact.penalty_derived());
+  CHECK(contact.penalty_source() == "derived: 1000 E*/h");
   CHECK(contact.penalty() == Approx(expected).epsilon(1e-12));
+  // an expected contact radius below the element size changes nothing; above it, it rules
+  contact.fit_penalty_to_contact_radius(0.5 * std::sqrt(1e-5));
+  CHECK(contact.penalty() == Approx(expected).epsilon(1e-12));
+  contact.fit_penalty_to_contact_radius(4 * std::sqrt(1e-5));
+  CHECK(contact.penalty_source() == "derived: 1000 E*/a");
+  CHECK(contact.penalty() == Approx(expected / 4).epsilon(1e-12));
+
+  // a penalty the scene gives stays
+  EvaluatedContact given(setup, 1e10, 0.0);
+  given.contact.fit_penalty_to_contact_radius(1.0);
+  CHECK(given.contact.penalty_source() == "scene");
+  CHECK(given.contact.penalty() == 1e10);
 
   // two elastic bodies add their compliances
   format::Sid aluminium = setup.sid;
