@@ -2,6 +2,7 @@
 #include "contact/surface_contact.hpp"
 
 #include "contact/default_penalty.hpp"
+#include "contact/surface_edge.hpp"
 #include "isosid/format/error.hpp"
 
 #include <cmath>
@@ -22,6 +23,7 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
     spec_.penalty = derived_penalty(0);
     penalty_source_ = "derived: 1000 E*/h";
   }
+  edge_ = edge_points(surface_, body.sid().analysis);
   hints_.assign(std::size_t(surface_.points()), Eigen::Vector2d::Constant(NAN));
   if (surface_.points() == 0) return;
   bound_center_.head(dim_) = surface_.position.colwise().mean().transpose();
@@ -92,6 +94,7 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
     if (master && target_force) master->apply_force(-F, t.body_point, t.Psi, A_master, *target_force);
     s.force += F;
     ++s.active_points;
+    s.edge_points += edge_[std::size_t(g)];
     s.max_penetration = std::max(s.max_penetration, -t.gap);
     s.penalty_energy += 0.5 * spec_.penalty * t.gap * t.gap * w;
   });

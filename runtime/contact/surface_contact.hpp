@@ -21,6 +21,7 @@ struct ContactState {
   double max_penetration = 0;   ///< m (positive)
   double penalty_energy = 0;    ///< J, sum of 1/2 c_p g^2 w over active points
   double friction_power = 0;    ///< W dissipated by friction (>= 0)
+  int edge_points = 0;          ///< active points in the surface's edge elements (surface_edge.hpp)
 };
 
 class SurfaceContact {
@@ -75,6 +76,7 @@ private:
   Eigen::Vector3d bound_center_ = Eigen::Vector3d::Zero();  ///< slave bounding sphere (reference, body frame)
   double bound_radius_ = 0;
   double bound_growth_ = 0;   ///< max over points of |Psi_g|_F: the sphere grows by this times |q|
+  std::vector<char> edge_;                       ///< per point: in an edge element of the surface
   mutable std::vector<Eigen::Vector2d> hints_;  ///< warm starts of the target projections
   mutable TargetPoint point_;
   mutable Eigen::VectorXd displacement_;         ///< Psi q of all points

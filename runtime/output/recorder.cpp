@@ -5,6 +5,7 @@
 #include "isosid/format/error.hpp"
 #include "isosid/format/hdf5_file.hpp"
 #include "contact/deformed_patch.hpp"
+#include "isosid/common/number_text.hpp"
 
 #include <cmath>
 #include <optional>
@@ -51,6 +52,7 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
   intervals_.resize(nc);
   peak_force_.assign(nc, 0);
   points_at_peak_.assign(nc, 0);
+  edge_reached_.assign(nc, -1);
   impulse_.assign(nc, 0);
   max_penetration_.assign(nc, 0);
   active_.assign(nc, false);
@@ -104,6 +106,7 @@ void Recorder::step(double t, const double* y) {
     impulse_[k] += 0.5 * (f + last_force_[k]) * dt;  // trapezoid over accepted steps
     last_force_[k] = f;
     max_penetration_[k] = std::max(max_penetration_[k], states[k].max_penetration);
+    if (states[k].edge_points > 0 && edge_reached_[k] < 0) edge_reached_[k] = t;
   }
   for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
     if (scene_.monitors[m].quantity != "velocity" || monitor_reversal_[m] >= 0) continue;
@@ -196,6 +199,18 @@ void Recorder::write_results(const std::string& path) const {
   out.commit();
 }
 
+std::vector<std::string> Recorder::warnings() const {
+  std::vector<std::string> out = system_.warnings();
+  for (std::size_t k = 0; k < edge_reached_.size(); ++k) {
+    if (edge_reached_[k] < 0) continue;
+    const SurfaceContact& c = system_.contacts()[k];
+    out.push_back("contact '" + c.name() + "' loaded the edge elements of surface '" + c.surface().name + "' of body '" +
+                  c.body().name() + "' at t = " + common::number_text(edge_reached_[k]) +
+                  " s: the surface beyond is not checked for contact, so forces may be cut off; widen its interval");
+  }
+  return out;
+}
+
 nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome& outcome, const double* y) const {
   using nlohmann::json;
   json j;
@@ -205,7 +220,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
   const double wall_time = outcome.wall_time_s;
   j["wall_time_s"] = wall_time;
   j["cpu_time_s"] = outcome.cpu_time_s;
-  j["warnings"] = system_.warnings();
+  j["warnings"] = warnings();
   j["end_time_s"] = time_.empty() ? 0.0 : time_.back();
   j["steps"] = stats.steps;
   j["rejected_steps"] = stats.attempts - stats.steps;
@@ -228,6 +243,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     c["penalty_source"] = system_.contacts()[k].penalty_source();
     c["peak_force_n"] = peak_force_[k];
     c["points_at_peak"] = points_at_peak_[k];  // Gauss points carrying load at the peak-force step
+    c["edge_reached_s"] = edge_reached_[k] < 0 ? json(nullptr) : json(edge_reached_[k]);
     if (const auto& e = system_.impact_estimates()[k])
       c["hertz_estimate"] = {{"approach_speed_m_s", e->approach_speed},
                              {e->line_contact ? "contact_half_width_m" : "contact_radius_m", e->contact_radius},

@@ -37,6 +37,9 @@ public:
   /// energy balance, monitors and the signed relative errors against the scene's reference values.
   nlohmann::json summary(const IntegratorStats& stats, const RunOutcome& outcome, const double* y_final) const;
   double max_relative_energy_error() const;
+  /// The system's warnings, then what the run showed: contacts that reached the edge of
+  /// their surface.
+  std::vector<std::string> warnings() const;
 
 private:
   const MultibodySystem& system_;
@@ -51,6 +54,7 @@ private:
   std::vector<std::vector<ContactInterval>> intervals_;
   std::vector<double> peak_force_, impulse_, max_penetration_;
   std::vector<int> points_at_peak_;
+  std::vector<double> edge_reached_;  ///< first step time with load in an edge element, or -1
   std::vector<bool> active_;
   double last_step_t_ = 0;
   std::vector<double> last_force_;

@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
     if (as_json) std::cout << summary.dump(2) << "\n";
     // after the run: a refusal or a failure stays the one line; summary.json always holds them
     if (!quiet && outcome.completed())
-      for (const std::string& warning : simulation.system().warnings()) std::cerr << "isosid-run: warning: " << warning << "\n";
+      for (const auto& warning : summary["warnings"]) std::cerr << "isosid-run: warning: " << warning.get<std::string>() << "\n";
     if (!quiet)
       std::fprintf(stderr, "isosid-run: %s in %.3f s wall, %ld steps -> %s\n%s", outcome.status.c_str(), outcome.wall_time_s,
                    summary["steps"].get<long>(), out_dir.c_str(), run::reference_lines(summary).c_str());

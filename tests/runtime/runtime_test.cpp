@@ -258,6 +258,7 @@ TEST_CASE("scene A: sphere on sphere (Hertz) with the Craig-Bampton sphere", "[r
   CHECK(rel_error(s, "peak_force_n") < 0.02);
   CHECK(rel_error(s, "contact_time_s") < 0.02);
   CHECK(rel_error(s, "rebound_velocity_m_s") < 0.005);  // acceptance: rebound energy 0.5 %
+  CHECK(s["contacts"][0]["edge_reached_s"].is_null());  // the contact stays inside its cap
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-5);
   // von Mises on the axis (seed eq. 34): Hertz peak 0.530 GPa (measured -1.0 %) at 0.49 a
   // below the surface (measured within one 10 um sample of the stress line)
@@ -295,6 +296,25 @@ TEST_CASE("a sphere sized from its contact radius is rebuilt for the scene's imp
   const auto built = std::filesystem::last_write_time(dir.path("sphere_axisym.sid.h5"));
   run_scene(dir, scene, 0);
   CHECK(std::filesystem::last_write_time(dir.path("sphere_axisym.sid.h5")) == built);
+}
+
+TEST_CASE("a contact that outgrows its contact surface is reported", "[runtime][contact]") {
+  // scene A's sphere with its contact cap cut to a quarter (0.11 mm of arc against a = 0.168
+  // mm): the contact reaches the cap's rim before the peak, and the force beyond is lost
+  const test::ScratchDir dir("contact-edge");
+  std::ifstream model_in(std::string(ISOSID_MODELS_DIR) + "/sphere_axisym.model.toml");
+  std::ofstream(dir.path("sphere_axisym.model.toml"))
+      << replace(std::string((std::istreambuf_iterator<char>(model_in)), std::istreambuf_iterator<char>()),
+                 "interval = [[0.0, 0.04]]", "interval = [[0.0, 0.01]]");
+  test::copy_model_file(dir, "sphere_hertz.scene.toml");
+  std::ifstream in(dir.path("sphere_hertz.scene.toml"));
+  const json cut = run_scene(dir, std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), 0);
+  const json& contact = cut["contacts"][0];
+  REQUIRE(contact["edge_reached_s"].is_number());
+  // before the peak (half the Hertz contact time, 41.6 us; measured 24.9 us)
+  CHECK(contact["edge_reached_s"].get<double>() < 41.6e-6);
+  REQUIRE(cut["warnings"].size() == 1);
+  CHECK(cut["warnings"][0].get<std::string>().find("edge elements of surface 'contact'") != std::string::npos);
 }
 
 TEST_CASE("scene A: the Craig-Bampton and the full modal sphere agree within 1 %", "[runtime][seed]") {
