@@ -157,7 +157,7 @@ int QuasistaticModes::solve(const double* y) const {
       return iteration;
     }
   }
-  throw format::ComputationError("the quasistatic modes of " + names_ +
+  throw QuasistaticDivergence("the quasistatic modes of " + names_ +
                                  " did not converge (Newton, 60 iterations): penalty too stiff for the contact resolution?");
 }
 

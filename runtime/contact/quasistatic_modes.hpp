@@ -9,11 +9,19 @@
 #include "body/floating_body.hpp"
 #include "contact/quasistatic_terms.hpp"
 #include "contact/surface_contact.hpp"
+#include "isosid/format/error.hpp"
 
 #include <memory>
 #include <vector>
 
 namespace isosid::run {
+
+/// The quasistatic Newton did not converge at a state. At a trial stage of a step that went too
+/// far into contact this is recoverable: the integrator retries the step smaller.
+class QuasistaticDivergence : public format::ComputationError {
+public:
+  using format::ComputationError::ComputationError;
+};
 
 class QuasistaticModes {
 public:

@@ -224,6 +224,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
   j["end_time_s"] = time_.empty() ? 0.0 : time_.back();
   j["steps"] = stats.steps;
   j["rejected_steps"] = stats.attempts - stats.steps;
+  j["restarted_steps"] = stats.restarts;
   j["rhs_evaluations"] = stats.rhs_evaluations;
   j["newton_iterations"] = stats.newton_iterations + system_.quasistatic_iterations();
   j["jacobian_setups"] = stats.jacobian_setups;

@@ -1,6 +1,8 @@
 // ARKODE wrappers; see time_integrator.hpp.
 #include "solve/time_integrator.hpp"
 
+#include "contact/quasistatic_modes.hpp"
+#include "isosid/common/number_text.hpp"
 #include "isosid/format/error.hpp"
 
 #include <arkode/arkode_arkstep.h>
@@ -27,6 +29,12 @@ struct TimeIntegrator::Impl {
   /// An exception from the right-hand side: it must not unwind through SUNDIALS' C frames,
   /// so the callback stores it, fails the step, and advance() rethrows it.
   mutable std::exception_ptr pending;
+  mutable std::string recoverable_failure;  ///< the last right-hand side that asked for a smaller step
+  long restarts = 0;                         ///< restarts from an accepted state with a smaller step
+  mutable double accepted_t = 0;             ///< the last accepted step (the initial state before any)
+  double restart_t = -1, restart_step = 0;   ///< where the last restart went back to, and its step
+  int restarts_in_a_row = 0;                 ///< restarts from restart_t so far
+  mutable Eigen::VectorXd accepted_y;
   /// ARKODE's last error message: kept for the failure message instead of printed, so that a
   /// failed run still says what went wrong in one line.
   std::string last_message;
@@ -45,7 +53,7 @@ struct TimeIntegrator::Impl {
     const double* yy = N_VGetArrayPointer(y);
     for (Eigen::Index i = 0; i < N_VGetLength(y); ++i)
       if (!std::isfinite(yy[i])) return 1;  // recoverable: the step is retried smaller
-    return self->guarded([&] { self->system.rhs(t, yy, N_VGetArrayPointer(ydot)); });
+    return self->guarded([&] { self->system.rhs(t, yy, N_VGetArrayPointer(ydot)); }, true);
   }
   static int roots(realtype, N_Vector y, realtype* g, void* data) {
     const Impl* self = static_cast<const Impl*>(data);
@@ -54,6 +62,8 @@ struct TimeIntegrator::Impl {
   static int post_step(realtype t, N_Vector y, void* data) {
     const Impl* self = static_cast<const Impl*>(data);
     return self->guarded([&] {
+      self->accepted_t = t;
+      self->accepted_y = Eigen::Map<const Eigen::VectorXd>(N_VGetArrayPointer(y), N_VGetLength(y));
       if (self->owner->step_callback_) self->owner->step_callback_(t, N_VGetArrayPointer(y));
     });
   }
@@ -63,11 +73,21 @@ struct TimeIntegrator::Impl {
     for (char& c : text)
       if (c == '\n') c = ' ';
   }
+  /// Runs f for ARKODE: an exception is kept for advance() to rethrow. With
+  /// `divergence_recoverable` (the right-hand side), a quasistatic Newton that did not converge
+  /// asks for a smaller step instead: a trial stage that went too deep into contact.
   template <class F>
-  int guarded(F&& f) const {
+  int guarded(F&& f, bool divergence_recoverable = false) const {
     try {
       f();
       return 0;
+    } catch (const QuasistaticDivergence& e) {
+      if (divergence_recoverable) {
+        recoverable_failure = e.what();  // explains a final failure if smaller steps do not help
+        return 1;
+      }
+      pending = std::current_exception();
+      return -1;
     } catch (...) {
       pending = std::current_exception();
       return -1;  // unrecoverable: ARKODE returns at once
@@ -105,6 +125,7 @@ TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSe
   m.owner = this;
   check(SUNContext_Create(nullptr, &m.context), "context");
   m.y = N_VMake_Serial(y_.size(), y_.data(), m.context);  // shares y_'s storage
+  m.accepted_y = y_;  // restarts go back to the initial state until a step is accepted (t = 0)
   const int n_roots = int(system.contacts().size());
   if (m.implicit) {
     m.memory = ARKStepCreate(nullptr, Impl::rhs, 0.0, m.y, m.context);
@@ -148,8 +169,39 @@ TimeIntegrator::~TimeIntegrator() = default;
 std::vector<TimeIntegrator::GapEvent> TimeIntegrator::advance(double tout, double& t) {
   Impl& m = *impl_;
   realtype reached = t;
-  const int flag = m.implicit ? ARKStepEvolve(m.memory, tout, m.y, &reached, ARK_NORMAL)
-                              : ERKStepEvolve(m.memory, tout, m.y, &reached, ARK_NORMAL);
+  int flag = 0;
+  // ERKStep gives up on a right-hand side that asks for a smaller step (ARKStep retries it in
+  // its nonlinear solver): restart it from the last accepted step with a tenth of the step
+  // that failed, as long as the step stays resolvable in time. (On failure ARKODE returns the
+  // time and state of the failed stage, not of the last accepted step.)
+  for (;;) {
+    flag = m.implicit ? ARKStepEvolve(m.memory, tout, m.y, &reached, ARK_NORMAL)
+                      : ERKStepEvolve(m.memory, tout, m.y, &reached, ARK_NORMAL);
+    if (m.pending) break;
+    const bool rhs_failed = flag == ARK_RHSFUNC_FAIL || flag == ARK_REPTD_RHSFUNC_ERR || flag == ARK_UNREC_RHSFUNC_ERR;
+    if (flag >= 0 || !rhs_failed || m.recoverable_failure.empty()) break;
+    // failures in a row from the same accepted step shrink the step tenfold each
+    if (m.accepted_t != m.restart_t) {
+      m.restart_t = m.accepted_t;
+      m.restarts_in_a_row = 0;
+      m.implicit ? ARKStepGetCurrentStep(m.memory, &m.restart_step) : ERKStepGetCurrentStep(m.memory, &m.restart_step);
+    }
+    m.restart_step *= 0.1;
+    if (++m.restarts_in_a_row > kMaxStepRetries || !(m.restart_step > 1e-14 * (1 + std::abs(m.accepted_t)))) {
+      y_ = m.accepted_y;
+      t = m.accepted_t;
+      throw format::ComputationError(m.recoverable_failure + ", and steps down to " + common::number_text(10 * m.restart_step) +
+                                     " s did not help");
+    }
+    y_ = m.accepted_y;  // m.y wraps y_'s storage
+    reached = m.accepted_t;
+    check(m.implicit ? ARKStepReset(m.memory, reached, m.y) : ERKStepReset(m.memory, reached, m.y), "restart after a failed stage");
+    check(m.implicit ? ARKStepSetInitStep(m.memory, m.restart_step) : ERKStepSetInitStep(m.memory, m.restart_step), "initial step");
+    // ARKODE lets the first step after a start grow 10^4-fold, straight back into the failure
+    check(m.implicit ? ARKStepSetMaxFirstGrowth(m.memory, 2.0) : ERKStepSetMaxFirstGrowth(m.memory, 2.0), "first growth");
+    m.recoverable_failure.clear();
+    ++m.restarts;
+  }
   t = reached;
   if (m.pending) std::rethrow_exception(std::exchange(m.pending, nullptr));
   if (flag < 0) {
@@ -195,6 +247,7 @@ IntegratorStats TimeIntegrator::stats() const {
     ERKStepGetNumRhsEvals(m.memory, &s.rhs_evaluations);
     ERKStepGetNumErrTestFails(m.memory, &s.error_test_failures);
   }
+  s.restarts = m.restarts;
   return s;
 }
 

@@ -14,7 +14,11 @@ namespace isosid::run {
 struct IntegratorStats {
   long steps = 0, attempts = 0, rhs_evaluations = 0, error_test_failures = 0;
   long newton_iterations = 0, jacobian_setups = 0;
+  long restarts = 0;  ///< steps retried from the last accepted state, smaller (a stage's quasistatic solve failed)
 };
+
+/// How often in a row a step is retried a tenth smaller before the run fails.
+constexpr int kMaxStepRetries = 8;
 
 class TimeIntegrator {
 public:
