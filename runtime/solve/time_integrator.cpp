@@ -52,7 +52,10 @@ struct TimeIntegrator::Impl {
     const Impl* self = static_cast<const Impl*>(data);
     const double* yy = N_VGetArrayPointer(y);
     for (Eigen::Index i = 0; i < N_VGetLength(y); ++i)
-      if (!std::isfinite(yy[i])) return 1;  // recoverable: the step is retried smaller
+      if (!std::isfinite(yy[i])) {  // recoverable: advance() restarts the step smaller
+        self->recoverable_failure = "the state became non-finite at a trial stage";
+        return 1;
+      }
     return self->guarded([&] { self->system.rhs(t, yy, N_VGetArrayPointer(ydot)); }, true);
   }
   static int roots(realtype, N_Vector y, realtype* g, void* data) {
