@@ -53,6 +53,10 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
   peak_force_.assign(nc, 0);
   points_at_peak_.assign(nc, 0);
   edge_reached_.assign(nc, -1);
+  const std::size_t nj = system.joints().joints().size();
+  joint_force_.resize(nj);
+  joint_torque_.resize(nj);
+  joint_error_.resize(nj);
   impulse_.assign(nc, 0);
   max_penetration_.assign(nc, 0);
   active_.assign(nc, false);
@@ -85,6 +89,12 @@ void Recorder::sample(double t, const double* y) {
     for (int a = 0; a < 3; ++a) contact_force_[k].push_back(states[k].force(a));
     contact_points_[k].push_back(states[k].active_points);
     contact_penetration_[k].push_back(states[k].max_penetration);
+  }
+  const auto joints = system_.joint_states(y);
+  for (std::size_t k = 0; k < joints.size(); ++k) {
+    for (int a = 0; a < 3; ++a) joint_force_[k].push_back(joints[k].force(a)), joint_torque_[k].push_back(joints[k].torque(a));
+    joint_error_[k].push_back(joints[k].position_error);
+    joint_error_[k].push_back(joints[k].angle_error);
   }
   const Energies e = system_.energies(y, states);
   energies_.push_back({e.kinetic, e.elastic, e.gravity, e.penalty, e.dissipated, e.total()});
@@ -179,6 +189,17 @@ void Recorder::write_results(const std::string& path) const {
       w.vector(g + "/active_points", Eigen::Map<const Eigen::VectorXd>(contact_points_[k].data(), n), "1");
       w.vector(g + "/max_penetration", Eigen::Map<const Eigen::VectorXd>(contact_penetration_[k].data(), n), "m");
     }
+    for (std::size_t k = 0; k < joint_force_.size(); ++k) {
+      using Rows3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+      using Rows2 = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
+      const std::string g = "/joints/" + system_.joints().joints()[k].name();
+      w.group(g);
+      w.matrix(g + "/force", Eigen::Map<const Rows3>(joint_force_[k].data(), n, 3), "N");
+      w.matrix(g + "/torque", Eigen::Map<const Rows3>(joint_torque_[k].data(), n, 3), "N m");
+      const Eigen::Map<const Rows2> error(joint_error_[k].data(), n, 2);
+      w.vector(g + "/position_error", error.col(0), "m");
+      w.vector(g + "/angle_error", error.col(1), "rad");
+    }
     Eigen::MatrixXd e(n, 6);
     for (Eigen::Index i = 0; i < n; ++i)
       for (int c = 0; c < 6; ++c) e(i, c) = energies_[std::size_t(i)][std::size_t(c)];
@@ -255,6 +276,23 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     c["impulse_ns"] = impulse_[k];
     c["max_penetration_m"] = max_penetration_[k];
     j["contacts"].push_back(c);
+  }
+  j["joints"] = json::array();
+  for (std::size_t k = 0; k < joint_force_.size(); ++k) {
+    double peak_force = 0, peak_torque = 0, position_error = 0, angle_error = 0;
+    for (std::size_t i = 0; i + 2 < joint_force_[k].size(); i += 3) {
+      peak_force = std::max(peak_force, Eigen::Vector3d(&joint_force_[k][i]).norm());
+      peak_torque = std::max(peak_torque, Eigen::Vector3d(&joint_torque_[k][i]).norm());
+    }
+    for (std::size_t i = 0; i + 1 < joint_error_[k].size(); i += 2)
+      position_error = std::max(position_error, joint_error_[k][i]), angle_error = std::max(angle_error, joint_error_[k][i + 1]);
+    json jt = {{"name", system_.joints().joints()[k].name()}, {"peak_force_n", peak_force}, {"peak_torque_n_m", peak_torque},
+               {"max_position_error_m", position_error}, {"max_angle_error_rad", angle_error}};
+    if (joint_force_[k].size() >= 3) {
+      const std::size_t last = joint_force_[k].size() - 3;
+      jt["final_force_n"] = {joint_force_[k][last], joint_force_[k][last + 1], joint_force_[k][last + 2]};
+    }
+    j["joints"].push_back(jt);
   }
   j["bodies"] = json::array();
   for (const auto& b : system_.bodies()) {

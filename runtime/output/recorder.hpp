@@ -48,6 +48,7 @@ private:
   std::vector<double> time_;
   std::vector<std::vector<double>> body_states_;  ///< per sample: all states
   std::vector<std::vector<double>> contact_force_, contact_points_, contact_penetration_;
+  std::vector<std::vector<double>> joint_force_, joint_torque_, joint_error_;  ///< per joint: 3, 3, 2 per sample
   std::vector<std::array<double, 6>> energies_;   ///< kinetic, elastic, gravity, penalty, dissipated, total
   std::vector<std::vector<double>> monitor_values_;  ///< per monitor: 3 per sample
   // per-step statistics

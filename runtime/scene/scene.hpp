@@ -22,6 +22,8 @@ struct SimulationSettings {
   double output_interval = 0;   ///< s
   /// Bodies may start interpenetrating (refused otherwise: they would be thrown apart).
   bool allow_initial_penetration = false;
+  /// 1/s: joints pull their drift back at this rate (Baumgarte: c'' + 2 a c' + a^2 c = 0)
+  double joint_stabilization = 1000;
 };
 
 /// At most this many output samples (end_time / output_interval): results.h5 stays bounded.
@@ -77,6 +79,18 @@ struct ContactSpec {
   double regularization = 1e-6; ///< m/s, velocity below which friction is regularized
 };
 
+/// A joint between a body and another body or the ground (seed 001): both attachments
+/// coincide at the joint point; a revolute joint also keeps an axis aligned, a fixed joint the
+/// relative orientation.
+struct JointSpec {
+  enum class Kind { Spherical, Revolute, Fixed } kind = Kind::Spherical;
+  std::string name;
+  std::string body, node;          ///< first side; a flexible body attaches at a SID node
+  std::string other, other_node;   ///< second side; empty `other`: the ground
+  std::optional<Eigen::Vector3d> point;  ///< m, world position of the joint at t = 0 (needed for a rigid side)
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< revolute: unit axis, world, at t = 0
+};
+
 /// A monitored point: a SID node, or a parameter on a contact surface's master patch.
 struct MonitorSpec {
   std::string name;
@@ -98,6 +112,7 @@ struct Scene {
   std::vector<BodySpec> bodies;        ///< flexible bodies first, then rigid ones
   std::vector<ShapeSpec> fixed_surfaces;
   std::vector<ContactSpec> contacts;
+  std::vector<JointSpec> joints;
   std::vector<MonitorSpec> monitors;               ///< points
   std::vector<StressMonitorSpec> stress_monitors;  ///< [[monitor]] tables with `stress`
   const BodySpec* body(const std::string& name) const;

@@ -3,6 +3,7 @@
 
 #include "isosid/common/toml_fields.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -105,7 +106,7 @@ std::string resolve(const std::string& scene_file, const std::string& path) {
 
 SimulationSettings read_simulation(const TomlView& s) {
   s.allow_only({"dimension", "end_time", "integrator", "rtol", "atol", "max_step", "max_steps", "output_interval", "gravity",
-                "allow_initial_penetration"});
+                "allow_initial_penetration", "joint_stabilization"});
   SimulationSettings out;
   const std::string dim = s.string("dimension");
   if (dim == "planar")
@@ -130,6 +131,7 @@ SimulationSettings read_simulation(const TomlView& s) {
   out.max_steps = long(s.integer("max_steps", out.max_steps));
   if (out.max_steps < 1) s.fail("max_steps", "must be at least 1");
   out.output_interval = s.positive("output_interval", out.end_time / 1000);
+  out.joint_stabilization = s.positive("joint_stabilization", out.joint_stabilization);
   if (out.output_interval > out.end_time) s.fail("output_interval", "exceeds end_time");
   // work that could never finish is refused before it starts
   char count[64];
@@ -173,7 +175,7 @@ Scene read_scene_file(const std::string& path) {
   const toml::table root = common::parse_toml_file(path);
   const TomlView top(root, path);
   top.allow_only({"simulation", "flexible_body", "rigid_body", "fixed_plane", "fixed_sphere", "fixed_cylinder", "contact",
-                  "monitor", "reference"});
+                  "joint", "monitor", "reference"});
   Scene scene;
   scene.file = path;
   scene.simulation = read_simulation(top.table("simulation"));
@@ -210,7 +212,6 @@ Scene read_scene_file(const std::string& path) {
       b.fail("quasistatic_above_hz", "only used with high_modes = \"quasistatic\"");
     scene.bodies.push_back(f);
   }
-  if (scene.bodies.empty()) top.fail("flexible_body", "a scene needs at least one flexible body");
   for (const TomlView& b : top.tables("rigid_body")) {
     b.allow_only({"name", "shape", "radius", "size", "density", "mass", "inertia", "position", "orientation", "velocity",
                   "angular_velocity", "locked"});
@@ -264,6 +265,44 @@ Scene read_scene_file(const std::string& path) {
       c.fail("target_surface", "only a flexible target has contact surfaces");
     scene.contacts.push_back(s);
   }
+  for (const TomlView& j : top.tables("joint")) {
+    j.allow_only({"name", "type", "body", "node", "other", "other_node", "point", "axis"});
+    JointSpec s;
+    s.name = unique(j);
+    const std::string type = j.string("type");
+    if (type == "spherical") s.kind = JointSpec::Kind::Spherical;
+    else if (type == "revolute") s.kind = JointSpec::Kind::Revolute;
+    else if (type == "fixed") s.kind = JointSpec::Kind::Fixed;
+    else j.fail("type", "unknown joint type '" + type + "' (spherical, revolute, fixed)");
+    if (scene.simulation.dimension == Dimension::Axisymmetric) j.fail("type", "an axisymmetric scene has no joints");
+    s.body = j.string("body");
+    s.node = j.string("node", "");
+    s.other = j.string("other", "");
+    s.other_node = j.string("other_node", "");
+    // each side: a flexible body at one of its SID nodes, a rigid body, or (second side) the ground
+    auto side = [&](const std::string& body, const std::string& node, const char* body_key, const char* node_key) {
+      const BodySpec* b = scene.body(body);
+      if (!b) j.fail(body_key, "no body named '" + body + "'");
+      if (!b->rigid && node.empty()) j.fail(node_key, "a flexible body attaches at one of its SID nodes: name it");
+      if (b->rigid && !node.empty()) j.fail(node_key, "a rigid body has no nodes: give the joint's point");
+      return b->rigid.has_value();
+    };
+    bool rigid_side = side(s.body, s.node, "body", "node");
+    if (!s.other.empty()) {
+      if (s.other == s.body) j.fail("other", "a body cannot be jointed to itself");
+      rigid_side = side(s.other, s.other_node, "other", "other_node") || rigid_side;
+    } else {
+      if (!s.other_node.empty()) j.fail("other_node", "the ground has no nodes");
+      rigid_side = true;
+    }
+    if (j.has("point")) s.point = vec3(j, "point", Eigen::Vector3d::Zero());
+    else if (rigid_side) j.fail("point", "a rigid body or the ground attaches at the joint's point: give it (world, at t = 0)");
+    if (j.has("axis") && s.kind != JointSpec::Kind::Revolute) j.fail("axis", "only a revolute joint has an axis");
+    s.axis = unit_vector(j, "axis", s.axis);
+    scene.joints.push_back(s);
+  }
+  if (std::none_of(scene.bodies.begin(), scene.bodies.end(), [](const BodySpec& b) { return !b.rigid; }) && scene.joints.empty())
+    top.fail("flexible_body", "a scene needs at least one flexible body (or a mechanism of rigid bodies and joints)");
   for (const TomlView& m : top.tables("monitor")) {
     m.allow_only({"name", "body", "node", "surface", "parameter", "quantity", "stress"});
     const std::string name = unique(m);

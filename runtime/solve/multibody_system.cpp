@@ -43,6 +43,7 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   for (std::size_t i = 0; i < bodies_.size(); ++i) warn_of_many_dynamic_modes(*bodies_[i], scene.bodies[i]);
   std::vector<double> y0(size_);
   initial_state(y0.data());
+  joints_ = std::make_unique<JointConstraints>(scene, bodies_, size_, y0.data());
   for (SurfaceContact& c : contacts_) {
     impact_estimates_.push_back(estimate_impact(c, y0.data()));
     if (!impact_estimates_.back()) continue;
@@ -91,10 +92,25 @@ void MultibodySystem::rhs(double, const double* y, double* ydot) const {
     GeneralizedForce* reaction = target_body_[k] >= 0 ? &forces_[std::size_t(target_body_[k])] : nullptr;
     dissipation += contacts_[k].apply(y, forces_[slave_body_[k]], reaction).friction_power;
   }
+  joints_->apply(y, gravity_, forces_);
   for (std::size_t i = 0; i < bodies_.size(); ++i) dissipation += bodies_[i]->derivatives(y, forces_[i], gravity_, ydot);
   ydot[size_ - 1] = 0;
   dissipation += quasistatic_->friction_power(y, ydot, Eigen::Index(size_));
   ydot[size_ - 1] = dissipation;
+}
+
+std::vector<MultibodySystem::JointState> MultibodySystem::joint_states(const double* y) const {
+  std::vector<JointState> out;
+  if (joints_->empty()) return out;
+  std::vector<double> ydot(static_cast<std::size_t>(size_));
+  rhs(0, y, ydot.data());
+  for (std::size_t k = 0; k < joints_->joints().size(); ++k) {
+    JointState s;
+    std::tie(s.force, s.torque) = joints_->reaction(k, y);
+    std::tie(s.position_error, s.angle_error) = joints_->joints()[k].errors(y);
+    out.push_back(s);
+  }
+  return out;
 }
 
 void MultibodySystem::gaps(const double* y, double* g) const {

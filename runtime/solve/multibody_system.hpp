@@ -7,6 +7,7 @@
 #include "contact/impact_estimate.hpp"
 #include "contact/quasistatic_modes.hpp"
 #include "contact/surface_contact.hpp"
+#include "joint/joint_constraints.hpp"
 #include "scene/scene.hpp"
 
 #include <memory>
@@ -38,6 +39,14 @@ public:
 
   const std::vector<std::unique_ptr<FloatingBody>>& bodies() const { return bodies_; }
   const std::vector<SurfaceContact>& contacts() const { return contacts_; }
+  const JointConstraints& joints() const { return *joints_; }
+  /// Joint reactions at y (world force and torque on each joint's first side), with the
+  /// joints' position and orientation errors: runs the right-hand side once.
+  struct JointState {
+    Eigen::Vector3d force, torque;
+    double position_error = 0, angle_error = 0;
+  };
+  std::vector<JointState> joint_states(const double* y) const;
   /// The Hertz estimate of each contact's impact from the initial state (none where the
   /// bodies do not approach or the contact is not of Hertz type).
   const std::vector<std::optional<ImpactEstimate>>& impact_estimates() const { return impact_estimates_; }
@@ -62,6 +71,7 @@ private:
   std::vector<std::size_t> slave_body_;    ///< body index of each contact's slave
   std::vector<long> target_body_;          ///< body index of each contact's target, -1: fixed
   std::unique_ptr<QuasistaticModes> quasistatic_;
+  std::unique_ptr<JointConstraints> joints_;
   Eigen::Vector3d gravity_;
   Eigen::Index size_ = 0;
   mutable std::vector<GeneralizedForce> forces_;

@@ -1,0 +1,75 @@
+// Joint reactions by Lagrange multipliers; see joint_constraints.hpp.
+#include "joint/joint_constraints.hpp"
+
+#include "isosid/common/number_text.hpp"
+#include "isosid/format/error.hpp"
+
+namespace isosid::run {
+
+JointConstraints::JointConstraints(const Scene& scene, const std::vector<std::unique_ptr<FloatingBody>>& bodies,
+                                   Eigen::Index state_size, const double* y0)
+    : rate_(scene.simulation.joint_stabilization), bodies_(bodies) {
+  for (const JointSpec& spec : scene.joints) {
+    joints_.emplace_back(spec, bodies, y0, scene.file);
+    first_row_.push_back(rows_);
+    rows_ += joints_.back().rows();
+    // a joint holds positions and velocities: attachments that move apart at the start are refused
+    const Joint& j = joints_.back();
+    const AttachmentMotion m0 = j.motion(0, y0), m1 = j.motion(1, y0);
+    const double apart = (m0.v - m1.v).norm(), speed = std::max(m0.v.norm(), m1.v.norm());
+    if (apart > 1e-9 * (1 + speed))
+      throw format::InputError(scene.file, "joint " + spec.name,
+                               "its attachments move apart at " + common::number_text(apart) +
+                                   " m/s at t = 0: give the bodies velocities the joint allows");
+  }
+  base_.setZero(state_size);
+  loaded_.setZero(state_size);
+  lambda_.setZero(rows_);
+  response_.setZero(rows_, rows_);
+}
+
+void JointConstraints::apply(const double* y, const Eigen::Vector3d& gravity, std::vector<GeneralizedForce>& forces) const {
+  if (joints_.empty()) return;
+  // every jointed body's accelerations under its other loads
+  for (const Joint& j : joints_)
+    for (int s = 0; s < 2; ++s)
+      if (const FloatingBody* b = j.side(s).body) b->derivatives(y, forces[j.side(s).index], gravity, base_.data());
+  Eigen::VectorXd residual(rows_);
+  for (std::size_t k = 0; k < joints_.size(); ++k)
+    residual.segment(first_row_[k], joints_[k].rows()) = joints_[k].stabilized_acceleration(y, base_.data(), rate_);
+  // the rows' response to each row's unit reaction, through the bodies it loads
+  response_.setZero();
+  for (std::size_t k = 0; k < joints_.size(); ++k)
+    for (int row = 0; row < joints_[k].rows(); ++row)
+      for (int s = 0; s < 2; ++s) {
+        const FloatingBody* b = joints_[k].side(s).body;
+        if (!b) continue;
+        const std::size_t index = joints_[k].side(s).index;
+        unit_ = forces[index];
+        joints_[k].add_load(s, row, 1.0, y, unit_);
+        b->derivatives(y, unit_, gravity, loaded_.data());
+        loaded_.segment(b->offset(), b->state_size()) -= base_.segment(b->offset(), b->state_size());
+        // every joint row that moves with this body
+        for (std::size_t i = 0; i < joints_.size(); ++i)
+          for (int t = 0; t < 2; ++t)
+            if (joints_[i].side(t).body == b)
+              response_.block(first_row_[i], first_row_[k] + row, joints_[i].rows(), 1) +=
+                  (t == 0 ? 1.0 : -1.0) * joints_[i].row_acceleration(t, y, loaded_.data());
+      }
+  // rows no body can move (a planar scene's out-of-plane rows) have no response: least squares
+  lambda_ = response_.completeOrthogonalDecomposition().solve(-residual);
+  for (std::size_t k = 0; k < joints_.size(); ++k)
+    for (int row = 0; row < joints_[k].rows(); ++row)
+      for (int s = 0; s < 2; ++s)
+        if (joints_[k].side(s).body) joints_[k].add_load(s, row, lambda_(first_row_[k] + row), y, forces[joints_[k].side(s).index]);
+}
+
+std::pair<Eigen::Vector3d, Eigen::Vector3d> JointConstraints::reaction(std::size_t k, const double* y) const {
+  const Joint& j = joints_[k];
+  const auto D = j.directions(y);
+  const Eigen::VectorXd l = lambda_.segment(first_row_[k], j.rows());
+  const Eigen::Vector3d torque = j.rows() > 3 ? Eigen::Vector3d(D.rightCols(j.rows() - 3) * l.tail(j.rows() - 3)) : Eigen::Vector3d::Zero();
+  return {l.head<3>(), torque};
+}
+
+}  // namespace isosid::run

@@ -1,0 +1,34 @@
+// The joints of a scene solved together at every evaluation: their reactions are the
+// Lagrange multipliers that make every joint row's stabilized acceleration vanish. The
+// bodies' accelerations are linear in the loads on them, so each row's unit load is pushed
+// through the body's own equations of motion (FloatingBody::derivatives) once, giving the
+// rows' response W = G M^-1 G^T, and W lambda = -(the rows' acceleration without reactions).
+#pragma once
+#include "joint/joint.hpp"
+
+namespace isosid::run {
+
+class JointConstraints {
+public:
+  JointConstraints(const Scene& scene, const std::vector<std::unique_ptr<FloatingBody>>& bodies, Eigen::Index state_size,
+                   const double* y0);
+
+  bool empty() const { return joints_.empty(); }
+  const std::vector<Joint>& joints() const { return joints_; }
+  /// Adds the reactions that hold every joint at y to `forces` (which hold all other loads).
+  void apply(const double* y, const Eigen::Vector3d& gravity, std::vector<GeneralizedForce>& forces) const;
+  /// Joint k's reaction from the last apply(): world force and torque on its first side (N, N m).
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> reaction(std::size_t k, const double* y) const;
+
+private:
+  std::vector<Joint> joints_;
+  std::vector<Eigen::Index> first_row_;   ///< joint k's rows start here in the stacked multipliers
+  Eigen::Index rows_ = 0;
+  double rate_;                           ///< Baumgarte rate, 1/s
+  const std::vector<std::unique_ptr<FloatingBody>>& bodies_;
+  mutable Eigen::VectorXd base_, loaded_, lambda_;
+  mutable Eigen::MatrixXd response_;
+  mutable GeneralizedForce unit_;
+};
+
+}  // namespace isosid::run
