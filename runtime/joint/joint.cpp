@@ -143,7 +143,7 @@ Eigen::VectorXd Joint::stabilized_acceleration(const double* y, const double* yd
   Eigen::VectorXd c = row_acceleration(0, y, ydot) - row_acceleration(1, y, ydot);
   c.head<3>() += m0.a_known - m1.a_known + 2 * rate * (m0.v - m1.v) + rate * rate * (m0.x - m1.x);
   if (rotation_rows_) {
-    const auto D = directions(y).rightCols(rotation_rows_);
+    const Eigen::Matrix<double, 3, Eigen::Dynamic> D = directions(y).rightCols(rotation_rows_);  // owned, not a view of a temporary
     const Vector3d w_rel = m0.w - m1.w;
     c.tail(rotation_rows_) += D.transpose() * (m0.alpha_known - m1.alpha_known + 2 * rate * w_rel + rate * rate * rotation_error(m0, m1));
     // the directions turn with side 1: d/dt (D^T w_rel) also holds (w1 x D)^T w_rel

@@ -87,7 +87,7 @@ struct JointSpec {
   std::string name;
   std::string body, node;          ///< first side; a flexible body attaches at a SID node
   std::string other, other_node;   ///< second side; empty `other`: the ground
-  std::optional<Eigen::Vector3d> point;  ///< m, world position of the joint at t = 0 (needed for a rigid side)
+  std::optional<Eigen::Vector3d> point;  ///< m, world position at t = 0 (needed for a rigid side; default: the node)
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< revolute: unit axis, world, at t = 0
 };
 

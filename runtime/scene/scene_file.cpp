@@ -291,12 +291,12 @@ Scene read_scene_file(const std::string& path) {
     if (!s.other.empty()) {
       if (s.other == s.body) j.fail("other", "a body cannot be jointed to itself");
       rigid_side = side(s.other, s.other_node, "other", "other_node") || rigid_side;
-    } else {
-      if (!s.other_node.empty()) j.fail("other_node", "the ground has no nodes");
-      rigid_side = true;
+    } else if (!s.other_node.empty()) {
+      j.fail("other_node", "the ground has no nodes");
     }
+    // without a point the joint sits at the (first) node: the ground holds on to it there
     if (j.has("point")) s.point = vec3(j, "point", Eigen::Vector3d::Zero());
-    else if (rigid_side) j.fail("point", "a rigid body or the ground attaches at the joint's point: give it (world, at t = 0)");
+    else if (rigid_side) j.fail("point", "a rigid body attaches at the joint's point: give it (world, at t = 0)");
     if (j.has("axis") && s.kind != JointSpec::Kind::Revolute) j.fail("axis", "only a revolute joint has an axis");
     s.axis = unit_vector(j, "axis", s.axis);
     scene.joints.push_back(s);
