@@ -1,8 +1,12 @@
 // Strict TOML field access; see toml_fields.hpp.
 #include "isosid/common/toml_fields.hpp"
 
+#include "isosid/common/toml_bounds.hpp"
+
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace isosid::common {
@@ -10,8 +14,16 @@ namespace isosid::common {
 toml::table parse_toml_file(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw format::InputError(path, "", "file not found");
+  const auto bytes = std::filesystem::file_size(path, ec);
+  if (ec) throw format::InputError(path, "", "cannot be read");
+  if (bytes > kMaxTomlBytes)
+    throw format::InputError(path, "", "larger than " + std::to_string(kMaxTomlBytes >> 20) + " MiB: not a model or scene file");
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) throw format::InputError(path, "", "cannot be read");
+  check_toml_nesting(text, path);
   try {
-    return toml::parse_file(path);
+    return toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     std::ostringstream where;
     where << "line " << e.source().begin.line << ", column " << e.source().begin.column;

@@ -5,6 +5,7 @@
 #include "scene_runner.hpp"
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -296,6 +297,24 @@ TEST_CASE("a sphere sized from its contact radius is rebuilt for the scene's imp
   const auto built = std::filesystem::last_write_time(dir.path("sphere_axisym.sid.h5"));
   run_scene(dir, scene, 0);
   CHECK(std::filesystem::last_write_time(dir.path("sphere_axisym.sid.h5")) == built);
+}
+
+TEST_CASE("keys dotted 40 000 deep are refused by both programs in one line", "[runtime][bad-input]") {
+  // toml++ recursed on them until the stack overflowed (issue 14's reproducer); the text is
+  // checked for nesting before it is parsed
+  const test::ScratchDir dir("deep-toml");
+  std::string keys;
+  for (int i = 0; i < 40000; ++i) keys += "a.";
+  std::ofstream(dir.path("deep.model.toml")) << "x = 1\n" << keys << "a = 1\n";
+  std::ofstream(dir.path("deep.scene.toml")) << "x = 1\n" << keys << "a = 1\n";
+  for (const std::string& command : {std::string(ISOSID_PREP_EXE) + " -q " + dir.path("deep.model.toml") + " -o " + dir.path("deep.sid.h5"),
+                                     std::string(ISOSID_RUN_EXE) + " -q " + dir.path("deep.scene.toml") + " -o " + dir.path("out")}) {
+    const auto r = test::run_program(command);
+    INFO(command << "\n" << r.err);
+    CHECK(r.exit_status == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err.find("line 2: nests deeper than 64 levels") != std::string::npos);
+  }
 }
 
 TEST_CASE("a contact that outgrows its contact surface is reported", "[runtime][contact]") {
