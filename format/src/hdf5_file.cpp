@@ -214,6 +214,7 @@ Reader::Reader(const std::string& path) : path_(path) {
   if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory, not a file");
   const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
   if (is_hdf5 <= 0) throw InputError(path, "", "not an HDF5 file");
+  file_bytes_ = std::filesystem::file_size(path, ec);
   hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (f < 0) throw InputError(path, "", "cannot be opened: truncated or corrupt HDF5 file");
   file_ = Handle(f, H5Fclose);
@@ -221,6 +222,15 @@ Reader::Reader(const std::string& path) : path_(path) {
 
 void Reader::fail(const std::string& object, const std::string& problem) const {
   throw InputError(path_, object, problem);
+}
+
+void Reader::check_fits_file(const std::string& dataset, const std::vector<hsize_t>& dims, std::size_t bytes) const {
+  long double count = 1;
+  for (const hsize_t d : dims) count *= static_cast<long double>(d);
+  const long double most = 1100.0L * static_cast<long double>(file_bytes_) + (1 << 20);
+  if (count * static_cast<long double>(bytes) > most)
+    fail(dataset, "declares shape " + shape_text(dims) + ", more data than a file of " + std::to_string(file_bytes_) +
+                      " bytes can hold (corrupt file)");
 }
 
 bool Reader::exists(const std::string& object) const {
@@ -282,6 +292,7 @@ std::vector<double> Reader::read_doubles(const std::string& dataset, std::vector
   Handle type(H5Dget_type(ds.get()), H5Tclose);
   const H5T_class_t type_class = H5Tget_class(type.get());
   if (type_class != H5T_FLOAT && type_class != H5T_INTEGER) fail(dataset, "is not numeric");
+  check_fits_file(dataset, dims, sizeof(double));
   const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
   std::vector<double> data(count);
   if (count > 0 && H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
@@ -337,6 +348,7 @@ Eigen::VectorXi Reader::integers(const std::string& dataset) const {
   if (dims.size() != 1) fail(dataset, "expected an integer vector, found shape " + shape_text(dims));
   Handle type(H5Dget_type(ds.get()), H5Tclose);
   if (H5Tget_class(type.get()) != H5T_INTEGER) fail(dataset, "is not an integer dataset");
+  check_fits_file(dataset, dims, sizeof(int));
   Eigen::VectorXi v(static_cast<Eigen::Index>(dims[0]));
   if (v.size() > 0 && H5Dread(ds.get(), H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
     fail(dataset, "cannot be read (truncated or corrupt file)");
@@ -405,6 +417,7 @@ std::vector<std::string> Reader::strings(const std::string& dataset) const {
   std::vector<hsize_t> dims = shape(dataset);
   if (dims.size() > 1) fail(dataset, "expected a list of strings, found shape " + shape_text(dims));
   const std::size_t count = dims.empty() ? 1 : dims[0];
+  check_fits_file(dataset, dims, 1);
   Handle type(H5Dget_type(ds.get()), H5Tclose);
   bool ok = true;
   auto out = read_string_values(type.get(), count,

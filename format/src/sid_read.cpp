@@ -1,6 +1,7 @@
 // Reads and validates a SID from HDF5; paths from the layout table.
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/error.hpp"
+#include "isosid/format/isolated_probe.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "isosid/format/sid_layout.hpp"
 #include "isosid/format/sid_validate.hpp"
@@ -40,6 +41,9 @@ void read_refmod(const h5::Reader& r, Sid& sid) {
                                 std::to_string(m.frequencies_hz.size()) + " entries");
   m.mode_names = r.strings(refmod::mode_names.at());
   m.n_low = static_cast<int>(r.integer(refmod::n_low.at()));
+  if (r.exists(refmod::n_high.at()) && r.integer(refmod::n_high.at()) != nq - m.n_low)
+    r.fail(refmod::n_high.at(), "is " + std::to_string(r.integer(refmod::n_high.at())) + " but nq - n_low = " +
+                                    std::to_string(nq - m.n_low));
   m.reduction_method = r.string(refmod::reduction_method.at());
   m.interface_description = r.string(refmod::interface.at());
   Damping& d = sid.damping;
@@ -133,9 +137,7 @@ void read_provenance(const h5::Reader& r, Sid& sid) {
   for (std::size_t i = 0; i < names.size(); ++i) p.timings_s.emplace_back(names[i], seconds(Eigen::Index(i)));
 }
 
-}  // namespace
-
-Sid read_sid(const std::string& path) {
+Sid read_sid_unprobed(const std::string& path) {
   const h5::Reader r(path);
   const std::string version_path = header::version.at();
   if (!r.exists(version_path)) r.fail(version_path, "missing: not an isosid SID file");
@@ -156,6 +158,14 @@ Sid read_sid(const std::string& path) {
   read_provenance(r, sid);
   validate_sid(sid, path);
   return sid;
+}
+
+}  // namespace
+
+Sid read_sid(const std::string& path) {
+  // a corrupt file may crash libhdf5 or make it allocate without bound: a child reads it first
+  probe_in_child(path, [&] { read_sid_unprobed(path); });
+  return read_sid_unprobed(path);
 }
 
 }  // namespace isosid::format

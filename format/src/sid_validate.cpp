@@ -91,6 +91,13 @@ void check_refmod(const Checker& c, const Sid& sid) {
   c.require(Index(r.mode_names.size()) == nq, refmod::mode_names.at(),
             "has " + std::to_string(r.mode_names.size()) + " names for nq = " + std::to_string(nq));
   c.require(r.n_low >= 0 && r.n_low <= nq, refmod::n_low.at(), "must lie in [0, nq]");
+  // the low modes and the high modes each come in ascending order (the runtime takes the
+  // leading ones as the low, and a frequency limit splits at the first one above it)
+  for (Index i = 1; i < nq; ++i)
+    if (i != r.n_low)
+      c.require(r.frequencies_hz(i) >= r.frequencies_hz(i - 1), refmod::frequencies_hz.at(),
+                "not ascending at " + std::to_string(i) + " (" + std::to_string(r.frequencies_hz(i - 1)) + " Hz, then " +
+                    std::to_string(r.frequencies_hz(i)) + " Hz)");
   const Damping& d = sid.damping;
   for (auto [item, v] : {std::pair{&damping::kappa, d.kappa}, {&damping::f1_hz, d.f1_hz}, {&damping::f2_hz, d.f2_hz},
                          {&damping::alpha1, d.alpha1}, {&damping::alpha2, d.alpha2}}) {
@@ -111,6 +118,15 @@ void check_terms(const Checker& c, const Sid& sid) {
   for (Taylor Sid::*member : {&Sid::J, &Sid::Me, &Sid::Ke, &Sid::De}) c.symmetric(m0_path(member), (sid.*member).M0);
   for (Index i = 0; i < nq; ++i)
     c.require(sid.Me.M0(i, i) > 0, m0_path(&Sid::Me), "non-positive diagonal entry at " + std::to_string(i));
+  // in the normal form (Me = I, Ke diagonal) Ke holds the squared circular frequencies: the
+  // runtime applies Ke as that diagonal, so a list that disagrees would go unnoticed there
+  const MatrixXd& K = sid.Ke.M0;
+  if (nq == 0 || !(K - MatrixXd(K.diagonal().asDiagonal())).isZero(1e-12 * K.cwiseAbs().maxCoeff())) return;
+  const Eigen::ArrayXd omega2 = (2 * M_PI * sid.refmod.frequencies_hz.array()).square();
+  for (Index i = 0; i < nq; ++i)
+    c.require(std::abs(K(i, i) - omega2(i)) <= 1e-6 * omega2.maxCoeff(), m0_path(&Sid::Ke),
+              "diagonal entry " + std::to_string(i) + " is " + std::to_string(K(i, i)) + ", but " + refmod::frequencies_hz.at() +
+                  " gives (2 pi f)^2 = " + std::to_string(omega2(i)));
 }
 
 /// Checks that the members of a list group have distinct names usable in a path, then each member.

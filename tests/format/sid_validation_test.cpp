@@ -73,6 +73,14 @@ TEST_CASE("reader refuses each kind of bad SID with a message naming the dataset
     const auto m = message_after(dir, [](const std::string& f) { test::replace_scalar(f, "/refmod/mass", 0.0); });
     CHECK_THAT(m, Contains("/refmod/mass") && Contains("must be positive"));
   }
+  SECTION("stiffness that disagrees with the frequencies") {
+    const auto m = message_after(dir, [](const std::string& f) { test::replace_dataset(f, "/terms/Ke/M0", Eigen::MatrixXd::Identity(4, 4)); });
+    CHECK_THAT(m, Contains("/terms/Ke/M0") && Contains("diagonal entry 0") && Contains("(2 pi f)^2"));
+  }
+  SECTION("n_high that does not add up") {
+    const auto m = message_after(dir, [](const std::string& f) { test::replace_integer(f, "/refmod/n_high", 7); });
+    CHECK_THAT(m, Contains("/refmod/n_high") && Contains("nq - n_low"));
+  }
   SECTION("not an HDF5 file") {
     const std::string file = dir.path("text.sid.h5");
     std::ofstream(file) << "this is not HDF5\n";
@@ -112,6 +120,10 @@ TEST_CASE("non-positive mass and other physics checks are refused before writing
   SECTION("M1 with the wrong number of slices") {
     s.J.M1.pop_back();
     CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/terms/J/M1") && Contains("expected nq = 4"));
+  }
+  SECTION("frequencies out of order") {
+    s.refmod.frequencies_hz.reverseInPlace();
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/refmod/frequencies_hz") && Contains("not ascending"));
   }
   SECTION("Poisson ratio") {
     s.material.poisson_ratio = 0.5;

@@ -48,6 +48,32 @@ TEST_CASE("the tools exit 2 with one line on bad input", "[format][tools]") {
   }
 }
 
+TEST_CASE("the tools survive corrupt SIDs that crashed libhdf5: exit 2, one line", "[format][tools][corrupt]") {
+  // tests/format/corrupt/README.md says what each file did before: libhdf5 crashed inside its
+  // B-tree and global-heap code, or allocated 7.7 GB from a forged shape; a child process now
+  // reads an untrusted SID first (format/isolated_probe), and shapes are checked against the
+  // file size before any allocation
+  const std::string dir = ISOSID_CORRUPT_DIR;
+  const std::pair<const char*, const char*> cases[] = {
+      {"sid_segv_info.sid.h5", "crashed the HDF5 library"},
+      {"sid_segv_diff.sid.h5", "crashed the HDF5 library"},
+      {"sid_globalheap_overflow.sid.h5", "crashed the HDF5 library"},
+      {"sid_memory_blowup.sid.h5", "/terms/ksigma/M0: declares shape (10, 134217729)"},
+      {"Ke_inconsistent.sid.h5", "/terms/Ke/M0: diagonal entry 0"},
+      {"freq_unsorted.sid.h5", "/refmod/frequencies_hz: not ascending"}};
+  for (const auto& [file, problem] : cases) {
+    for (const std::string& cmd : {std::string(ISOSID_INFO_EXE) + " " + dir + "/" + file,
+                                   std::string(ISOSID_DIFF_EXE) + " " + dir + "/" + file + " " + dir + "/" + file}) {
+      INFO(cmd);
+      const auto r = test::run_program(cmd);
+      INFO(r.err);
+      CHECK(r.exit_status == 2);
+      CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+      CHECK_THAT(r.err, Contains(file) && Contains(problem));
+    }
+  }
+}
+
 TEST_CASE("isosid-diff exits 0 for the same body in another basis and 1 for a different body", "[format][tools]") {
   const test::ScratchDir dir("diff");
   const auto body = test::random_lumped_body(12, 5, 8);
@@ -56,7 +82,8 @@ TEST_CASE("isosid-diff exits 0 for the same body in another basis and 1 for a di
   format::write_sid(test::lumped_sid(body), dir.path("a.sid.h5"));
   format::write_sid(test::lumped_sid(test::rotate_modes(body, Q)), dir.path("b.sid.h5"));
   auto perturbed = test::lumped_sid(body);
-  perturbed.refmod.frequencies_hz(4) *= 1.001;
+  perturbed.refmod.frequencies_hz(4) *= 1.001;  // a stiffer mode 4, consistently in Ke
+  perturbed.Ke.M0(4, 4) *= 1.001 * 1.001;
   format::write_sid(perturbed, dir.path("c.sid.h5"));
 
   const std::string diff = ISOSID_DIFF_EXE;

@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 #include <hdf5.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -92,7 +93,12 @@ public:
 private:
   Handle open_dataset(const std::string& dataset) const;
   std::vector<double> read_doubles(const std::string& dataset, std::vector<hsize_t>& dims) const;
+  /// Fails unless a dataset of this shape, `bytes` per value, could come from this file:
+  /// deflate shrinks data at most about 1000-fold, so a forged shape is caught before allocation.
+  void check_fits_file(const std::string& dataset, const std::vector<hsize_t>& dims, std::size_t bytes) const;
+
   std::string path_;
+  std::uintmax_t file_bytes_ = 0;
   Handle file_;
 };
 
