@@ -110,6 +110,8 @@ bool TomlView::holds_string(const std::string& key) const { return has(key) && n
 std::string TomlView::string(const std::string& key) const {
   auto s = node(key).value_exact<std::string>();
   if (!s) fail(key, "must be a string");
+  // names and paths end at a NUL in HDF5 and the file system: refused rather than cut short
+  if (s->find('\0') != std::string::npos) fail(key, "contains a NUL character");
   return *s;
 }
 std::string TomlView::string(const std::string& key, const std::string& fallback) const {
@@ -165,6 +167,8 @@ std::vector<std::string> TomlView::strings(const std::string& key) const {
   for (std::size_t i = 0; i < a->size(); ++i) {
     auto v = (*a)[i].value_exact<std::string>();
     if (!v) throw format::InputError(file_, field(key) + "[" + std::to_string(i) + "]", "must be a string");
+    if (v->find('\0') != std::string::npos)
+      throw format::InputError(file_, field(key) + "[" + std::to_string(i) + "]", "contains a NUL character");
     out.push_back(*v);
   }
   return out;

@@ -336,6 +336,17 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
       red.interface_points = int(k);
       const std::vector<double> c = r->numbers("interface_center");
       if (int(c.size()) != patch.param_dim() - 1) r->fail("interface_center", "needs one parameter per tangential direction");
+      // inside the parameter range of the interface surface's side
+      const auto surface = std::find_if(m.contact_surfaces.begin(), m.contact_surfaces.end(),
+                                        [&](const ContactSurfaceSpec& s) { return s.name == red.interface_surface; });
+      const int fixed = patch.side(surface->side)->direction;
+      for (int d = 0, k = 0; d < patch.param_dim(); ++d) {
+        if (d == fixed) continue;
+        const double x = c[std::size_t(k++)];
+        if (!(x >= patch.lower(d) && x <= patch.upper(d)))
+          r->fail("interface_center", "parameter " + std::to_string(x) + " lies outside the side's range [" +
+                                          std::to_string(patch.lower(d)) + ", " + std::to_string(patch.upper(d)) + "]");
+      }
       red.interface_center = Eigen::Map<const Eigen::VectorXd>(c.data(), Eigen::Index(c.size()));
     } else {
       for (const char* key : {"interface_surface", "interface_points", "interface_center"})

@@ -53,6 +53,14 @@ ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system, co
   const double scale = eigenvalue_scale(body.spec.material.youngs_modulus, body.spec.material.density, body_size(body));
   ReductionRequest request = reduction_request(body);
   request.extra_vectors = extra;
+  // more modes than the refined model has: a model-file problem, not a failed computation
+  const Eigen::Index free = system.K.rows();
+  const Eigen::Index needed = request.normal_modes + (request.method == "modal" ? rigid.cols() : Eigen::Index(request.interface_dofs.size()));
+  if (request.method != "full" && needed > free)
+    throw format::InputError(body.spec.file, "reduction.normal_modes",
+                             std::to_string(request.normal_modes) + " modes need " + std::to_string(needed) +
+                                 " free DOFs with the " + (request.method == "modal" ? "rigid-body modes" : "interface DOFs") +
+                                 ", but the refined model has " + std::to_string(free));
   return reduce(system.K, system.M, rigid, request, scale);
 }
 

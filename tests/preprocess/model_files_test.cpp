@@ -162,6 +162,8 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
        "contact_resolution.contact_radius: must be positive"},
       {replace(kValid, "[refinement]", "[contact_resolution]\ncontact_radius = 1e-4\nelements_per_radius = 0.5\n[refinement]"),
        "contact_resolution.elements_per_radius: must lie in 1..100"},
+      // names end at a NUL in HDF5 and file systems: refused, not cut short
+      {replace(kValid, "name = \"block\"", "name = \"blo\\u0000ck\""), "body.name: contains a NUL character"},
   };
   for (const Case& c : cases) {
     INFO(c.expected);
@@ -170,6 +172,22 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK_THAT(r.err, Contains("m.model.toml") && Contains(c.expected));
     CHECK(r.out.empty());
+  }
+  // found only once the model is refined and reduced: still the model's field, exit 2
+  const std::vector<Case> reduced = {
+      {std::string(kValid) + "[reduction]\nmethod = \"modal\"\nnormal_modes = 1000\n",
+       "reduction.normal_modes: 1000 modes need 1003 free DOFs with the rigid-body modes, but the refined model has"},
+      {std::string(kValid) + "[[contact_surface]]\nname = \"c\"\nside = \"bottom\"\n[reduction]\nmethod = \"craig-bampton\"\n"
+                             "normal_modes = 2\ninterface_surface = \"c\"\ninterface_points = 2\ninterface_center = [1.5]\n",
+       "reduction.interface_center: parameter 1.500000 lies outside the side's range"}};
+  for (const Case& c : reduced) {
+    INFO(c.expected);
+    std::ofstream(dir.path("m.model.toml")) << c.text;
+    const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("m.model.toml") + " -o " + dir.path("m.sid.h5"));
+    CHECK(r.exit_status == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_THAT(r.err, Contains("m.model.toml") && Contains(c.expected));
+    CHECK_FALSE(std::filesystem::exists(dir.path("m.sid.h5")));
   }
   const auto missing = test::run_program(std::string(ISOSID_PREP_EXE) + " " + dir.path("nope.model.toml"));
   CHECK(missing.exit_status == 2);
