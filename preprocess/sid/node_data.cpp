@@ -5,12 +5,31 @@
 #include "isosid/format/error.hpp"
 #include "isosid/format/skew.hpp"
 
+#include <optional>
+
 namespace isosid::prep {
 
 format::Node node_at(const BodyModel& body, const NodeSpec& spec, const Eigen::MatrixXd& Phi_nodal) {
-  const auto at = point_operator_at(body.space, body.dofs, body.elasticity, place(body.spec.patch, spec.at).parameter);
+  const Eigen::VectorXd parameter = place(body.spec.patch, spec.at).parameter;
+  const auto at = point_operator_at(body.space, body.dofs, body.elasticity, parameter);
   if (!at) throw format::InputError(body.spec.file, "node " + spec.name, "parameter outside the patch");
   const PointOperator& op = *at;
+  // where the parametrization collapses (a pole or a corner on the axis) the gradients are not
+  // defined at the point itself: the rotations are taken a hair inside the patch, where they
+  // are, and tend to the point's own value as the hair shrinks
+  std::optional<PointOperator> inside;
+  if (!op.dR_dx.allFinite()) {
+    Eigen::VectorXd nudged = parameter;
+    const NurbsPatch& patch = body.spec.patch;
+    for (Eigen::Index d = 0; d < nudged.size(); ++d) {
+      const double lo = patch.lower(int(d)), hi = patch.upper(int(d));
+      nudged(d) += 1e-7 * (hi - lo) * (nudged(d) >= 0.5 * (lo + hi) ? -1 : 1);
+    }
+    inside = point_operator_at(body.space, body.dofs, body.elasticity, nudged);
+    if (!inside || !inside->dR_dx.allFinite() || inside->nodes != op.nodes)
+      throw format::InputError(body.spec.file, "node " + spec.name, "the body's mapping is singular there and around it");
+  }
+  const Eigen::MatrixXd& dR_dx = inside ? inside->dR_dx : op.dR_dx;
   const int dim = body.dofs.dim();
   const Eigen::Index nq = Phi_nodal.cols();
   // local modal matrices: rows f*dim + a
@@ -27,7 +46,7 @@ format::Node node_at(const BodyModel& body, const NodeSpec& spec, const Eigen::M
     Eigen::Matrix3d grad = Eigen::Matrix3d::Zero();
     for (std::size_t f = 0; f < op.nodes.size(); ++f)
       for (int a = 0; a < dim; ++a)
-        for (int b = 0; b < dim; ++b) grad(a, b) += local(Eigen::Index(f) * dim + a, k) * op.dR_dx(Eigen::Index(f), b);
+        for (int b = 0; b < dim; ++b) grad(a, b) += local(Eigen::Index(f) * dim + a, k) * dR_dx(Eigen::Index(f), b);
     // omega = 1/2 curl u; planar and axisymmetric (at theta = 0) fields rotate about z only
     n.psi.col(k) = 0.5 * Eigen::Vector3d(grad(2, 1) - grad(1, 2), grad(0, 2) - grad(2, 0), grad(1, 0) - grad(0, 1));
     n.origin.M1.push_back(n.phi.col(k));

@@ -2,6 +2,7 @@
 // field, exit status 2; the seed beam model is converged to 0.1 % in its first twelve modes.
 #include "model/body_model.hpp"
 #include "reduce/modal_analysis.hpp"
+#include "isosid/format/sid_io.hpp"
 #include "support/run_program.hpp"
 #include "preprocess/body_fixtures.hpp"
 
@@ -202,6 +203,52 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
   CHECK(std::count(self.err.begin(), self.err.end(), '\n') == 1);
   std::ifstream original(golden), kept(dir.path("self.model.toml"));
   CHECK(std::string(std::istreambuf_iterator<char>(original), {}) == std::string(std::istreambuf_iterator<char>(kept), {}));
+}
+
+TEST_CASE("a node where the mapping collapses gets its rotations from just inside", "[model]") {
+  // issue 14's reproducer: a rod with a spherical end and a node at the corner parameter [1, 1],
+  // where the parametrization collapses; it was refused ("/nodes/top/psi: non-finite" on the
+  // output SID). The rotation rows come from 1e-7 of the range inside: finite, and within 1e-4
+  // of those taken 1e-5 inside (a smooth field)
+  const test::ScratchDir dir("node-corner");
+  const std::string model = R"(
+[body]
+name = "rod"
+analysis = "axisymmetric"
+[material]
+youngs_modulus = 7.0e10
+poisson_ratio = 0.3
+density = 2700.0
+[geometry]
+primitive = "rod_with_spherical_end"
+radius = 0.01
+length = 0.1
+[refinement]
+degrees = [2, 2]
+subdivisions = [1, 3]
+[[contact_surface]]
+name = "contact"
+side = "cap"
+[reduction]
+method = "craig-bampton"
+normal_modes = 3
+interface_surface = "contact"
+interface_points = 3
+interface_center = [0.0]
+[[node]]
+name = "top"
+parameter = [PARAMETER]
+)";
+  auto psi_at = [&](const std::string& parameter, const std::string& name) {
+    std::ofstream(dir.path(name + ".model.toml")) << replace(model, "PARAMETER", parameter);
+    const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path(name + ".model.toml") + " -o " + dir.path(name + ".sid.h5"));
+    INFO(r.err);
+    REQUIRE(r.exit_status == 0);
+    return format::read_sid(dir.path(name + ".sid.h5")).nodes.at(0).psi;
+  };
+  const Eigen::MatrixXd corner = psi_at("1.0, 1.0", "corner"), near = psi_at("0.99999, 0.99999", "near");
+  CHECK(corner.allFinite());
+  CHECK((corner - near).norm() <= 1e-4 * near.norm());
 }
 
 TEST_CASE("the seed beam model's first twelve elastic frequencies are converged to 0.1 %", "[model][slow]") {
