@@ -283,6 +283,8 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
         const auto& r = rows[std::size_t(k++)];
         if (r.size() != 2 || r[0] >= r[1] || r[0] < patch.lower(d) || r[1] > patch.upper(d))
           c.fail("interval", "each entry must be [lo, hi] with lo < hi inside the parameter range");
+        if (r[1] - r[0] < 1e-9 * (patch.upper(d) - patch.lower(d)))
+          c.fail("interval", "narrower than 1e-9 of the parameter range: its Gauss points would carry no area");
         s.interval.push_back({r[0], r[1]});
       }
     }
@@ -356,7 +358,8 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
   if (auto d = top.optional_table("damping")) {
     d->allow_only({"kappa", "f1", "f2"});
     m.damping.kappa = d->number("kappa", m.damping.kappa);
-    if (m.damping.kappa < 0) d->fail("kappa", "must not be negative");
+    // a damping ratio: above 1 every mode is overdamped, and 1e300 overflowed De in the SID
+    if (!(m.damping.kappa >= 0 && m.damping.kappa <= 1)) d->fail("kappa", "is a damping ratio: must lie in [0, 1]");
     if (d->has("f1") != d->has("f2")) d->fail(d->has("f1") ? "f2" : "f1", "give both f1 and f2, or neither");
     if (d->has("f1")) {
       m.damping.f1_hz = d->positive("f1");

@@ -13,6 +13,14 @@ std::vector<BoundaryPoint> selected_points(const BodyModel& body, const ContactS
   std::vector<BoundaryPoint> out = boundary_points(body.space, body.elasticity, *side, spec.points_per_direction, spec.interval);
   if (out.empty())
     throw format::InputError(body.spec.file, "contact_surface " + spec.name, "no Gauss point lies in the interval");
+  // a side that collapses (the axis of a body of revolution, a pole) or an interval narrower
+  // than round-off has no area to carry pressure: say so here, not as bad weights in the SID
+  for (const BoundaryPoint& p : out)
+    if (!(p.weight > 0) || !p.normal.allFinite())
+      throw format::InputError(body.spec.file, "contact_surface " + spec.name + (spec.interval.empty() ? ".side" : ".interval"),
+                               spec.interval.empty() ? "side '" + spec.side + "' has no area (it collapses to a line or a point)"
+                                                     : "has no area on side '" + spec.side +
+                                                           "' (the side collapses there, or the interval is too narrow)");
   return out;
 }
 

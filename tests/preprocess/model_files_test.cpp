@@ -163,6 +163,7 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
        "contact_resolution.contact_radius: must be positive"},
       {replace(kValid, "[refinement]", "[contact_resolution]\ncontact_radius = 1e-4\nelements_per_radius = 0.5\n[refinement]"),
        "contact_resolution.elements_per_radius: must lie in 1..100"},
+      {std::string(kValid) + "[damping]\nkappa = 1e300\n", "damping.kappa: is a damping ratio: must lie in [0, 1]"},
       // names end at a NUL in HDF5 and file systems: refused, not cut short
       {replace(kValid, "name = \"block\"", "name = \"blo\\u0000ck\""), "body.name: contains a NUL character"},
   };
@@ -180,7 +181,12 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
        "reduction.normal_modes: 1000 modes need 1003 free DOFs with the rigid-body modes, but the refined model has"},
       {std::string(kValid) + "[[contact_surface]]\nname = \"c\"\nside = \"bottom\"\n[reduction]\nmethod = \"craig-bampton\"\n"
                              "normal_modes = 2\ninterface_surface = \"c\"\ninterface_points = 2\ninterface_center = [1.5]\n",
-       "reduction.interface_center: parameter 1.500000 lies outside the side's range"}};
+       "reduction.interface_center: parameter 1.500000 lies outside the side's range"},
+      // a contact surface without area: a side that collapses, an interval below round-off
+      {std::string(kValid) + "[[contact_surface]]\nname = \"c\"\nside = \"bottom\"\ninterval = [[0.0, 1e-300]]\n",
+       "contact_surface[0].interval: narrower than 1e-9 of the parameter range"},
+      {kHalfDisk + "subdivisions = [2, 2]\n[[contact_surface]]\nname = \"c\"\nside = \"axis\"\n[reduction]\nmethod = \"modal\"\nnormal_modes = 2\n",
+       "contact_surface c.side: side 'axis' has no area (it collapses to a line or a point)"}};
   for (const Case& c : reduced) {
     INFO(c.expected);
     std::ofstream(dir.path("m.model.toml")) << c.text;
