@@ -1,6 +1,8 @@
 // Model file parsing and validation; see model_file.hpp.
 #include "model/model_file.hpp"
 
+#include "geometry/mapping_check.hpp"
+
 #include "geometry/primitives.hpp"
 #include "isosid/common/toml_fields.hpp"
 
@@ -400,6 +402,7 @@ ModelSpec read_model_file(const std::string& path) {
   m.material.density = mat.positive("density");
 
   m.patch = read_geometry(top.table("geometry"), m.analysis);
+  check_mapping(m.patch, path, "geometry");
   if (auto c = top.optional_table("contact_resolution")) {
     c->allow_only({"contact_radius", "elements_per_radius"});
     ContactResolutionSpec& resolution = m.contact_resolution.emplace();

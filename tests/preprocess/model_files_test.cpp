@@ -105,6 +105,9 @@ TEST_CASE("a valid model file prints its size and frequencies as JSON", "[model]
   CHECK(j.contains("timings_s"));
   CHECK(j["timings_s"].contains("assembly"));
   CHECK(prep_on(dir, kPatch).exit_status == 0);
+  // a patch parametrized the other way round (det J < 0 throughout) is no fold
+  CHECK(prep_on(dir, replace(kPatch, "[[0, 0], [0.5, 0], [1, 0], [0, 1], [0.5, 1], [1, 1]]",
+                             "[[0, 1], [0.5, 1], [1, 1], [0, 0], [0.5, 0], [1, 0]]")).exit_status == 0);
 }
 
 TEST_CASE("bad model files: exit 2 with one line naming file, field and problem", "[model]") {
@@ -133,6 +136,8 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
       {replace(kPatch, "weights = [1, 1, 1, 1, 1, 1]", "weights = [1, 1, -2, 1, 1, 1]"), "weight 2 must be positive"},
       {replace(kPatch, "degrees = [2, 1]", "degrees = [3, 1]"), "degree 3 too high for 6 knots"},
       {replace(kPatch, "weights = [1, 1, 1, 1, 1, 1]", "weights = [1, 1, 1, 1, 1]"), "weights: 5 weights, expected 6"},
+      // a bowtie: the upper row of control points runs backwards, the patch crosses itself
+      {replace(kPatch, "[0, 1], [0.5, 1], [1, 1]]", "[1, 1], [0.5, 1], [0, 1]]"), "geometry: the patch folds over itself"},
       // hierarchical refinement: degenerate requests
       {hierarchical(kValid, "box = [[0.5, 1.2], [0.0, 1.0]]\n"),
        "refinement.hierarchical.box: outside the parameter range of xi"},
