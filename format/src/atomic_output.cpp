@@ -4,6 +4,8 @@
 #include "isosid/format/error.hpp"
 
 #include <atomic>
+#include <csignal>
+#include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +13,51 @@
 
 namespace isosid::format {
 namespace fs = std::filesystem;
+
+namespace {
+// Temporary paths of live outputs, readable from a signal handler: fixed buffers, claimed and
+// released through atomic flags (a handler may only unlink, write and _exit)
+constexpr int kSlots = 16;
+constexpr std::size_t kPathBytes = 4096;
+std::atomic<bool> g_used[kSlots];
+char g_paths[kSlots][kPathBytes];
+const char* g_program = "isosid";
+
+int claim_slot(const std::string& path) {
+  if (path.size() >= kPathBytes) return -1;
+  for (int i = 0; i < kSlots; ++i) {
+    bool expected = false;
+    if (g_used[i].load() || !g_used[i].compare_exchange_strong(expected, true)) continue;
+    std::memcpy(g_paths[i], path.c_str(), path.size() + 1);
+    return i;
+  }
+  return -1;  // more live outputs than slots: that one is not cleaned on a signal
+}
+
+void write_all(const char* text) {
+  for (std::size_t n = std::strlen(text); n > 0;) {
+    const ssize_t w = ::write(STDERR_FILENO, text, n);
+    if (w <= 0) return;
+    text += w, n -= std::size_t(w);
+  }
+}
+
+extern "C" void remove_temporaries_and_exit(int signal) {
+  for (int i = 0; i < kSlots; ++i)
+    if (g_used[i].load()) ::unlink(g_paths[i]);
+  const char* name = signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : signal == SIGHUP ? "SIGHUP" : "a signal";
+  write_all(g_program);
+  write_all(": interrupted by ");
+  write_all(name);
+  write_all("; nothing was written\n");
+  ::_exit(128 + signal);
+}
+}  // namespace
+
+void remove_temporaries_on_signals(const char* program) {
+  g_program = program;
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, remove_temporaries_and_exit);
+}
 
 AtomicOutput::AtomicOutput(std::string target) : target_(std::move(target)) {
   const fs::path t(target_);
@@ -22,6 +69,7 @@ AtomicOutput::AtomicOutput(std::string target) : target_(std::move(target)) {
   temp_ = (dir / ("." + t.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
                   std::to_string(counter++)))
               .string();
+  slot_ = claim_slot(temp_);
 }
 
 AtomicOutput::~AtomicOutput() {
@@ -29,6 +77,7 @@ AtomicOutput::~AtomicOutput() {
     std::error_code ec;
     fs::remove(temp_, ec);
   }
+  if (slot_ >= 0) g_used[slot_].store(false);
 }
 
 void AtomicOutput::commit() {
@@ -42,6 +91,7 @@ void AtomicOutput::commit() {
   fs::rename(temp_, target_, ec);
   if (ec) throw ComputationError(target_ + ": cannot rename temporary file onto target: " + ec.message());
   committed_ = true;
+  if (slot_ >= 0) g_used[slot_].store(false), slot_ = -1;  // the target is complete: a signal now leaves it
 }
 
 void write_text_atomically(const std::string& path, const std::string& text) {

@@ -1,5 +1,6 @@
 // isosid-prep: builds an isogeometric body from a model file, assembles it, reduces it and
 // writes its SID (or, with --modes, reports its size and natural frequencies).
+#include "isosid/format/atomic_output.hpp"
 #include "isosid/common/cli_parse.hpp"
 #include "pipeline/prepare.hpp"
 #include "tools/prep_report.hpp"
@@ -19,6 +20,8 @@ std::string default_output(const std::string& model) {
 
 int main(int argc, char** argv) {
   using namespace isosid;
+  // a preprocessing run killed midway leaves nothing behind, not even its temporary SID
+  format::remove_temporaries_on_signals("isosid-prep");
   return common::run_guarded("isosid-prep", [&] {
     CLI::App app{"Builds an isogeometric body from MODEL.toml, reduces it and writes its SID file.\n"
                  "With --modes N it only reports the model size and the N lowest frequencies.",

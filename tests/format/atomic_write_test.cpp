@@ -1,4 +1,5 @@
 // An interrupted or failed SID write leaves nothing at the target path (and keeps an older file).
+#include "isosid/format/atomic_output.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "support/lumped_sid.hpp"
 #include "support/run_program.hpp"
@@ -82,4 +83,26 @@ TEST_CASE("writing into a missing folder is a one-line input error", "[format][a
   const format::Sid sid = test::lumped_sid(test::random_lumped_body(6, 2, 2));
   CHECK_THROWS_WITH(format::write_sid(sid, "/nonexistent-isosid-folder/x.sid.h5"),
                     Catch::Matchers::Contains("output folder") && Catch::Matchers::Contains("does not exist"));
+}
+
+TEST_CASE("a signal while an output is being written removes its temporary file", "[format][atomic][signal]") {
+  // in a child: an output half written to its temporary file, then SIGTERM; the handler of
+  // remove_temporaries_on_signals must unlink it and exit 128 + 15 (what isosid-prep does when
+  // killed midway; the kill cannot be timed to land in its write from outside)
+  const test::ScratchDir dir("atomic-signal");
+  const std::string target = dir.path("out.sid.h5");
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    format::remove_temporaries_on_signals("test");
+    format::AtomicOutput out(target);
+    std::ofstream(out.temp_path()) << "half of it";
+    std::raise(SIGTERM);
+    _exit(0);  // not reached
+  }
+  int status = 0;
+  REQUIRE(waitpid(child, &status, 0) == child);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 128 + SIGTERM);
+  CHECK(std::filesystem::is_empty(dir.dir()));  // neither the target nor a temporary file
 }

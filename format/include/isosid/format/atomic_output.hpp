@@ -23,7 +23,14 @@ public:
 private:
   std::string target_, temp_;
   bool committed_ = false;
+  int slot_ = -1;  ///< where the temporary path is registered for the signal handler
 };
+
+/// Makes SIGINT, SIGTERM and SIGHUP remove every temporary file of a live AtomicOutput, print
+/// "<program>: interrupted by <signal>; nothing was written" and exit 130 / 143 / 129. For
+/// programs whose output only makes sense complete (isosid-prep); isosid-run stops at a
+/// sample instead and keeps its results.
+void remove_temporaries_on_signals(const char* program);
 
 /// Writes `text` to `path` through an AtomicOutput.
 void write_text_atomically(const std::string& path, const std::string& text);
