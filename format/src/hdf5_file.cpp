@@ -3,8 +3,13 @@
 
 #include "isosid/format/error.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
+#include <unistd.h>
 #include <algorithm>
 #include <numeric>
 
@@ -66,7 +71,15 @@ void Handle::reset() {
 
 Writer::Writer(const std::string& path) : path_(path) {
   silence_hdf5();
-  hid_t f = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  // The file is built in memory (core driver, no backing store) and written out by close():
+  // libhdf5 never meets a full disk, which made it crash at exit, and a write error is one
+  // errno. (The 1.8 file format's checksummed superblock would be welcome, but libhdf5 1.10
+  // hands out its in-memory image with a superblock checksum that no longer matches: measured,
+  // "incorrect metadata checksum" on reading. Corrupt files are caught by the reader's checks
+  // and its child-process probe instead.)
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_fapl_core(fapl.get(), std::size_t{1} << 20, 0);
+  hid_t f = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get());
   if (f < 0) throw InputError(path, "", "cannot create HDF5 file");
   file_ = Handle(f, H5Fclose);
 }
@@ -202,7 +215,24 @@ void Writer::attribute(const std::string& object, const std::string& name, doubl
 void Writer::close() {
   if (!file_.valid()) return;
   if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("/", "cannot flush file");
+  const ssize_t size = H5Fget_file_image(file_.get(), nullptr, 0);
+  if (size < 0) fail("/", "cannot take the file image");
+  std::vector<char> image(static_cast<std::size_t>(size));
+  if (H5Fget_file_image(file_.get(), image.data(), image.size()) != size) fail("/", "cannot take the file image");
   if (H5Fclose(file_.release()) < 0) fail("/", "cannot close file");
+  const int fd = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw ComputationError(path_ + ": cannot create: " + std::strerror(errno));
+  for (std::size_t done = 0; done < image.size();) {
+    const ssize_t n = ::write(fd, image.data() + done, image.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : ENOSPC;
+      ::close(fd);
+      throw ComputationError(path_ + ": cannot write " + std::to_string(image.size()) + " bytes: " + std::strerror(error));
+    }
+    done += std::size_t(n);
+  }
+  if (::close(fd) != 0) throw ComputationError(path_ + ": cannot write: " + std::strerror(errno));
 }
 
 // ---------------------------------------------------------------- Reader

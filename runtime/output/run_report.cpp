@@ -19,9 +19,19 @@ void mark_run_started(const std::string& dir, const std::string& scene_file) {
 nlohmann::json write_run_report(const std::string& dir, const Recorder& recorder, const Simulation& simulation,
                                 const RunOutcome& outcome) {
   const std::filesystem::path folder(dir);
-  recorder.write_results((folder / "results.h5").string());
-  const nlohmann::json summary = recorder.summary(simulation.stats(), outcome, simulation.state().data());
+  // summary.json first: it is small, and on a full disk it is what keeps the run's figures
+  nlohmann::json summary = recorder.summary(simulation.stats(), outcome, simulation.state().data());
   format::write_text_atomically((folder / "summary.json").string(), summary.dump(2) + "\n");
+  try {
+    recorder.write_results((folder / "results.h5").string());
+  } catch (const format::ComputationError& e) {
+    summary["results_h5_error"] = e.what();
+    try {
+      format::write_text_atomically((folder / "summary.json").string(), summary.dump(2) + "\n");
+    } catch (const format::ComputationError&) {  // the first summary.json stays
+    }
+    throw format::ComputationError(std::string(e.what()) + " (summary.json in " + dir + " holds the run's figures)");
+  }
   return summary;
 }
 

@@ -328,7 +328,7 @@ TEST_CASE("reduction settings are validated", "[model][sid]") {
            {"[reduction]\nmethod = \"craig-bampton\"\nnormal_modes = 3\ninterface_surface = \"nope\"\ninterface_points = 2\ninterface_center = [0.5]\n",
             "reduction.interface_surface: no contact_surface named 'nope'"},
            {"[reduction]\nmethod = \"modal\"\ninterface_points = 2\n", "reduction.interface_points: only used by method"},
-           {"[damping]\nkappa = -1\n", "damping.kappa: must not be negative"},
+           {"[damping]\nkappa = -1\n", "damping.kappa: is a damping ratio: must lie in [0, 1]"},
            {"[damping]\nf1 = 100.0\n", "damping.f2: give both f1 and f2"},
            {"[[node]]\nname = \"n\"\nparameter = [2.0, 0.5]\n", "node[0].parameter: outside"},
            {"[[contact_surface]]\nname = \"contact\"\nside = \"left\"\n", "contact_surface[1].name: duplicate name"},

@@ -180,6 +180,38 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
 }
 
 
+TEST_CASE("a full disk ends both programs with one line and exit 1, and the run keeps summary.json", "[runtime][faults]") {
+  // the file size limit (ulimit -f, SIGXFSZ ignored) makes writes fail with EFBIG as a full disk
+  // does with ENOSPC; libhdf5 used to crash at exit after the failed write, and isosid-run
+  // lost the whole run
+  const test::ScratchDir dir("disk-full");
+  test::copy_model_file(dir, "sphere_axisym.model.toml");
+  test::copy_model_file(dir, "sphere_hertz.scene.toml");
+  const std::string limited = "ulimit -f 100; trap '' XFSZ; ";  // 100 KiB: the SID and results.h5 need more
+  const auto prep = test::run_program(limited + ISOSID_PREP_EXE + " -q " + dir.path("sphere_axisym.model.toml") + " -o " +
+                                      dir.path("limited.sid.h5"));
+  INFO(prep.err);
+  CHECK(prep.exit_status == 1);
+  CHECK(std::count(prep.err.begin(), prep.err.end(), '\n') == 1);
+  CHECK(prep.err.find("File too large") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir.path("limited.sid.h5")));
+  // the run itself, with a SID built without the limit
+  REQUIRE(test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("sphere_axisym.model.toml")).exit_status == 0);
+  const auto run = test::run_program(limited + "ISOSID_PREP=" + ISOSID_PREP_EXE + " " + ISOSID_RUN_EXE + " -q " +
+                                     dir.path("sphere_hertz.scene.toml") + " -o " + dir.path("out"));
+  INFO(run.err);
+  CHECK(run.exit_status == 1);
+  CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+  CHECK(run.err.find("summary.json") != std::string::npos);
+  std::ifstream in(dir.path("out/summary.json"));
+  const json summary = json::parse(in);
+  CHECK(summary["status"] == "completed");
+  CHECK(summary.contains("results_h5_error"));
+  CHECK(summary["contacts"][0]["peak_force_n"].get<double>() > 50);
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path("out")))
+    CHECK(entry.path().filename().string().rfind(".results.h5.tmp", 0) != 0);  // no temporary left
+}
+
 TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run at a sample and keep its results so far", "[runtime][signals]") {
   const test::ScratchDir dir("signals");
   // the impact at 1 ns steps: about a second per 100 us simulated, far longer than the test waits
