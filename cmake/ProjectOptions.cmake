@@ -7,7 +7,15 @@ target_compile_options(isosid_options INTERFACE -Wall -Wextra -Wpedantic)
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
   target_compile_options(isosid_options INTERFACE -Wno-restrict)
 endif()
-if(ISOSID_SANITIZE)
+if(ISOSID_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "ISOSID_FUZZ needs clang (libFuzzer): configure with CC=clang CXX=clang++")
+  endif()
+  # coverage for libFuzzer in every library the targets link, with the sanitizers
+  target_compile_options(isosid_options INTERFACE
+    -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  target_link_options(isosid_options INTERFACE -fsanitize=address,undefined)
+elseif(ISOSID_SANITIZE)
   target_compile_options(isosid_options INTERFACE
     -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   target_link_options(isosid_options INTERFACE -fsanitize=address,undefined)

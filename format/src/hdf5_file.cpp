@@ -32,6 +32,25 @@ Handle vlen_string_type() {
   return Handle(t, H5Tclose);
 }
 
+/// The fixed-length string type the writer uses (null-padded, `size` bytes, at least 1): no
+/// global heap, whose corrupt entries made libhdf5 read past its buffers.
+Handle fixed_string_type(std::size_t size) {
+  hid_t t = H5Tcopy(H5T_C_S1);
+  H5Tset_size(t, std::max<std::size_t>(size, 1));
+  H5Tset_strpad(t, H5T_STR_NULLPAD);
+  H5Tset_cset(t, H5T_CSET_UTF8);
+  return Handle(t, H5Tclose);
+}
+
+/// The strings laid out for a fixed-length type of the longest one's size.
+std::vector<char> packed(const std::vector<std::string>& values, std::size_t& size) {
+  size = 1;
+  for (const auto& s : values) size = std::max(size, s.size());
+  std::vector<char> out(values.size() * size, '\0');
+  for (std::size_t i = 0; i < values.size(); ++i) std::copy(values[i].begin(), values[i].end(), out.begin() + std::ptrdiff_t(i * size));
+  return out;
+}
+
 Handle intermediate_groups() {
   hid_t p = H5Pcreate(H5P_LINK_CREATE);
   H5Pset_create_intermediate_group(p, 1);
@@ -173,34 +192,36 @@ void Writer::integer(const std::string& path, long long value) {
 }
 
 void Writer::string(const std::string& path, const std::string& value) {
-  Handle type = vlen_string_type();
+  std::size_t size = 0;
+  const std::vector<char> text = packed({value}, size);
+  Handle type = fixed_string_type(size);
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   Handle ds = create_dataset(file_.get(), path, type.get(), space.get());
-  const char* text = value.c_str();
-  if (!ds.valid() || H5Dwrite(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &text) < 0)
+  if (!ds.valid() || H5Dwrite(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()) < 0)
     fail(path, "cannot write string");
 }
 
 void Writer::strings(const std::string& path, const std::vector<std::string>& value) {
-  Handle type = vlen_string_type();
+  std::size_t size = 0;
+  const std::vector<char> text = packed(value, size);
+  Handle type = fixed_string_type(size);
   const hsize_t dims[1] = {hsize_t(value.size())};
   Handle space(H5Screate_simple(1, dims, nullptr), H5Sclose);
   Handle ds = create_dataset(file_.get(), path, type.get(), space.get());
   if (!ds.valid()) fail(path, "cannot create string list");
-  std::vector<const char*> texts;
-  for (const auto& s : value) texts.push_back(s.c_str());
-  if (!texts.empty() && H5Dwrite(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, texts.data()) < 0)
+  if (!value.empty() && H5Dwrite(ds.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()) < 0)
     fail(path, "cannot write string list");
 }
 
 void Writer::attribute(const std::string& object, const std::string& name, const std::string& value) {
-  Handle type = vlen_string_type();
+  std::size_t size = 0;
+  const std::vector<char> text = packed({value}, size);
+  Handle type = fixed_string_type(size);
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   Handle attr(H5Acreate_by_name(file_.get(), object.c_str(), name.c_str(), type.get(), space.get(), H5P_DEFAULT,
                                 H5P_DEFAULT, H5P_DEFAULT),
               H5Aclose);
-  const char* text = value.c_str();
-  if (!attr.valid() || H5Awrite(attr.get(), type.get(), &text) < 0) fail(object, "cannot write attribute " + name);
+  if (!attr.valid() || H5Awrite(attr.get(), type.get(), text.data()) < 0) fail(object, "cannot write attribute " + name);
 }
 
 void Writer::attribute(const std::string& object, const std::string& name, double value) {
@@ -428,6 +449,8 @@ std::vector<std::string> read_string_values(hid_t file_type, std::size_t count, 
     const std::size_t size = H5Tget_size(file_type);
     Handle mem(H5Tcopy(H5T_C_S1), H5Tclose);
     H5Tset_size(mem.get(), size);
+    H5Tset_strpad(mem.get(), H5T_STR_NULLPAD);       // the bytes as stored, cut at the first NUL below
+    H5Tset_cset(mem.get(), H5Tget_cset(file_type));  // no conversion between ASCII and UTF-8
     std::vector<char> raw(count * size + 1, '\0');
     if (count > 0 && read(mem.get(), raw.data()) < 0) {
       ok = false;

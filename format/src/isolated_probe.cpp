@@ -22,6 +22,10 @@
 #endif
 #endif
 
+#ifdef ISOSID_UNDER_ASAN
+#include <sanitizer/common_interface_defs.h>
+#endif
+
 namespace isosid::format {
 namespace {
 enum ChildExit { kRead = 0, kBadInput = 2, kOutOfMemory = 3, kOtherError = 4 };
@@ -43,6 +47,12 @@ void probe_in_child(const std::string& path, const std::function<void()>& read) 
     // silent: a crash report (a sanitizer's) must not add lines to the program's one-line message
     const int null = open("/dev/null", O_WRONLY);
     if (null >= 0) dup2(null, STDERR_FILENO), dup2(null, STDOUT_FILENO);
+    // a fault kills the child plainly: the parent's handlers (a sanitizer's, a fuzzer's that
+    // would record the input as its own crash) have no business here
+    for (const int signal : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL, SIGTRAP}) std::signal(signal, SIG_DFL);
+#ifdef ISOSID_UNDER_ASAN
+    __sanitizer_set_death_callback(nullptr);  // nor a sanitizer's death callback (libFuzzer records inputs there)
+#endif
 #ifndef ISOSID_UNDER_ASAN  // AddressSanitizer reserves terabytes of address space up front
     const rlimit memory{rlim_t(limit), rlim_t(limit)};
     setrlimit(RLIMIT_AS, &memory);
