@@ -1,6 +1,9 @@
-// libFuzzer helpers: the loaders read files, so each input is written to a file of this
-// process first (the same path every time: one input at a time).
+// libFuzzer helper: the loaders read files, so each input is written to a file of this process
+// first (the same path every time: one input at a time), then loaded; bad input must end in
+// InputError, anything else is a finding.
 #pragma once
+#include "isosid/format/error.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
@@ -9,10 +12,15 @@
 
 namespace isosid::fuzz {
 
-inline std::string input_file(const std::uint8_t* data, std::size_t size, const std::string& suffix) {
+template <class Load>
+int load_input(const std::uint8_t* data, std::size_t size, const std::string& suffix, Load load) {
   const std::string path = "/tmp/isosid-fuzz-" + std::to_string(::getpid()) + suffix;
   std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data), std::streamsize(size));
-  return path;
+  try {
+    load(path);
+  } catch (const format::InputError&) {
+  }
+  return 0;
 }
 
 }  // namespace isosid::fuzz
