@@ -275,13 +275,22 @@ void Reader::fail(const std::string& object, const std::string& problem) const {
   throw InputError(path_, object, problem);
 }
 
+long double most_data_bytes(std::uintmax_t file_bytes) {
+  return 1100.0L * static_cast<long double>(file_bytes) + (1 << 20);
+}
+
 void Reader::check_fits_file(const std::string& dataset, const std::vector<hsize_t>& dims, std::size_t bytes) const {
   long double count = 1;
   for (const hsize_t d : dims) count *= static_cast<long double>(d);
-  const long double most = 1100.0L * static_cast<long double>(file_bytes_) + (1 << 20);
-  if (count * static_cast<long double>(bytes) > most)
+  const long double most = most_data_bytes(file_bytes_);
+  const long double claimed = count * static_cast<long double>(bytes);
+  if (claimed > most)
     fail(dataset, "declares shape " + shape_text(dims) + ", more data than a file of " + std::to_string(file_bytes_) +
                       " bytes can hold (corrupt file)");
+  claimed_bytes_ += claimed;
+  if (claimed_bytes_ > most)
+    fail(dataset, "declares shape " + shape_text(dims) + ": with the datasets before it, more data than a file of " +
+                      std::to_string(file_bytes_) + " bytes can hold (corrupt file)");
 }
 
 bool Reader::exists(const std::string& object) const {
@@ -470,8 +479,11 @@ std::vector<std::string> Reader::strings(const std::string& dataset) const {
   std::vector<hsize_t> dims = shape(dataset);
   if (dims.size() > 1) fail(dataset, "expected a list of strings, found shape " + shape_text(dims));
   const std::size_t count = dims.empty() ? 1 : dims[0];
-  check_fits_file(dataset, dims, 1);
   Handle type(H5Dget_type(ds.get()), H5Tclose);
+  if (!type.valid()) fail(dataset, "is not a readable string dataset");
+  // fixed-length strings occupy their declared size each: a corrupt size must not be allocated
+  const bool fixed_length = H5Tis_variable_str(type.get()) <= 0;
+  check_fits_file(dataset, dims, fixed_length ? std::max<std::size_t>(1, H5Tget_size(type.get())) : 1);
   bool ok = true;
   auto out = read_string_values(type.get(), count,
                                 [&](hid_t mem, void* buf) { return H5Dread(ds.get(), mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf); },
@@ -489,19 +501,32 @@ bool Reader::has_attribute(const std::string& object, const std::string& name) c
   return exists(object) && H5Aexists_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
 }
 
-std::string Reader::string_attribute(const std::string& object, const std::string& name) const {
+Handle Reader::open_single_attribute(const std::string& object, const std::string& name) const {
   if (!has_attribute(object, name)) fail(object, "missing attribute '" + name + "'");
   Handle attr(H5Aopen_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!attr.valid()) fail(object, "attribute '" + name + "' cannot be opened (corrupt file)");
+  // one value is read into room for one: a corrupt dataspace must not make H5Aread write more
+  Handle space(H5Aget_space(attr.get()), H5Sclose);
+  if (!space.valid() || H5Sget_simple_extent_npoints(space.get()) != 1)
+    fail(object, "attribute '" + name + "' must hold exactly one value");
+  return attr;
+}
+
+std::string Reader::string_attribute(const std::string& object, const std::string& name) const {
+  Handle attr = open_single_attribute(object, name);
   Handle type(H5Aget_type(attr.get()), H5Tclose);
-  bool ok = true;
-  auto out = read_string_values(type.get(), 1, [&](hid_t mem, void* buf) { return H5Aread(attr.get(), mem, buf); }, ok);
+  // an attribute lives uncompressed in its object header, so it cannot be longer than the file
+  if (type.valid() && H5Tis_variable_str(type.get()) <= 0 && H5Tget_size(type.get()) > file_bytes_)
+    fail(object, "attribute '" + name + "' declares a string longer than the file (corrupt file)");
+  bool ok = type.valid();
+  std::vector<std::string> out;
+  if (ok) out = read_string_values(type.get(), 1, [&](hid_t mem, void* buf) { return H5Aread(attr.get(), mem, buf); }, ok);
   if (!ok || out.empty()) fail(object, "attribute '" + name + "' is not a readable string");
   return out[0];
 }
 
 double Reader::double_attribute(const std::string& object, const std::string& name) const {
-  if (!has_attribute(object, name)) fail(object, "missing attribute '" + name + "'");
-  Handle attr(H5Aopen_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  Handle attr = open_single_attribute(object, name);
   double value = 0;
   if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0) fail(object, "attribute '" + name + "' is not numeric");
   if (!std::isfinite(value)) fail(object, "attribute '" + name + "' is not finite");

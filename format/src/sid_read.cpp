@@ -163,7 +163,8 @@ Sid read_sid_unprobed(const std::string& path) {
 }  // namespace
 
 Sid read_sid(const std::string& path) {
-  // a corrupt file may crash libhdf5 or make it allocate without bound: a child reads it first
+  // a corrupt file may crash libhdf5 or make it allocate without bound: a child reads it first,
+  // and its verdict on bad input is final
   probe_in_child(path, [&] { read_sid_unprobed(path); });
   return read_sid_unprobed(path);
 }

@@ -8,7 +8,7 @@ namespace isosid::run {
 
 JointConstraints::JointConstraints(const Scene& scene, const std::vector<std::unique_ptr<FloatingBody>>& bodies,
                                    Eigen::Index state_size, const double* y0)
-    : rate_(scene.simulation.joint_stabilization), bodies_(bodies) {
+    : rate_(scene.simulation.joint_stabilization) {
   for (const JointSpec& spec : scene.joints) {
     joints_.emplace_back(spec, bodies, y0, scene.file);
     first_row_.push_back(rows_);

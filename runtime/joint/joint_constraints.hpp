@@ -25,7 +25,6 @@ private:
   std::vector<Eigen::Index> first_row_;   ///< joint k's rows start here in the stacked multipliers
   Eigen::Index rows_ = 0;
   double rate_;                           ///< Baumgarte rate, 1/s
-  const std::vector<std::unique_ptr<FloatingBody>>& bodies_;
   mutable Eigen::VectorXd base_, loaded_, lambda_;
   mutable Eigen::MatrixXd response_;
   mutable GeneralizedForce unit_;

@@ -10,6 +10,10 @@
 
 namespace isosid::format::h5 {
 
+/// The most data a readable file of `file_bytes` can hold, bytes: deflate shrinks data at most
+/// about 1000-fold (1100 with room), plus 1 MiB for small files.
+long double most_data_bytes(std::uintmax_t file_bytes);
+
 /// Owns one HDF5 identifier and closes it with the matching H5*close.
 class Handle {
 public:
@@ -93,12 +97,16 @@ public:
 private:
   Handle open_dataset(const std::string& dataset) const;
   std::vector<double> read_doubles(const std::string& dataset, std::vector<hsize_t>& dims) const;
-  /// Fails unless a dataset of this shape, `bytes` per value, could come from this file:
-  /// deflate shrinks data at most about 1000-fold, so a forged shape is caught before allocation.
+  /// Fails unless a dataset of this shape, `bytes` per value, could come from this file, alone
+  /// and together with the datasets read before it: deflate shrinks data at most about
+  /// 1000-fold, so a forged shape (or many) is caught before allocation.
   void check_fits_file(const std::string& dataset, const std::vector<hsize_t>& dims, std::size_t bytes) const;
+  /// The attribute, checked to exist and to hold exactly one value.
+  Handle open_single_attribute(const std::string& object, const std::string& name) const;
 
   std::string path_;
   std::uintmax_t file_bytes_ = 0;
+  mutable long double claimed_bytes_ = 0;  ///< data read so far (checked against the file size)
   Handle file_;
 };
 

@@ -1,22 +1,29 @@
 // A first read of an untrusted file in a child process. libhdf5 trusts the metadata it reads:
 // a corrupt B-tree or heap can make it crash or allocate without bound before any of our
-// checks runs. The child reads the whole file once; if it is killed by a signal, runs out of
-// its memory allowance or hangs, the file is reported as corrupt and the program goes on.
+// checks runs. The child reads the whole file once, under a memory allowance that scales with
+// the file's size; if it is killed by a signal, runs out of its allowance or hangs, the file is
+// reported as corrupt. If it finds bad input, its message is the program's, and the parent
+// never touches the file.
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <string>
 
 namespace isosid::format {
 
-/// Memory a probe may use beyond what the program already holds, bytes.
-constexpr long long kProbeMemoryBytes = 1LL << 30;
+/// Memory a probe may use beyond what the program already holds and beyond 3x the data the
+/// file can hold (h5::most_data_bytes: the data read, its copy, and room to spare), bytes.
+constexpr long long kProbeBaseMemoryBytes = 128LL << 20;
 /// Seconds a probe may take before the file counts as hanging libhdf5.
 constexpr int kProbeSeconds = 60;
 
-/// Runs `read` (which throws InputError on a bad but intact file) in a forked child. Returns
-/// normally when the child finished, with or without InputError (the caller then reads the
-/// file itself and reports any error with its own message). Throws InputError naming `path`
-/// when the child crashed, exhausted its memory or hung.
+/// The memory allowance of a probe reading a file of `file_bytes`, beyond what the program holds.
+long long probe_memory_bytes(std::uintmax_t file_bytes);
+
+/// Runs `read` in a forked child. Returns normally when the child read the file without error
+/// (the caller then reads it itself, within the memory the child needed). Throws the child's
+/// InputError when it found bad input, and InputError naming `path` when it crashed, exhausted
+/// its memory allowance or hung.
 void probe_in_child(const std::string& path, const std::function<void()>& read);
 
 }  // namespace isosid::format
