@@ -16,6 +16,11 @@ Taylor read_taylor(const h5::Reader& r, const Item& item, std::string_view name 
   Taylor t;
   t.M0 = r.matrix(path + "/M0");
   if (r.exists(path + "/M1")) t.M1 = r.tensor(path + "/M1");
+  // the order the writer declared must be the order stored
+  const double order = r.double_attribute(path, "order");
+  if (order != 0 && order != 1) r.fail(path, "attribute 'order' must be 0 or 1");
+  if ((order == 1) != !t.M1.empty())
+    r.fail(path, std::string("attribute 'order' is ") + (order == 1 ? "1 but there is no M1" : "0 but there is an M1"));
   return t;
 }
 

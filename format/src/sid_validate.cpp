@@ -190,6 +190,10 @@ void check_contact(const Checker& c, const Sid& sid) {
     c.finite(parameter, s.parameter);
     c.require(s.element.size() == n, element, "one entry per point expected");
     c.require(s.element.minCoeff() >= 0, element, "element indices must not be negative");
+    const Index elements = sid.discretization ? sid.discretization->elements_per_level.cast<Index>().sum() : 0;
+    c.require(elements == 0 || s.element.maxCoeff() < elements, element,
+              "element index " + std::to_string(s.element.maxCoeff()) + " beyond the body's " + std::to_string(elements) +
+                  " elements (" + discretization::elements_per_level.at() + ")");
     Sizes sizes(sid.nq(), sid.dim());
     sizes.set(Size::Points, n);
     c.shape(contact::position, s.name, s.position, sizes);

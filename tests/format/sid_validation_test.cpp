@@ -81,6 +81,23 @@ TEST_CASE("reader refuses each kind of bad SID with a message naming the dataset
     const auto m = message_after(dir, [](const std::string& f) { test::replace_integer(f, "/refmod/n_high", 7); });
     CHECK_THAT(m, Contains("/refmod/n_high") && Contains("nq - n_low"));
   }
+  SECTION("a changed bit in a dataset's data (its Fletcher-32 checksum)") {
+    // the value stays finite and the shape right: only the checksum can tell
+    const auto m = message_after(dir, [](const std::string& f) { test::flip_stored_data_bit(f, "/terms/Me/M0"); });
+    CHECK_THAT(m, Contains("/terms/Me/M0") && Contains("cannot be read"));
+  }
+  SECTION("a Taylor order attribute of 2") {
+    const auto m = message_after(dir, [](const std::string& f) { test::set_attribute(f, "/terms/J", "order", 2.0); });
+    CHECK_THAT(m, Contains("/terms/J") && Contains("'order' must be 0 or 1"));
+  }
+  SECTION("a Taylor order attribute that is text") {
+    const auto m = message_after(dir, [](const std::string& f) { test::set_attribute(f, "/terms/J", "order", "one"); });
+    CHECK_THAT(m, Contains("/terms/J") && Contains("'order' is not numeric"));
+  }
+  SECTION("a Taylor order attribute that disagrees with M1") {
+    const auto m = message_after(dir, [](const std::string& f) { test::set_attribute(f, "/terms/J", "order", 0.0); });
+    CHECK_THAT(m, Contains("/terms/J") && Contains("0 but there is an M1"));
+  }
   SECTION("not an HDF5 file") {
     const std::string file = dir.path("text.sid.h5");
     std::ofstream(file) << "this is not HDF5\n";
@@ -124,6 +141,14 @@ TEST_CASE("non-positive mass and other physics checks are refused before writing
   SECTION("frequencies out of order") {
     s.refmod.frequencies_hz.reverseInPlace();
     CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/refmod/frequencies_hz") && Contains("not ascending"));
+  }
+  SECTION("contact element index beyond the body's elements") {
+    s.discretization = format::Discretization{};
+    s.discretization->elements_per_level = Eigen::VectorXi::Constant(1, 8);
+    s.discretization->functions_per_level = Eigen::VectorXi::Constant(1, 20);
+    s.discretization->free_dofs = 40;
+    s.contact_surfaces[0].element(1) = 1 << 30;
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face/element") && Contains("beyond the body's 8 elements"));
   }
   SECTION("Poisson ratio") {
     s.material.poisson_ratio = 0.5;

@@ -58,6 +58,58 @@ void replace_scalar(const std::string& file, const std::string& dataset, double 
   replace_with_scalar(file, dataset, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
 }
 
+namespace {
+void set_attribute_bytes(const std::string& file, const std::string& object, const std::string& name, hid_t type,
+                         const void* value) {
+  const hid_t f = open_rw(file);
+  if (H5Aexists_by_name(f, object.c_str(), name.c_str(), H5P_DEFAULT) > 0)
+    H5Adelete_by_name(f, object.c_str(), name.c_str(), H5P_DEFAULT);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t a = H5Acreate_by_name(f, object.c_str(), name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  H5Awrite(a, type == H5T_IEEE_F64LE ? H5T_NATIVE_DOUBLE : type, value);
+  H5Aclose(a);
+  H5Sclose(space);
+  H5Fclose(f);
+}
+}  // namespace
+
+void set_attribute(const std::string& file, const std::string& object, const std::string& name, double value) {
+  set_attribute_bytes(file, object, name, H5T_IEEE_F64LE, &value);
+}
+
+void set_attribute(const std::string& file, const std::string& object, const std::string& name, const std::string& value) {
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, value.size() + 1);
+  set_attribute_bytes(file, object, name, type, value.c_str());
+  H5Tclose(type);
+}
+
+void flip_stored_data_bit(const std::string& file, const std::string& dataset) {
+  haddr_t address = HADDR_UNDEF;
+  {
+    const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    const hid_t ds = H5Dopen2(f, dataset.c_str(), H5P_DEFAULT);
+    address = H5Dget_offset(ds);  // contiguous data
+    if (address == HADDR_UNDEF) {  // chunked: its first chunk
+      const hid_t space = H5Dget_space(ds);
+      hsize_t offset[3] = {0, 0, 0}, size = 0;
+      unsigned mask = 0;
+      H5Dget_chunk_info(ds, space, 0, offset, &mask, &address, &size);
+      H5Sclose(space);
+    }
+    H5Dclose(ds);
+    H5Fclose(f);
+  }
+  if (address == HADDR_UNDEF) throw std::runtime_error(dataset + ": no stored data to damage");
+  std::fstream io(file, std::ios::binary | std::ios::in | std::ios::out);
+  io.seekg(std::streamoff(address) + 3);
+  char byte = 0;
+  io.read(&byte, 1);
+  byte ^= 1;
+  io.seekp(std::streamoff(address) + 3);
+  io.write(&byte, 1);
+}
+
 void truncate_copy(const std::string& file, const std::string& target, double fraction) {
   std::ifstream in(file, std::ios::binary);
   std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

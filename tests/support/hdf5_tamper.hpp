@@ -13,6 +13,12 @@ void replace_scalar(const std::string& file, const std::string& dataset, double 
 void replace_integer(const std::string& file, const std::string& dataset, long long value);
 /// Removes a dataset or group.
 void remove_object(const std::string& file, const std::string& object);
+/// Sets a numeric attribute (replacing one of that name).
+void set_attribute(const std::string& file, const std::string& object, const std::string& name, double value);
+/// Sets a string attribute (replacing one of that name, of any type).
+void set_attribute(const std::string& file, const std::string& object, const std::string& name, const std::string& value);
+/// Flips the lowest bit of one byte of a dataset's stored data, in place, past libhdf5.
+void flip_stored_data_bit(const std::string& file, const std::string& dataset);
 /// Copies the first `fraction` of the file's bytes to `target`.
 void truncate_copy(const std::string& file, const std::string& target, double fraction);
 
