@@ -4,6 +4,7 @@
 #include "isosid/format/error.hpp"
 #include "isosid/format/hdf5_file.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <fcntl.h>
@@ -71,10 +72,15 @@ long long probe_memory_bytes(std::uintmax_t file_bytes) {
   return bytes > 1e18L ? (long long)1e18 : (long long)bytes;
 }
 
+int probe_seconds(std::uintmax_t file_bytes) {
+  return kProbeBaseSeconds + int(std::min(1e6, double(file_bytes) / kProbeSlowestBytesPerSecond));
+}
+
 void probe_in_child(const std::string& path, const std::function<void()>& read_file) {
   std::error_code ec;
   const std::uintmax_t file_bytes = std::filesystem::file_size(path, ec);
   const long long allowance = probe_memory_bytes(ec ? 0 : file_bytes);
+  const int seconds = probe_seconds(ec ? 0 : file_bytes);
   int message[2];
   if (pipe2(message, O_CLOEXEC) != 0) return;  // no pipe to spare: read unprobed rather than not at all
   const pid_t child = fork();
@@ -113,20 +119,23 @@ void probe_in_child(const std::string& path, const std::function<void()>& read_f
   }
   close(message[1]);
   int status = 0;
-  for (int waited_ms = 0;; waited_ms += 10) {
+  const auto start = std::chrono::steady_clock::now(), deadline = start + std::chrono::seconds(seconds);
+  for (;;) {
     const pid_t done = waitpid(child, &status, WNOHANG);
     if (done == child) break;
     if (done < 0 && errno != EINTR) {
       close(message[0]);
       return;
     }
-    if (waited_ms >= kProbeSeconds * 1000) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= deadline) {
       kill(child, SIGKILL);
       waitpid(child, &status, 0);
       close(message[0]);
-      throw InputError(path, "", "corrupt HDF5 file: reading it did not finish within " + std::to_string(kProbeSeconds) + " s");
+      throw InputError(path, "", "corrupt HDF5 file: reading it did not finish within " + std::to_string(seconds) + " s");
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(waited_ms < 100 ? 1 : 10));
+    // most reads end within milliseconds: poll often at first
+    std::this_thread::sleep_for(std::chrono::milliseconds(now - start < std::chrono::milliseconds(100) ? 1 : 10));
   }
   const std::vector<std::string> error = receive_input_error(message[0]);
   close(message[0]);

@@ -14,11 +14,16 @@ namespace isosid::format {
 /// Memory a probe may use beyond what the program already holds and beyond 3x the data the
 /// file can hold (h5::most_data_bytes: the data read, its copy, and room to spare), bytes.
 constexpr long long kProbeBaseMemoryBytes = 128LL << 20;
-/// Seconds a probe may take before the file counts as hanging libhdf5.
-constexpr int kProbeSeconds = 60;
+/// Seconds a probe may take on any file before it counts as hanging libhdf5, and the read rate
+/// beyond which more time is allowed for a large file (libhdf5 reads and inflates SIDs at
+/// 100+ MB/s here; a corrupt B-tree can make it loop for ever).
+constexpr int kProbeBaseSeconds = 10;
+constexpr double kProbeSlowestBytesPerSecond = 10e6;
 
 /// The memory allowance of a probe reading a file of `file_bytes`, beyond what the program holds.
 long long probe_memory_bytes(std::uintmax_t file_bytes);
+/// The time a probe may take on a file of `file_bytes`, s.
+int probe_seconds(std::uintmax_t file_bytes);
 
 /// Runs `read` in a forked child. Returns normally when the child read the file without error
 /// (the caller then reads it itself, within the memory the child needed). Throws the child's
