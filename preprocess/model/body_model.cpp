@@ -3,15 +3,45 @@
 
 #include "assemble/boundary_quadrature.hpp"
 #include "refine/patch_refinement.hpp"
+#include "isosid/format/error.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 namespace isosid::prep {
 
-NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& r) {
+namespace {
+/// Refuses a refinement that would give more control points than isosid-prep can reduce, before
+/// the knots go in (1000 subdivisions in each direction of a solid are 10^9 points).
+void check_refined_size(const NurbsPatch& p, const std::vector<double>& added, const std::string& file,
+                        const std::string& field) {
+  double total = 1;
+  for (int d = 0; d < p.param_dim(); ++d) total *= double(p.counts()[std::size_t(d)]) + added[std::size_t(d)];
+  if (total > kMaxControlPoints) {
+    char text[256];
+    std::snprintf(text, sizeof text, "gives %.3g control points, more than the %.0f isosid-prep reduces (a finer mesh "
+                  "than any eigen solve here can take): refine less or only near the contact", total, kMaxControlPoints);
+    throw format::InputError(file, field, text);
+  }
+}
+
+/// Distinct knot spans of direction d (spans of zero length excluded).
+int span_count(const NurbsPatch& p, int d) {
+  const KnotVector& U = p.knots[std::size_t(d)];
+  int spans = 0;
+  for (Eigen::Index i = 1; i < U.size(); ++i)
+    if (U(i) > U(i - 1)) ++spans;
+  return spans;
+}
+}  // namespace
+
+NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& r, const std::string& file) {
   NurbsPatch p = coarse;
   for (std::size_t d = 0; d < r.degrees.size(); ++d) elevate_degree(p, int(d), r.degrees[d]);
+  std::vector<double> added(std::size_t(p.param_dim()), 0.0);
+  for (std::size_t d = 0; d < r.subdivisions.size(); ++d) added[d] = double(r.subdivisions[d] - 1) * span_count(p, int(d));
+  check_refined_size(p, added, file, "refinement.subdivisions");
   for (std::size_t d = 0; d < r.subdivisions.size(); ++d) subdivide_uniformly(p, int(d), r.subdivisions[d]);
   // all graded requests are sized on the geometry before grading, then inserted together
   std::vector<std::vector<double>> knots(std::size_t(p.param_dim()));
@@ -19,12 +49,13 @@ NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& r) {
     const auto k = graded_knots(p, g);
     knots[std::size_t(g.direction)].insert(knots[std::size_t(g.direction)].end(), k.begin(), k.end());
   }
-  for (std::size_t d = 0; d < knots.size(); ++d) {
-    auto& k = knots[d];
+  for (auto& k : knots) {
     std::sort(k.begin(), k.end());
     k.erase(std::unique(k.begin(), k.end(), [](double a, double b) { return std::abs(a - b) < 1e-13; }), k.end());
-    insert_knots(p, int(d), k);
   }
+  for (std::size_t d = 0; d < knots.size(); ++d) added[d] = double(knots[d].size());
+  check_refined_size(p, added, file, "refinement.graded");
+  for (std::size_t d = 0; d < knots.size(); ++d) insert_knots(p, int(d), knots[d]);
   return p;
 }
 
@@ -50,7 +81,7 @@ ModelSpec coarse_model_spec(const ModelSpec& spec) {
 }
 
 BodyModel build_body(const ModelSpec& spec) {
-  NurbsPatch refined = refine_patch(spec.patch, spec.refinement);
+  NurbsPatch refined = refine_patch(spec.patch, spec.refinement, spec.file);
   AnalysisSpace space;
   std::optional<Hierarchy> hierarchy;
   if (spec.refinement.hierarchical) {

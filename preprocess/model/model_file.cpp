@@ -295,7 +295,10 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     s.points_per_direction = int(n);
     m.contact_surfaces.push_back(s);
   }
-  for (const TomlView& t : top.tables("node")) {
+  const std::vector<TomlView> node_tables = top.tables("node");
+  if (node_tables.size() > kMaxNodes)
+    node_tables[kMaxNodes].fail("name", "more than " + std::to_string(kMaxNodes) + " nodes: each costs two rows per mode in the SID");
+  for (const TomlView& t : node_tables) {
     t.allow_only({"name", "parameter", "point"});
     NodeSpec n;
     n.name = unique_name(t, nodes);
@@ -303,6 +306,7 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     if (n.at.physical) require_on_body(t, "point", patch, place(patch, n.at), "the point");
     m.nodes.push_back(n);
   }
+  long long stress_points = 0;
   for (const TomlView& t : top.tables("stress_line")) {
     t.allow_only({"name", "from", "to", "from_point", "to_point", "points"});
     StressLineSpec l;
@@ -313,6 +317,9 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     const long long n = t.integer("points", 10);
     if (n < 1 || n > 10000) t.fail("points", "must lie in 1..10000");
     l.points = int(n);
+    stress_points += n;
+    if (stress_points > kMaxStressPoints)
+      t.fail("points", "the stress lines together have more than " + std::to_string(kMaxStressPoints) + " points");
     if (l.from.physical) {  // the ends first, then the segment between them must lie in the body
       const std::vector<BodyPoint> on_body = line_points(patch, l.from, l.to, l.points);
       require_on_body(t, "from_point", patch, on_body.front(), "the point");

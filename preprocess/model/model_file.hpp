@@ -19,6 +19,11 @@ struct FixedComponents {
   std::vector<int> components;      ///< 0 = x, 1 = y, 2 = z
 };
 
+/// Most [[node]] tables a model may have, and most stress points over all its stress lines:
+/// each adds dense rows per mode to the SID and the runtime's output.
+constexpr std::size_t kMaxNodes = 10000;
+constexpr long long kMaxStressPoints = 100000;
+
 struct RefinementSpec {
   std::vector<int> degrees;         ///< target degree per direction (elevation first)
   std::vector<int> subdivisions;    ///< uniform split of every span per direction

@@ -1,6 +1,7 @@
 // The preprocessing pipeline; see prepare.hpp.
 #include "pipeline/prepare.hpp"
 
+#include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "reduce/body_reduction.hpp"
 #include "sid/sid_builder.hpp"
@@ -65,9 +66,14 @@ PreparedBody prepare(const ModelSpec& spec, const PrepareOptions& options, Stage
 ModalAnalysis analyse_modes(const ModelSpec& spec, int n_modes, StageObserver& observer) {
   StageClock clock(observer);
   AssembledBody a = assemble(spec, true, clock);
+  // the eigen solver finds fewer modes than DOFs; more is a request this model cannot meet
+  const int most = a.body.dofs.free_count() - 1;
+  if (n_modes > most)
+    throw format::InputError("", "--modes", "asks for " + std::to_string(n_modes) + " modes, but " + spec.file + " refines to " +
+                                                std::to_string(most + 1) + " free DOFs (at most " + std::to_string(most) + " modes)");
   ModalResult modes = clock.run("eigen", "solving for " + std::to_string(n_modes) + " modes", [&] {
     const double scale = eigenvalue_scale(spec.material.youngs_modulus, spec.material.density, body_size(a.body));
-    return lowest_modes(a.system.K, a.system.M, std::min(n_modes, a.body.dofs.free_count() - 1), scale);
+    return lowest_modes(a.system.K, a.system.M, n_modes, scale);
   });
   return {std::move(a.body), a.scalar_mass.sum(), std::move(modes), clock.timings()};
 }

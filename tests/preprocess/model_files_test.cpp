@@ -110,6 +110,19 @@ TEST_CASE("a valid model file prints its size and frequencies as JSON", "[model]
                              "[[0, 1], [0.5, 1], [1, 1], [0, 0], [0.5, 0], [1, 0]]")).exit_status == 0);
 }
 
+TEST_CASE("a --modes count beyond the model's DOFs is bad input, not a silent cut", "[model]") {
+  const test::ScratchDir dir("model-modes");
+  const std::string file = dir.path("m.model.toml");
+  std::ofstream(file) << kValid;  // 36 DOFs: at most 35 modes
+  const auto most = test::run_program(std::string(ISOSID_PREP_EXE) + " -q --json --modes 35 " + file);
+  REQUIRE(most.exit_status == 0);
+  CHECK(nlohmann::json::parse(most.out)["frequencies_hz"].size() == 35);
+  const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q --json --modes 36 " + file);
+  CHECK(r.exit_status == 2);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_THAT(r.err, Catch::Matchers::Contains("--modes: asks for 36 modes") && Catch::Matchers::Contains("36 free DOFs (at most 35 modes)"));
+}
+
 TEST_CASE("bad model files: exit 2 with one line naming file, field and problem", "[model]") {
   const test::ScratchDir dir("model-bad");
   struct Case {
@@ -169,6 +182,22 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
       {replace(kValid, "[refinement]", "[contact_resolution]\ncontact_radius = 1e-4\nelements_per_radius = 0.5\n[refinement]"),
        "contact_resolution.elements_per_radius: must lie in 1..100"},
       {std::string(kValid) + "[damping]\nkappa = 1e300\n", "damping.kappa: is a damping ratio: must lie in [0, 1]"},
+      // counts that no machine here could reduce or store: refused before any work
+      {replace(kBall, "degrees = [2, 2, 2]", "degrees = [2, 2, 2]\nsubdivisions = [1000, 1000, 1000]"),
+       "refinement.subdivisions: gives 4.02e+09 control points, more than the 2000000"},
+      {[] {
+         std::string text = kValid;
+         for (int i = 0; i <= 10000; ++i) text += "[[node]]\nname = \"n" + std::to_string(i) + "\"\nparameter = [0.5, 0.5]\n";
+         return text;
+       }(),
+       "node[10000].name: more than 10000 nodes"},
+      {[] {
+         std::string text = kValid;
+         for (int i = 0; i <= 10; ++i)
+           text += "[[stress_line]]\nname = \"s" + std::to_string(i) + "\"\nfrom = [0, 0.5]\nto = [1, 0.5]\npoints = 10000\n";
+         return text;
+       }(),
+       "stress_line[10].points: the stress lines together have more than 100000 points"},
       // names end at a NUL in HDF5 and file systems: refused, not cut short
       {replace(kValid, "name = \"block\"", "name = \"blo\\u0000ck\""), "body.name: contains a NUL character"},
   };
