@@ -173,10 +173,16 @@ format::Sid lumped_sid(const LumpedBody& body) {
 
   format::TransferOperator t;
   t.coarse_model_sha256 = "0123abcd";
-  t.coarse_to_fine = body.Phi.topRows(nq).transpose() * 3.0;     // any nq x nc map
-  t.fine_to_coarse = body.Phi.middleRows(nq, nq) * 2.0;          // any nc x nq map
-  t.coarse_to_fine = t.coarse_to_fine.leftCols(nq - 1).eval();
-  t.fine_to_coarse = t.fine_to_coarse.topRows(nq - 1).eval();
+  // any nq x nc and nc x nq maps (nc = nq - 1), taken from Phi's rows cyclically: a body may
+  // have more modes than Phi has rows
+  t.coarse_to_fine.resize(nq, nq - 1);
+  t.fine_to_coarse.resize(nq - 1, nq);
+  const Eigen::Index rows = body.Phi.rows();
+  for (Eigen::Index i = 0; i < nq; ++i)
+    for (Eigen::Index j = 0; j + 1 < nq; ++j) {
+      t.coarse_to_fine(i, j) = 3.0 * body.Phi(j % rows, i);
+      t.fine_to_coarse(j, i) = 2.0 * body.Phi((nq + j) % rows, i);
+    }
   s.transfer = t;
 
   s.provenance = {"lumped.model.toml", "feedbeef", "test", "2026-11-22T00:00:00Z", {{"assembly", 0.5}, {"eigen", 1.25}}};
