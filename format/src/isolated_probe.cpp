@@ -19,14 +19,6 @@
 #include <unistd.h>
 #include <vector>
 
-#if defined(__SANITIZE_ADDRESS__)
-#define ISOSID_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define ISOSID_UNDER_ASAN 1
-#endif
-#endif
-
 #ifdef ISOSID_UNDER_ASAN
 #include <sanitizer/common_interface_defs.h>
 #endif

@@ -16,8 +16,9 @@ namespace {
 /// the knots go in (1000 subdivisions in each direction of a solid are 10^9 points).
 void check_refined_size(const NurbsPatch& p, const std::vector<double>& added, const std::string& file,
                         const std::string& field) {
+  const std::vector<int> counts = p.counts();
   double total = 1;
-  for (int d = 0; d < p.param_dim(); ++d) total *= double(p.counts()[std::size_t(d)]) + added[std::size_t(d)];
+  for (std::size_t d = 0; d < counts.size(); ++d) total *= double(counts[d]) + added[d];
   if (total > kMaxControlPoints) {
     char text[256];
     std::snprintf(text, sizeof text, "gives %.3g control points, more than the %.0f isosid-prep reduces (a finer mesh "
@@ -26,21 +27,15 @@ void check_refined_size(const NurbsPatch& p, const std::vector<double>& added, c
   }
 }
 
-/// Distinct knot spans of direction d (spans of zero length excluded).
-int span_count(const NurbsPatch& p, int d) {
-  const KnotVector& U = p.knots[std::size_t(d)];
-  int spans = 0;
-  for (Eigen::Index i = 1; i < U.size(); ++i)
-    if (U(i) > U(i - 1)) ++spans;
-  return spans;
-}
 }  // namespace
 
 NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& r, const std::string& file) {
   NurbsPatch p = coarse;
   for (std::size_t d = 0; d < r.degrees.size(); ++d) elevate_degree(p, int(d), r.degrees[d]);
   std::vector<double> added(std::size_t(p.param_dim()), 0.0);
-  for (std::size_t d = 0; d < r.subdivisions.size(); ++d) added[d] = double(r.subdivisions[d] - 1) * span_count(p, int(d));
+  // subdivide_uniformly splits each non-empty span: (parts - 1) new knots per span
+  for (std::size_t d = 0; d < r.subdivisions.size(); ++d)
+    added[d] = double(r.subdivisions[d] - 1) * double(unique_knots(p.knots[d]).size() - 1);
   check_refined_size(p, added, file, "refinement.subdivisions");
   for (std::size_t d = 0; d < r.subdivisions.size(); ++d) subdivide_uniformly(p, int(d), r.subdivisions[d]);
   // all graded requests are sized on the geometry before grading, then inserted together

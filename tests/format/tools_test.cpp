@@ -1,4 +1,5 @@
 // isosid-info and isosid-diff as a user runs them: output, JSON keys and exit statuses.
+#include "isosid/format/isolated_probe.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "support/hdf5_tamper.hpp"
 #include "support/lumped_sid.hpp"
@@ -8,14 +9,6 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
-
-#if defined(__SANITIZE_ADDRESS__)
-#define ISOSID_TEST_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define ISOSID_TEST_UNDER_ASAN 1
-#endif
-#endif
 
 using namespace isosid;
 using Catch::Matchers::Contains;
@@ -87,7 +80,7 @@ TEST_CASE("the tools survive corrupt SIDs that crashed libhdf5: exit 2, one line
       CHECK_THAT(r.err, Contains(file) && Contains(problem));
     }
   }
-#ifndef ISOSID_TEST_UNDER_ASAN  // AddressSanitizer leaves the probe without a memory limit
+#ifndef ISOSID_UNDER_ASAN  // AddressSanitizer leaves the probe without a memory limit
   // the largest resident set of any program above (and its probe): the 64 KB files must stay
   // far below the 500 MB the issue allows (they take 7.7 GB and 1.8 GB unchecked)
   rusage children{};

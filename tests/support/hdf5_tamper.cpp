@@ -59,14 +59,14 @@ void replace_scalar(const std::string& file, const std::string& dataset, double 
 }
 
 namespace {
-void set_attribute_bytes(const std::string& file, const std::string& object, const std::string& name, hid_t type,
-                         const void* value) {
+void set_attribute_bytes(const std::string& file, const std::string& object, const std::string& name, hid_t file_type,
+                         hid_t mem_type, const void* value) {
   const hid_t f = open_rw(file);
   if (H5Aexists_by_name(f, object.c_str(), name.c_str(), H5P_DEFAULT) > 0)
     H5Adelete_by_name(f, object.c_str(), name.c_str(), H5P_DEFAULT);
   const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t a = H5Acreate_by_name(f, object.c_str(), name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(a, type == H5T_IEEE_F64LE ? H5T_NATIVE_DOUBLE : type, value);
+  const hid_t a = H5Acreate_by_name(f, object.c_str(), name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  H5Awrite(a, mem_type, value);
   H5Aclose(a);
   H5Sclose(space);
   H5Fclose(f);
@@ -74,13 +74,13 @@ void set_attribute_bytes(const std::string& file, const std::string& object, con
 }  // namespace
 
 void set_attribute(const std::string& file, const std::string& object, const std::string& name, double value) {
-  set_attribute_bytes(file, object, name, H5T_IEEE_F64LE, &value);
+  set_attribute_bytes(file, object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
 }
 
 void set_attribute(const std::string& file, const std::string& object, const std::string& name, const std::string& value) {
   const hid_t type = H5Tcopy(H5T_C_S1);
   H5Tset_size(type, value.size() + 1);
-  set_attribute_bytes(file, object, name, type, value.c_str());
+  set_attribute_bytes(file, object, name, type, type, value.c_str());
   H5Tclose(type);
 }
 

@@ -9,6 +9,16 @@
 #include <functional>
 #include <string>
 
+// Under AddressSanitizer the probe sets no memory limit (ASan reserves terabytes of address
+// space up front); tests that measure the probe's memory ask this too.
+#if defined(__SANITIZE_ADDRESS__)
+#define ISOSID_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define ISOSID_UNDER_ASAN 1
+#endif
+#endif
+
 namespace isosid::format {
 
 /// Memory a probe may use beyond what the program already holds and beyond 3x the data the
