@@ -3,9 +3,12 @@
 
 #include "isosid/format/bspline_basis.hpp"
 #include "isosid/format/error.hpp"
+#include "isosid/format/patch_side.hpp"
 #include "isosid/format/sid_layout.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 namespace isosid::format {
@@ -178,6 +181,42 @@ void check_master_patches(const Checker& c, const Sid& sid) {
   });
 }
 
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", v);
+  return text;
+}
+
+/// Every point lies on the contact surface's side of the body's patch: its normal parameter
+/// is the same for all points, its tangential ones inside the master patch (the side itself).
+void check_points_on_side(const Checker& c, const Sid& sid, const ContactSurface& s) {
+  const std::string parameter = contact::parameter.at(s.name);
+  const int pd = sid.dim();  // bodies are volume-parametrized: one parameter per spatial direction
+  c.require(s.parameter.cols() == pd, parameter, "expected " + std::to_string(pd) + " columns (one per parametric direction)");
+  const std::optional<PatchSide> side = side_from_name(s.side, pd);
+  c.require(side.has_value(), contact::side.at(s.name), "'" + s.side + "' is not a side of the body's patch (xi0, xi1, eta0, ...)");
+  const Index d = side->direction;
+  // the side's parameter is the knot vector's end value, copied, not computed: equal to round-off
+  const double on_side = s.parameter(0, d), tol_side = 1e-12 * std::max(1.0, std::abs(on_side));
+  for (Index g = 0; g < s.points(); ++g)
+    c.require(std::abs(s.parameter(g, d) - on_side) <= tol_side, parameter,
+              "point " + std::to_string(g) + " is not on side " + s.side + ": " + direction_name(int(d)) + " = " +
+                  number(s.parameter(g, d)) + ", point 0 has " + number(on_side));
+  const MasterPatch* m = find_master_patch(sid, s.master_patch);
+  if (!m) return;
+  c.require(int(m->knots.size()) == pd - 1, master::degrees.at(m->name),
+            "a side of a " + std::to_string(pd) + "-parameter patch needs " + std::to_string(pd - 1) + " parametric direction(s)");
+  for (int t = 0, k = 0; t < pd; ++t) {
+    if (t == d) continue;
+    const Eigen::VectorXd& U = m->knots[std::size_t(k++)];
+    const double lo = U(0), hi = U(U.size() - 1), tol = 1e-9 * (hi - lo);  // Gauss points lie strictly inside
+    for (Index g = 0; g < s.points(); ++g)
+      c.require(s.parameter(g, t) >= lo - tol && s.parameter(g, t) <= hi + tol, parameter,
+                "point " + std::to_string(g) + ": " + direction_name(t) + " = " + number(s.parameter(g, t)) +
+                    " outside the side's range [" + number(lo) + ", " + number(hi) + "] (" + master::group.at(m->name) + ")");
+  }
+}
+
 void check_contact(const Checker& c, const Sid& sid) {
   check_list(c, contact::list, sid.contact_surfaces, [&](const ContactSurface& s) {
     const Index n = s.points();
@@ -205,6 +244,7 @@ void check_contact(const Checker& c, const Sid& sid) {
     if (!s.master_patch.empty())
       c.require(find_master_patch(sid, s.master_patch) != nullptr, contact::group.at(s.name),
                 "names master patch '" + s.master_patch + "', which is not in " + master::list.at());
+    check_points_on_side(c, sid, s);
   });
 }
 

@@ -9,23 +9,6 @@
 
 namespace isosid::prep {
 
-namespace {
-const char* kDirectionNames[3] = {"xi", "eta", "zeta"};
-}
-
-const char* direction_name(int d) { return kDirectionNames[d]; }
-
-std::string side_name(PatchSide side) {
-  return std::string(kDirectionNames[side.direction]) + std::to_string(side.end);
-}
-
-std::optional<PatchSide> side_from_name(const std::string& name, int param_dim) {
-  for (int d = 0; d < param_dim; ++d)
-    for (int e = 0; e < 2; ++e)
-      if (name == side_name({d, e})) return PatchSide{d, e};
-  return std::nullopt;
-}
-
 std::vector<int> NurbsPatch::counts() const {
   std::vector<int> n;
   for (std::size_t d = 0; d < degrees.size(); ++d) n.push_back(basis_count(knots[d], degrees[d]));

@@ -2,6 +2,7 @@
 // boundary sides. Control points are stored with the first parametric direction fastest.
 #pragma once
 #include "isosid/format/bspline_basis.hpp"
+#include "isosid/format/patch_side.hpp"
 
 #include <Eigen/Dense>
 #include <map>
@@ -26,19 +27,11 @@ inline double greville_abscissa(const KnotVector& U, int p, int i) { return U.se
 /// Values of all n basis functions of (U, p) at u (length n, mostly zero).
 Eigen::VectorXd basis_row(const KnotVector& U, int p, double u);
 
-/// A boundary side: the face where parameter `direction` is at its lower (end 0) or upper (end 1) bound.
-struct PatchSide {
-  int direction = 0;
-  int end = 0;
-  bool operator==(const PatchSide&) const = default;
-};
-
-/// Name of parametric direction d: xi, eta, zeta.
-const char* direction_name(int d);
-
-/// Canonical side names: xi0, xi1, eta0, eta1, zeta0, zeta1.
-std::string side_name(PatchSide side);
-std::optional<PatchSide> side_from_name(const std::string& name, int param_dim);
+// patch sides and their names live in format/ (the SID validator checks contact points against them)
+using format::direction_name;
+using format::PatchSide;
+using format::side_from_name;
+using format::side_name;
 
 struct NurbsPatch {
   std::vector<int> degrees;            ///< one per parametric direction

@@ -150,6 +150,19 @@ TEST_CASE("non-positive mass and other physics checks are refused before writing
     s.contact_surfaces[0].element(1) = 1 << 30;
     CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face/element") && Contains("beyond the body's 8 elements"));
   }
+  SECTION("contact point outside its side's parameter range") {
+    s.contact_surfaces[0].parameter(2, 0) = 1.7;  // the side spans xi in [0, 1]
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face/parameter") && Contains("point 2: xi = 1.7") &&
+                                                       Contains("outside the side's range [0, 1] (/master/face)"));
+  }
+  SECTION("contact point off its side") {
+    s.contact_surfaces[0].parameter(3, 2) = 0.25;  // zeta0: every point has zeta = 0
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face/parameter") && Contains("point 3 is not on side zeta0"));
+  }
+  SECTION("contact side that is not a side") {
+    s.contact_surfaces[0].side = "bottom";
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face") && Contains("'bottom' is not a side"));
+  }
   SECTION("Poisson ratio") {
     s.material.poisson_ratio = 0.5;
     CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/body/poisson_ratio"));

@@ -140,7 +140,7 @@ format::Sid lumped_sid(const LumpedBody& body) {
   // contact points: the first four points; master patch: a bilinear 2x2 patch on points 0..3
   format::ContactSurface cs;
   cs.name = "face";
-  cs.side = "bottom";
+  cs.side = "zeta0";  // the points have zeta = 0
   cs.master_patch = "face";
   const Index np = 4;
   cs.parameter = MatrixXd(np, 3);

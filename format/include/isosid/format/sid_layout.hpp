@@ -167,7 +167,7 @@ inline constexpr Item list{"/contact", {}, Kind::Group, kScalar, "", Presence::R
                            "Gauss points of contact boundaries, where the runtime evaluates penalty contact"};
 inline constexpr Item group{"/contact/<name>", {}, Kind::Group, kScalar, "", Presence::Optional, "one contact surface"};
 inline constexpr Item side{"/contact/<name>", "side", Kind::StringAttribute, kScalar, "", Presence::Required,
-                           "the patch side it lies on, e.g. `bottom`"};
+                           "the patch side its points lie on: xi0, xi1, eta0, eta1, zeta0 or zeta1 (direction and end)"};
 inline constexpr Item master_patch{"/contact/<name>", "master_patch", Kind::StringAttribute, kScalar, "",
                                    Presence::Required, "the master patch of the same boundary (in /master), or empty"};
 inline constexpr Item parameter{"/contact/<name>/parameter", {}, Kind::Float64,
