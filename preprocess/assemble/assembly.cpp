@@ -6,10 +6,10 @@
 
 namespace isosid::prep {
 
-SystemMatrices assemble_system(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
+SystemMatrices assemble_system(const AnalysisSpace& space, const DofMap& dofs, const BodyElasticity& elasticity,
                                int extra_points) {
   const StiffnessIntegrand stiffness(elasticity);
-  const MassIntegrand mass(elasticity.density());
+  const MassIntegrand mass(elasticity);
   const ElementPattern coupled(space, dofs, Unknowns::FreeDofs, Coupling::AllComponents);
   const ElementPattern per_component(space, dofs, Unknowns::FreeDofs, Coupling::SameComponent);
   std::vector<SparseMatrix> m =
@@ -17,20 +17,20 @@ SystemMatrices assemble_system(const AnalysisSpace& space, const DofMap& dofs, c
   return {std::move(m[0]), std::move(m[1])};
 }
 
-SparseMatrix assemble_scalar_mass(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
+SparseMatrix assemble_scalar_mass(const AnalysisSpace& space, const DofMap& dofs, const BodyElasticity& elasticity,
                                   int extra_points) {
-  const MassIntegrand mass(elasticity.density());
+  const MassIntegrand mass(elasticity);
   const ElementPattern nodes(space, dofs, Unknowns::Nodes, Coupling::AllComponents);
   return std::move(assemble_matrices(space, elasticity, {{mass, nodes}}, extra_points)[0]);
 }
 
-Eigen::VectorXd assemble_traction(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
-                                  PatchSide side,
+Eigen::VectorXd assemble_traction(const AnalysisSpace& space, const DofMap& dofs, const BodyElasticity& elasticity,
+                                  int patch, PatchSide side,
                                   const std::function<Eigen::VectorXd(const Eigen::VectorXd&, const Eigen::VectorXd&)>& t) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs.free_count());
   const int dim = dofs.dim();
   std::vector<int> free;
-  for (const BoundaryPoint& bp : boundary_points(space, elasticity, side)) {
+  for (const BoundaryPoint& bp : boundary_points(space, elasticity, patch, side)) {
     const Eigen::VectorXd traction = t(bp.x, bp.normal);
     dofs.element_free_dofs(space.elements[bp.element], free);
     for (int i = 0; i < int(free.size()); ++i)

@@ -9,7 +9,7 @@
 
 namespace isosid::prep {
 
-std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Elasticity& elasticity, PatchSide side,
+std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const BodyElasticity& elasticity, int patch, PatchSide side,
                                            int points_per_direction, const SideInterval& interval) {
   const int pd = space.param_dim();
   std::vector<int> tangential;
@@ -27,7 +27,7 @@ std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Ela
   std::vector<BoundaryPoint> out;
   for (int e = 0; e < int(space.elements.size()); ++e) {
     const Element& el = space.elements[e];
-    if (!space.on_side(el, side)) continue;
+    if (el.patch != patch || !space.on_side(el, side)) continue;
     // reference sub-range [t0, t1] of each tangential direction (the clipped interval)
     std::vector<double> t0(tangential.size(), 0.0), t1(tangential.size(), 1.0);
     bool empty = false;
@@ -70,7 +70,7 @@ std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Ela
         bp.xi = v.xi;
         bp.x = v.x;
         bp.normal = n.normalized();
-        bp.weight = w * jac * elasticity.measure(v.x);
+        bp.weight = w * jac * elasticity.of(el).measure(v.x);
         bp.R = v.R;
         out.push_back(std::move(bp));
       }

@@ -2,7 +2,7 @@
 // weights (length x thickness, length x 2 pi r, or area): for tractions and contact surfaces.
 #pragma once
 #include "space/analysis_space.hpp"
-#include "assemble/elasticity.hpp"
+#include "assemble/body_elasticity.hpp"
 
 #include <array>
 #include <vector>
@@ -21,10 +21,10 @@ struct BoundaryPoint {
 using SideInterval = std::vector<std::array<double, 2>>;
 
 /// `points_per_direction` Gauss points in each tangential direction of every element on the
-/// side (p+1 of that direction when 0). With an interval, each element's tangential range is
+/// side of the patch (p+1 of that direction when 0). With an interval, each element's tangential range is
 /// clipped to it and the rule mapped onto the intersection, so the points integrate exactly
 /// over the interval.
-std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const Elasticity& elasticity, PatchSide side,
+std::vector<BoundaryPoint> boundary_points(const AnalysisSpace& space, const BodyElasticity& elasticity, int patch, PatchSide side,
                                            int points_per_direction = 0, const SideInterval& interval = {});
 
 }  // namespace isosid::prep

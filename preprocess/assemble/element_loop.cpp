@@ -39,7 +39,7 @@ void spread_over_components(const Eigen::MatrixXd& scalar, int dim, Eigen::Matri
 
 }  // namespace
 
-std::vector<SparseMatrix> assemble_matrices(const AnalysisSpace& space, const Elasticity& elasticity,
+std::vector<SparseMatrix> assemble_matrices(const AnalysisSpace& space, const BodyElasticity& elasticity,
                                             const std::vector<MatrixTerm>& terms, int extra_points) {
   const ReferenceRule rule = reference_rule(space, extra_points);
   const int n_elements = int(space.elements.size()), dim = elasticity.dim();
@@ -57,7 +57,8 @@ std::vector<SparseMatrix> assemble_matrices(const AnalysisSpace& space, const El
     for (int e = 0; e < n_elements; ++e) {
       const Element& el = space.elements[e];
       evaluator.evaluate(el, rule.basis, points.values);
-      map_to_physical(space.parametric_size(el), rule, elasticity, points);
+      points.patch = el.patch;
+      map_to_physical(space.parametric_size(el), rule, elasticity.of(el), points);
       for (std::size_t k = 0; k < terms.size(); ++k) {
         const MatrixTerm& t = terms[k];
         t.integrand.element_matrix(points, local);

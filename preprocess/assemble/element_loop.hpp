@@ -17,7 +17,7 @@ struct MatrixTerm {
 
 /// Assembles every term in one pass over the elements with p+1+extra_points Gauss points per
 /// direction; the matrices come back in the order of the terms.
-std::vector<SparseMatrix> assemble_matrices(const AnalysisSpace& space, const Elasticity& elasticity,
+std::vector<SparseMatrix> assemble_matrices(const AnalysisSpace& space, const BodyElasticity& elasticity,
                                             const std::vector<MatrixTerm>& terms, int extra_points = 0);
 
 }  // namespace isosid::prep

@@ -5,7 +5,8 @@ namespace isosid::prep {
 
 void StiffnessIntegrand::element_matrix(const ElementPoints& p, Eigen::MatrixXd& local) const {
   const Eigen::MatrixXd& R = p.values.R;
-  const int nf = int(R.rows()), n = int(R.cols()), d = elasticity_.dim(), nc = elasticity_.channel_count();
+  const Elasticity& elasticity = elasticity_.of_patch(p.patch);
+  const int nf = int(R.rows()), n = int(R.cols()), d = elasticity.dim(), nc = elasticity.channel_count();
   // G(q, c*nf + f): channel c of function f at point q
   Eigen::MatrixXd G(n, nf * nc);
   for (int c = 0; c < d; ++c) G.middleCols(c * nf, nf) = p.dR_dx[c].transpose();
@@ -15,7 +16,7 @@ void StiffnessIntegrand::element_matrix(const ElementPoints& p, Eigen::MatrixXd&
   const Eigen::MatrixXd weighted = p.weight.asDiagonal() * G;
   const Eigen::MatrixXd channel_products = G.transpose() * weighted;
   // K(f*d + a, g*d + b) = sum over channel pairs of E(c*d + a, c2*d + b) * products(c*nf + f, c2*nf + g)
-  const Eigen::MatrixXd& E = elasticity_.channel_stiffness();
+  const Eigen::MatrixXd& E = elasticity.channel_stiffness();
   const int size = nf * d;
   local.setZero(size, size);
   using Strided = Eigen::Map<Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>>;
@@ -32,7 +33,7 @@ void StiffnessIntegrand::element_matrix(const ElementPoints& p, Eigen::MatrixXd&
 }
 
 void MassIntegrand::element_matrix(const ElementPoints& p, Eigen::MatrixXd& local) const {
-  const Eigen::MatrixXd weighted = p.values.R * (density_ * p.weight).asDiagonal();
+  const Eigen::MatrixXd weighted = p.values.R * (elasticity_.of_patch(p.patch).density() * p.weight).asDiagonal();
   local.noalias() = weighted * p.values.R.transpose();
 }
 

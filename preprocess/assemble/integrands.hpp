@@ -1,7 +1,7 @@
 // Element integrands: each turns the evaluated Gauss points of one element into its local
 // matrix; the element loop (element_loop.hpp) does the rest (quadrature, threads, scatter).
 #pragma once
-#include "assemble/elasticity.hpp"
+#include "assemble/body_elasticity.hpp"
 #include "space/element_evaluator.hpp"
 
 #include <Eigen/Dense>
@@ -14,6 +14,7 @@ struct ElementPoints {
   ElementValues values;                  ///< R, x and parametric derivatives, one column per point
   std::array<Eigen::MatrixXd, 3> dR_dx;  ///< per physical direction: nf x points
   Eigen::VectorXd weight;                ///< Gauss weight x element size x |det J| x measure factor
+  int patch = 0;                         ///< the element's patch: whose material applies
 };
 
 class ElementIntegrand {
@@ -30,23 +31,23 @@ public:
 /// one GEMM over all points per element instead of B^T D B per point.
 class StiffnessIntegrand : public ElementIntegrand {
 public:
-  explicit StiffnessIntegrand(const Elasticity& elasticity) : elasticity_(elasticity) {}
+  explicit StiffnessIntegrand(const BodyElasticity& elasticity) : elasticity_(elasticity) {}
   int components() const override { return elasticity_.dim(); }
   void element_matrix(const ElementPoints& p, Eigen::MatrixXd& local) const override;
 
 private:
-  const Elasticity& elasticity_;
+  const BodyElasticity& elasticity_;
 };
 
 /// Scalar mass rho int R_i R_j dV (consistent mass on each component, or over nodes).
 class MassIntegrand : public ElementIntegrand {
 public:
-  explicit MassIntegrand(double density) : density_(density) {}
+  explicit MassIntegrand(const BodyElasticity& elasticity) : elasticity_(elasticity) {}
   int components() const override { return 1; }
   void element_matrix(const ElementPoints& p, Eigen::MatrixXd& local) const override;
 
 private:
-  double density_;
+  const BodyElasticity& elasticity_;
 };
 
 }  // namespace isosid::prep

@@ -5,7 +5,7 @@
 
 namespace isosid::prep {
 
-PointOperator point_operator(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
+PointOperator point_operator(const AnalysisSpace& space, const DofMap& dofs, const BodyElasticity& elasticity,
                              const Element& element, const double* t) {
   const ElementEvaluator ev(space);
   PointValues v;
@@ -20,15 +20,15 @@ PointOperator point_operator(const AnalysisSpace& space, const DofMap& dofs, con
     for (int a = 0; a < dim; ++a) op.N(a, f * dim + a) = v.R(f);
   op.R = v.R;
   op.dR_dx = v.dR_dxi * v.J.inverse();
-  elasticity.strain_operator(v.R, op.dR_dx, v.x, op.B);
+  elasticity.of(element).strain_operator(v.R, op.dR_dx, v.x, op.B);
   return op;
 }
 
-bool locate(const AnalysisSpace& space, const Eigen::VectorXd& xi, int& element, double* t) {
+bool locate(const AnalysisSpace& space, int patch, const Eigen::VectorXd& xi, int& element, double* t) {
   const int pd = space.param_dim();
   for (int e = 0; e < int(space.elements.size()); ++e) {
     const Element& el = space.elements[e];
-    bool inside = true;
+    bool inside = el.patch == patch;
     for (int d = 0; d < pd && inside; ++d) inside = xi(d) >= el.lo(d) && xi(d) <= el.hi(d);
     if (!inside) continue;
     element = e;
@@ -38,11 +38,11 @@ bool locate(const AnalysisSpace& space, const Eigen::VectorXd& xi, int& element,
   return false;
 }
 
-std::optional<PointOperator> point_operator_at(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
-                                               const Eigen::VectorXd& xi) {
+std::optional<PointOperator> point_operator_at(const AnalysisSpace& space, const DofMap& dofs, const BodyElasticity& elasticity,
+                                               int patch, const Eigen::VectorXd& xi) {
   int e = 0;
   double t[3] = {0, 0, 0};
-  if (!locate(space, xi, e, t)) return std::nullopt;
+  if (!locate(space, patch, xi, e, t)) return std::nullopt;
   return point_operator(space, dofs, elasticity, space.elements[e], t);
 }
 

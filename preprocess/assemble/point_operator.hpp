@@ -4,7 +4,7 @@
 #pragma once
 #include "space/analysis_space.hpp"
 #include "space/dof_map.hpp"
-#include "assemble/elasticity.hpp"
+#include "assemble/body_elasticity.hpp"
 
 #include <optional>
 #include <vector>
@@ -28,16 +28,16 @@ struct PointOperator {
   Eigen::MatrixXd gather(const Eigen::MatrixXd& nodal) const;
 };
 
-PointOperator point_operator(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
+PointOperator point_operator(const AnalysisSpace& space, const DofMap& dofs, const BodyElasticity& elasticity,
                              const Element& element, const double* t);
 
-/// The element containing patch parameter xi and the reference coordinates of xi in it;
-/// returns false if xi lies outside the patch.
-bool locate(const AnalysisSpace& space, const Eigen::VectorXd& xi, int& element, double* t);
+/// The element of `patch` containing patch parameter xi and the reference coordinates of xi in
+/// it; returns false if xi lies outside the patch.
+bool locate(const AnalysisSpace& space, int patch, const Eigen::VectorXd& xi, int& element, double* t);
 
-/// The point operator at patch parameter xi (locate, then point_operator); empty outside the patch.
-std::optional<PointOperator> point_operator_at(const AnalysisSpace& space, const DofMap& dofs, const Elasticity& elasticity,
-                                               const Eigen::VectorXd& xi);
+/// The point operator at parameter xi of `patch` (locate, then point_operator); empty outside the patch.
+std::optional<PointOperator> point_operator_at(const AnalysisSpace& space, const DofMap& dofs, const BodyElasticity& elasticity,
+                                               int patch, const Eigen::VectorXd& xi);
 
 /// Expands a solution on the free DOFs to all nodal DOFs (fixed components get `fixed_values`
 /// if given, else zero).

@@ -58,9 +58,18 @@ double patch_size(const NurbsPatch& patch) {
   return (patch.points.colwise().maxCoeff() - patch.points.colwise().minCoeff()).norm();
 }
 
-std::vector<int> side_nodes(const BodyModel& body, PatchSide side) {
+double patches_size(const std::vector<NurbsPatch>& patches) {
+  Eigen::VectorXd lo = patches.front().points.colwise().minCoeff(), hi = patches.front().points.colwise().maxCoeff();
+  for (const NurbsPatch& p : patches) {
+    lo = lo.cwiseMin(p.points.colwise().minCoeff().transpose());
+    hi = hi.cwiseMax(p.points.colwise().maxCoeff().transpose());
+  }
+  return (hi - lo).norm();
+}
+
+std::vector<int> side_nodes(const BodyModel& body, int patch, PatchSide side) {
   std::set<int> nodes;
-  for (const BoundaryPoint& bp : boundary_points(body.space, body.elasticity, side)) {
+  for (const BoundaryPoint& bp : boundary_points(body.space, body.elasticity, patch, side)) {
     const Element& e = body.space.elements[std::size_t(bp.element)];
     for (std::size_t k = 0; k < e.functions.size(); ++k)
       if (std::abs(bp.R(Eigen::Index(k))) > 1e-12) nodes.insert(body.dofs.node_of(e.functions[k]));
@@ -70,40 +79,51 @@ std::vector<int> side_nodes(const BodyModel& body, PatchSide side) {
 
 ModelSpec coarse_model_spec(const ModelSpec& spec) {
   ModelSpec coarse = spec;
-  coarse.refinement.hierarchical.reset();
+  for (PatchSpec& p : coarse.patches) p.refinement.hierarchical.reset();
   coarse.reduction.method = "modal";
   return coarse;
 }
 
 BodyModel build_body(const ModelSpec& spec) {
-  NurbsPatch refined = refine_patch(spec.patch, spec.refinement, spec.file);
+  std::vector<PatchInterface> interfaces = find_interfaces(spec.patches, spec.file);
+  std::vector<NurbsPatch> refined;
+  for (const PatchSpec& p : spec.patches) refined.push_back(refine_patch(p.patch, p.refinement, spec.file));
+  make_conforming(refined, interfaces);
   AnalysisSpace space;
   std::optional<Hierarchy> hierarchy;
-  if (spec.refinement.hierarchical) {
-    Hierarchy h{hierarchical_mesh(refined, *spec.refinement.hierarchical, spec.file), {}, {}, {}};
-    HierarchicalSpace thb = hierarchical_space(refined, h.mesh);
+  const RefinementSpec& first = spec.patches.front().refinement;
+  if (first.hierarchical) {  // bodies of one patch (the model file refuses it in several)
+    Hierarchy h{hierarchical_mesh(refined.front(), *first.hierarchical, spec.file), {}, {}, {}};
+    HierarchicalSpace thb = hierarchical_space(refined.front(), h.mesh);
     space = std::move(thb.space);
     h.functions_per_level = std::move(thb.functions_per_level);
     h.elements_per_level = std::move(thb.elements_per_level);
     h.prolongation = std::move(thb.prolongation);
     hierarchy = std::move(h);
   } else {
-    space = tensor_space(refined);
+    std::vector<AnalysisSpace> spaces;
+    for (const NurbsPatch& p : refined) spaces.push_back(tensor_space(p));
+    space = join_spaces(std::move(spaces));
   }
-  const double size = patch_size(refined);
+  const double size = patches_size(refined);
   const int dim = format::spatial_dim(spec.analysis);
-  std::vector<PatchSide> point_sides;
-  for (int d = 0; d < refined.param_dim(); ++d)
-    for (int end = 0; end < 2; ++end)
-      if (int(refined.collapsed_directions({d, end}).size()) == refined.param_dim() - 1) point_sides.push_back({d, end});
+  std::vector<std::pair<int, PatchSide>> point_sides;
+  for (int k = 0; k < int(refined.size()); ++k) {
+    const NurbsPatch& p = refined[std::size_t(k)];
+    for (int d = 0; d < p.param_dim(); ++d)
+      for (int end = 0; end < 2; ++end)
+        if (int(p.collapsed_directions({d, end}).size()) == p.param_dim() - 1) point_sides.push_back({k, {d, end}});
+  }
   DofMap dofs(space, dim, 1e-10 * size, point_sides);
-  BodyModel body{spec, std::move(refined), std::move(space), std::move(hierarchy),
-                 Elasticity(spec.analysis, spec.material, spec.thickness), std::move(dofs)};
+  std::vector<Elasticity> materials;
+  for (const PatchSpec& p : spec.patches) materials.emplace_back(spec.analysis, p.material, spec.thickness);
+  BodyModel body{spec, std::move(refined), std::move(interfaces), std::move(space), std::move(hierarchy),
+                 BodyElasticity(std::move(materials)), std::move(dofs)};
   if (spec.analysis == format::AnalysisType::Axisymmetric)  // radial displacement vanishes on the axis
     for (int n = 0; n < body.dofs.node_count(); ++n)
       if (std::abs(body.dofs.node_points()(n, 0)) <= 1e-10 * size) body.dofs.fix(n, 0);
   for (const FixedComponents& f : spec.fixed)
-    for (int node : side_nodes(body, *body.refined.side(f.side)))
+    for (int node : side_nodes(body, f.patch, *body.refined[std::size_t(f.patch)].side(f.side)))
       for (int a : f.components) body.dofs.fix(node, a);
   return body;
 }

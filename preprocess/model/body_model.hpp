@@ -4,8 +4,9 @@
 #include "space/analysis_space.hpp"
 #include "thb/hierarchical_space.hpp"
 #include "space/dof_map.hpp"
-#include "assemble/elasticity.hpp"
+#include "assemble/body_elasticity.hpp"
 #include "model/model_file.hpp"
+#include "model/patch_interfaces.hpp"
 
 #include <memory>
 #include <optional>
@@ -21,15 +22,17 @@ struct Hierarchy {
 
 struct BodyModel {
   ModelSpec spec;
-  NurbsPatch refined;              ///< the globally refined tensor patch (level 0 of a hierarchy)
-  AnalysisSpace space;
+  /// the globally refined tensor patches, as spec.patches (level 0 of a hierarchy)
+  std::vector<NurbsPatch> refined;
+  std::vector<PatchInterface> interfaces;
+  AnalysisSpace space;             ///< all patches: elements carry their patch index
   std::optional<Hierarchy> hierarchy;
-  Elasticity elasticity;
-  DofMap dofs;
+  BodyElasticity elasticity;       ///< per patch
+  DofMap dofs;                     ///< coincident control points merged: interfaces join here
 };
 
-/// Refines the spec's patch (elevate, subdivide, grade, then hierarchically if requested),
-/// builds the space and the DOF map.
+/// Refines the spec's patches (elevate, subdivide, grade, then hierarchically if requested),
+/// makes them conform on their interfaces, builds the space and the DOF map.
 BodyModel build_body(const ModelSpec& spec);
 
 /// The coarse model a THB model refines (seed 001): the spec without its hierarchical
@@ -46,9 +49,11 @@ NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& refineme
 
 /// Diagonal of a control net's bounding box: a body's size for scales and tolerances.
 double patch_size(const NurbsPatch& patch);
-inline double body_size(const BodyModel& body) { return patch_size(body.refined); }
+/// The same over all patches of a body.
+double patches_size(const std::vector<NurbsPatch>& patches);
+inline double body_size(const BodyModel& body) { return patches_size(body.refined); }
 
-/// Nodes whose functions do not vanish on the side.
-std::vector<int> side_nodes(const BodyModel& body, PatchSide side);
+/// Nodes whose functions do not vanish on the side of the patch.
+std::vector<int> side_nodes(const BodyModel& body, int patch, PatchSide side);
 
 }  // namespace isosid::prep

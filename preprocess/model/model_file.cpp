@@ -43,6 +43,17 @@ NurbsPatch read_explicit_patch(const TomlView& g) {
   return p;
 }
 
+format::Material read_material(const TomlView& mat) {
+  mat.allow_only({"youngs_modulus", "poisson_ratio", "density"});
+  format::Material m;
+  m.youngs_modulus = mat.positive("youngs_modulus");
+  m.poisson_ratio = mat.number("poisson_ratio");
+  if (m.poisson_ratio <= -1 || m.poisson_ratio >= 0.5)
+    mat.fail("poisson_ratio", "must lie in (-1, 0.5), is " + std::to_string(m.poisson_ratio));
+  m.density = mat.positive("density");
+  return m;
+}
+
 NurbsPatch read_geometry(const TomlView& g, format::AnalysisType analysis) {
   const std::string primitive = g.string("primitive");
   NurbsPatch p;
@@ -155,7 +166,7 @@ HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch
   return q;
 }
 
-RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch, ContactResolutionSpec* resolution) {
+RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch, std::size_t patch_index, ContactResolutionSpec* resolution) {
   r.allow_only({"degrees", "subdivisions", "graded", "hierarchical"});
   RefinementSpec spec;
   const int pd = patch.param_dim();
@@ -185,7 +196,7 @@ RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch, Conta
       g.fail("toward", "outside the parameter range of " + std::string(direction_name(q.direction)));
     if (g.holds_string("smallest")) {
       q.smallest = contact_sized(g, "smallest", resolution);
-      resolution->graded.push_back(spec.graded.size());
+      resolution->graded.push_back({patch_index, spec.graded.size()});
     } else {
       q.smallest = g.positive("smallest");
     }
@@ -197,23 +208,54 @@ RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch, Conta
   return spec;
 }
 
-std::vector<FixedComponents> read_boundary(const TomlView& b, const NurbsPatch& patch, int dim) {
+/// A side as the model names it: `side` in a body of one patch, `patch.side` in one of several.
+struct SideRef {
+  int patch = 0;
+  std::string side;      ///< the side's name within its patch
+  PatchSide resolved;
+};
+
+SideRef side_ref(const TomlView& t, const std::string& key, const std::string& text, const std::vector<PatchSpec>& patches) {
+  SideRef ref{0, text, {}};
+  if (patches.size() > 1) {
+    const std::size_t dot = text.find('.');
+    if (dot == std::string::npos)
+      t.fail(key, "'" + text + "': name the patch too, as patch.side (e.g. " + patches[0].name + ".xi0)");
+    const std::string name = text.substr(0, dot);
+    const auto it = std::find_if(patches.begin(), patches.end(), [&](const PatchSpec& p) { return p.name == name; });
+    if (it == patches.end()) t.fail(key, "no patch named '" + name + "'");
+    ref.patch = int(it - patches.begin());
+    ref.side = text.substr(dot + 1);
+  }
+  const auto side = patches[std::size_t(ref.patch)].patch.side(ref.side);
+  if (!side) t.fail(key, "unknown side '" + ref.side + "'" + (patches.size() > 1 ? " of patch '" + patches[std::size_t(ref.patch)].name + "'" : ""));
+  ref.resolved = *side;
+  return ref;
+}
+
+/// The patch a node or stress line lies in: the `patch` key in a body of several patches.
+int patch_key(const TomlView& t, const std::vector<PatchSpec>& patches) {
+  if (patches.size() == 1) return 0;
+  const std::string name = t.string("patch");
+  const auto it = std::find_if(patches.begin(), patches.end(), [&](const PatchSpec& p) { return p.name == name; });
+  if (it == patches.end()) t.fail("patch", "no patch named '" + name + "'");
+  return int(it - patches.begin());
+}
+
+std::vector<FixedComponents> read_boundary(const TomlView& b, const std::vector<PatchSpec>& patches, int dim) {
   b.allow_only({"clamped", "fixed"});
   std::vector<FixedComponents> out;
-  auto check_side = [&](const TomlView& t, const std::string& key, const std::string& side) {
-    if (!patch.side(side)) t.fail(key, "unknown side '" + side + "'");
-  };
   if (b.has("clamped"))
-    for (const std::string& side : b.strings("clamped")) {
-      check_side(b, "clamped", side);
-      FixedComponents f{side, {}};
+    for (const std::string& text : b.strings("clamped")) {
+      const SideRef ref = side_ref(b, "clamped", text, patches);
+      FixedComponents f{ref.side, {}, ref.patch};
       for (int a = 0; a < dim; ++a) f.components.push_back(a);
       out.push_back(f);
     }
   for (const TomlView& t : b.tables("fixed")) {
     t.allow_only({"side", "components"});
-    FixedComponents f{t.string("side"), {}};
-    check_side(t, "side", f.side);
+    const SideRef ref = side_ref(t, "side", t.string("side"), patches);
+    FixedComponents f{ref.side, {}, ref.patch};
     for (const std::string& c : t.strings("components")) {
       int a = -1;
       for (int k = 0; k < dim; ++k)
@@ -260,7 +302,7 @@ void require_on_body(const TomlView& t, const std::string& key, const NurbsPatch
 }
 
 void read_sid_content(const TomlView& top, ModelSpec& m) {
-  const NurbsPatch& patch = m.patch;
+  const bool several = m.patches.size() > 1;
   auto unique_name = [](const TomlView& t, std::vector<std::string>& seen) {
     const std::string name = t.string("name");
     if (name.empty() || name.find('/') != std::string::npos) t.fail("name", "must be a non-empty name without '/'");
@@ -273,9 +315,11 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     c.allow_only({"name", "side", "interval", "points_per_direction"});
     ContactSurfaceSpec s;
     s.name = unique_name(c, surfaces);
-    s.side = c.string("side");
-    const auto side = patch.side(s.side);
-    if (!side) c.fail("side", "unknown side '" + s.side + "'");
+    const SideRef ref = side_ref(c, "side", c.string("side"), m.patches);
+    s.patch = ref.patch;
+    s.side = ref.side;
+    const NurbsPatch& patch = m.patches[std::size_t(s.patch)].patch;
+    const PatchSide* side = &ref.resolved;
     if (c.has("interval")) {
       const auto rows = c.number_rows("interval");
       if (int(rows.size()) != patch.param_dim() - 1) c.fail("interval", "needs one [lo, hi] per tangential direction");
@@ -299,18 +343,24 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
   if (node_tables.size() > kMaxNodes)
     node_tables[kMaxNodes].fail("name", "more than " + std::to_string(kMaxNodes) + " nodes: each costs two rows per mode in the SID");
   for (const TomlView& t : node_tables) {
-    t.allow_only({"name", "parameter", "point"});
+    if (several) t.allow_only({"name", "patch", "parameter", "point"});
+    else t.allow_only({"name", "parameter", "point"});
     NodeSpec n;
     n.name = unique_name(t, nodes);
+    n.patch = patch_key(t, m.patches);
+    const NurbsPatch& patch = m.patches[std::size_t(n.patch)].patch;
     n.at = given_point(t, "parameter", "point", patch);
     if (n.at.physical) require_on_body(t, "point", patch, place(patch, n.at), "the point");
     m.nodes.push_back(n);
   }
   long long stress_points = 0;
   for (const TomlView& t : top.tables("stress_line")) {
-    t.allow_only({"name", "from", "to", "from_point", "to_point", "points"});
+    if (several) t.allow_only({"name", "patch", "from", "to", "from_point", "to_point", "points"});
+    else t.allow_only({"name", "from", "to", "from_point", "to_point", "points"});
     StressLineSpec l;
     l.name = unique_name(t, lines);
+    l.patch = patch_key(t, m.patches);
+    const NurbsPatch& patch = m.patches[std::size_t(l.patch)].patch;
     l.from = given_point(t, "from", "from_point", patch);
     l.to = given_point(t, "to", "to_point", patch);
     if (l.from.physical != l.to.physical) t.fail(l.from.physical ? "to" : "from", "give both ends as parameters or both in metres");
@@ -345,11 +395,12 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
       const long long k = r->integer("interface_points");
       if (k < 1) r->fail("interface_points", "must be at least 1");
       red.interface_points = int(k);
-      const std::vector<double> c = r->numbers("interface_center");
-      if (int(c.size()) != patch.param_dim() - 1) r->fail("interface_center", "needs one parameter per tangential direction");
       // inside the parameter range of the interface surface's side
       const auto surface = std::find_if(m.contact_surfaces.begin(), m.contact_surfaces.end(),
                                         [&](const ContactSurfaceSpec& s) { return s.name == red.interface_surface; });
+      const NurbsPatch& patch = m.patches[std::size_t(surface->patch)].patch;
+      const std::vector<double> c = r->numbers("interface_center");
+      if (int(c.size()) != patch.param_dim() - 1) r->fail("interface_center", "needs one parameter per tangential direction");
       const int fixed = patch.side(surface->side)->direction;
       for (int d = 0, k = 0; d < patch.param_dim(); ++d) {
         if (d == fixed) continue;
@@ -383,8 +434,8 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
 ModelSpec read_model_file(const std::string& path) {
   const toml::table root = common::parse_toml_file(path);
   const TomlView top(root, path);
-  top.allow_only({"body", "material", "geometry", "contact_resolution", "refinement", "boundary", "quadrature", "reduction",
-                  "damping", "contact_surface", "node", "stress_line"});
+  top.allow_only({"body", "material", "geometry", "patch", "contact_resolution", "refinement", "boundary", "quadrature",
+                  "reduction", "damping", "contact_surface", "node", "stress_line"});
   ModelSpec m;
   m.file = path;
 
@@ -400,16 +451,38 @@ ModelSpec read_model_file(const std::string& path) {
   if (body.has("thickness") && !planar) body.fail("thickness", "only planar bodies have a thickness");
   m.thickness = body.positive("thickness", 1.0);
 
-  const TomlView mat = top.table("material");
-  mat.allow_only({"youngs_modulus", "poisson_ratio", "density"});
-  m.material.youngs_modulus = mat.positive("youngs_modulus");
-  m.material.poisson_ratio = mat.number("poisson_ratio");
-  if (m.material.poisson_ratio <= -1 || m.material.poisson_ratio >= 0.5)
-    mat.fail("poisson_ratio", "must lie in (-1, 0.5), is " + std::to_string(m.material.poisson_ratio));
-  m.material.density = mat.positive("density");
-
-  m.patch = read_geometry(top.table("geometry"), m.analysis);
-  check_mapping(m.patch, path, "geometry");
+  // [material] is the body's, or the default of patches without their own
+  const std::optional<format::Material> body_material =
+      top.has("material") ? std::optional<format::Material>(read_material(top.table("material"))) : std::nullopt;
+  const std::vector<TomlView> patch_tables = top.tables("patch");
+  if (patch_tables.empty()) {
+    if (!body_material) top.table("material");  // the one-line "missing" message
+    PatchSpec& p = m.patches.emplace_back();
+    p.material = *body_material;
+    p.patch = read_geometry(top.table("geometry"), m.analysis);
+    check_mapping(p.patch, path, "geometry");
+  } else {
+    if (top.has("geometry")) top.table("geometry").fail("primitive", "give [geometry] for a body of one patch or [[patch]] tables, not both");
+    if (top.has("refinement")) top.table("refinement").fail("degrees", "a body of several patches refines each in its [patch.refinement]");
+    if (patch_tables.size() > kMaxPatches) patch_tables[kMaxPatches].fail("name", "more than " + std::to_string(kMaxPatches) + " patches");
+    for (const TomlView& t : patch_tables) {
+      t.allow_only({"name", "material", "geometry", "refinement"});
+      PatchSpec& p = m.patches.emplace_back();
+      p.name = t.string("name");
+      if (p.name.empty() || p.name.find_first_of("./") != std::string::npos) t.fail("name", "must be a non-empty name without '.' or '/'");
+      for (std::size_t k = 0; k + 1 < m.patches.size(); ++k)
+        if (m.patches[k].name == p.name) t.fail("name", "duplicate patch name '" + p.name + "'");
+      if (t.has("material")) {
+        p.material = read_material(t.table("material"));
+      } else if (body_material) {
+        p.material = *body_material;
+      } else {
+        t.fail("material", "patch '" + p.name + "' has no material (give [patch.material] or a body [material])");
+      }
+      p.patch = read_geometry(t.table("geometry"), m.analysis);
+      check_mapping(p.patch, path, t.field("geometry"));
+    }
+  }
   if (auto c = top.optional_table("contact_resolution")) {
     c->allow_only({"contact_radius", "elements_per_radius"});
     ContactResolutionSpec& resolution = m.contact_resolution.emplace();
@@ -418,11 +491,20 @@ ModelSpec read_model_file(const std::string& path) {
     if (resolution.elements_per_radius < 1 || resolution.elements_per_radius > 100)
       c->fail("elements_per_radius", "must lie in 1..100");
   }
-  if (auto r = top.optional_table("refinement"))
-    m.refinement = read_refinement(*r, m.patch, m.contact_resolution ? &*m.contact_resolution : nullptr);
+  ContactResolutionSpec* resolution = m.contact_resolution ? &*m.contact_resolution : nullptr;
+  if (patch_tables.empty()) {
+    if (auto r = top.optional_table("refinement")) m.patches[0].refinement = read_refinement(*r, m.patches[0].patch, 0, resolution);
+  } else {
+    for (std::size_t k = 0; k < patch_tables.size(); ++k)
+      if (auto r = patch_tables[k].optional_table("refinement")) {
+        m.patches[k].refinement = read_refinement(*r, m.patches[k].patch, k, resolution);
+        if (m.patches[k].refinement.hierarchical)
+          r->table("hierarchical").fail("box", "hierarchical refinement in a body of several patches is not supported yet");
+      }
+  }
   if (m.contact_resolution && m.contact_resolution->graded.empty() && !m.contact_resolution->hierarchical)
     top.table("contact_resolution").fail("contact_radius", "no refinement uses it (give a refinement smallest = \"contact\")");
-  if (auto b = top.optional_table("boundary")) m.fixed = read_boundary(*b, m.patch, format::spatial_dim(m.analysis));
+  if (auto b = top.optional_table("boundary")) m.fixed = read_boundary(*b, m.patches, format::spatial_dim(m.analysis));
   if (auto q = top.optional_table("quadrature")) {
     q->allow_only({"extra_points"});
     const long long extra = q->integer("extra_points", 0);
@@ -433,14 +515,20 @@ ModelSpec read_model_file(const std::string& path) {
   return m;
 }
 
+const format::Material& fastest_material(const ModelSpec& spec) {
+  auto speed = [](const PatchSpec& p) { return p.material.youngs_modulus / p.material.density; };
+  return std::max_element(spec.patches.begin(), spec.patches.end(),
+                          [&](const PatchSpec& a, const PatchSpec& b) { return speed(a) < speed(b); })->material;
+}
+
 void set_contact_radius(ModelSpec& model, double radius, const std::string& source) {
   if (!model.contact_resolution)
     throw format::InputError(model.file, source, "the model sizes no elements from a contact radius (it has no [contact_resolution])");
   if (!(radius > 0) || !std::isfinite(radius)) throw format::InputError(model.file, source, "must be a positive length in metres");
   ContactResolutionSpec& resolution = *model.contact_resolution;
   resolution.contact_radius = radius;
-  for (std::size_t k : resolution.graded) model.refinement.graded[k].smallest = resolution.element_size();
-  if (resolution.hierarchical) model.refinement.hierarchical->smallest = resolution.element_size();
+  for (const auto& [patch, k] : resolution.graded) model.patches[patch].refinement.graded[k].smallest = resolution.element_size();
+  if (resolution.hierarchical) model.patches[0].refinement.hierarchical->smallest = resolution.element_size();
 }
 
 }  // namespace isosid::prep

@@ -15,14 +15,17 @@
 namespace isosid::prep {
 
 struct FixedComponents {
-  std::string side;                 ///< canonical or primitive side name
+  std::string side;                 ///< canonical or primitive side name of the patch
   std::vector<int> components;      ///< 0 = x, 1 = y, 2 = z
+  int patch = 0;                    ///< index in ModelSpec::patches
 };
 
 /// Most [[node]] tables a model may have, and most stress points over all its stress lines:
 /// each adds dense rows per mode to the SID and the runtime's output.
 constexpr std::size_t kMaxNodes = 10000;
 constexpr long long kMaxStressPoints = 100000;
+/// Most [[patch]] tables of a body (interfaces are found by comparing every pair of sides).
+constexpr std::size_t kMaxPatches = 200;
 
 struct RefinementSpec {
   std::vector<int> degrees;         ///< target degree per direction (elevation first)
@@ -47,20 +50,23 @@ struct DampingSpec {
 
 struct ContactSurfaceSpec {
   std::string name;
-  std::string side;
+  std::string side;                             ///< side of the patch
   std::vector<std::array<double, 2>> interval;  ///< per tangential direction; empty: the whole side
   int points_per_direction = 0;                 ///< Gauss points per element and direction (0: p+1)
+  int patch = 0;                                ///< index in ModelSpec::patches
 };
 
 struct NodeSpec {
   std::string name;
   GivenPoint at;                         ///< `parameter` or `point` (placed on the body by prep::place)
+  int patch = 0;                         ///< the patch it lies in (index in ModelSpec::patches)
 };
 
 struct StressLineSpec {
   std::string name;
   GivenPoint from, to;                   ///< the line's ends, both parameters or both physical points
   int points = 10;
+  int patch = 0;                         ///< the patch it runs in (index in ModelSpec::patches)
 };
 
 /// [contact_resolution]: contact elements sized from the expected contact radius a (Hertz),
@@ -69,19 +75,26 @@ struct StressLineSpec {
 struct ContactResolutionSpec {
   double contact_radius = 0;           ///< m
   double elements_per_radius = 8;      ///< smallest contact element = contact_radius / this
-  std::vector<std::size_t> graded;     ///< the refinement.graded entries sized by it
-  bool hierarchical = false;           ///< refinement.hierarchical sized by it
+  /// the refinement.graded entries sized by it: (patch, entry)
+  std::vector<std::pair<std::size_t, std::size_t>> graded;
+  bool hierarchical = false;           ///< refinement.hierarchical (of the one patch) sized by it
   double element_size() const { return contact_radius / elements_per_radius; }
+};
+
+/// One patch of a body: its exact geometry, material and refinement.
+struct PatchSpec {
+  std::string name;                 ///< empty for a body of one patch ([geometry] form)
+  format::Material material;
+  NurbsPatch patch;                 ///< the coarse, exact geometry
+  RefinementSpec refinement;
 };
 
 struct ModelSpec {
   std::string file;                 ///< path of the model file
   std::string body_name;
   format::AnalysisType analysis = format::AnalysisType::Solid;
-  format::Material material;
   double thickness = 1.0;
-  NurbsPatch patch;                 ///< the coarse, exact geometry
-  RefinementSpec refinement;
+  std::vector<PatchSpec> patches;   ///< one ([geometry]) or several ([[patch]]), conforming where they meet
   std::optional<ContactResolutionSpec> contact_resolution;
   std::vector<FixedComponents> fixed;
   int extra_quadrature_points = 0;
@@ -91,6 +104,9 @@ struct ModelSpec {
   std::vector<NodeSpec> nodes;
   std::vector<StressLineSpec> stress_lines;
 };
+
+/// The material of the highest wave speed sqrt(E / rho): it sets the body's eigenvalue scale.
+const format::Material& fastest_material(const ModelSpec& spec);
 
 /// Reads and validates a model file; throws InputError(file, field, problem).
 ModelSpec read_model_file(const std::string& path);

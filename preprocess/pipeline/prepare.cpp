@@ -72,7 +72,8 @@ ModalAnalysis analyse_modes(const ModelSpec& spec, int n_modes, StageObserver& o
     throw format::InputError("", "--modes", "asks for " + std::to_string(n_modes) + " modes, but " + spec.file + " refines to " +
                                                 std::to_string(most + 1) + " free DOFs (at most " + std::to_string(most) + " modes)");
   ModalResult modes = clock.run("eigen", "solving for " + std::to_string(n_modes) + " modes", [&] {
-    const double scale = eigenvalue_scale(spec.material.youngs_modulus, spec.material.density, body_size(a.body));
+    const format::Material& fastest = fastest_material(spec);
+    const double scale = eigenvalue_scale(fastest.youngs_modulus, fastest.density, body_size(a.body));
     return lowest_modes(a.system.K, a.system.M, n_modes, scale);
   });
   return {std::move(a.body), a.scalar_mass.sum(), std::move(modes), clock.timings()};

@@ -13,15 +13,16 @@ std::vector<int> interface_dofs(const BodyModel& body, std::string& description)
   const ReductionSpec& r = body.spec.reduction;
   const auto surface = std::find_if(body.spec.contact_surfaces.begin(), body.spec.contact_surfaces.end(),
                                     [&](const ContactSurfaceSpec& c) { return c.name == r.interface_surface; });
-  const PatchSide side = *body.refined.side(surface->side);
+  const NurbsPatch& patch = body.refined[std::size_t(surface->patch)];
+  const PatchSide side = *patch.side(surface->side);
   // the centre as a physical point of the side; nodes are ranked by their physical distance
   // to it (parameter distances mislead where the parametrization collapses, e.g. at a pole)
   Eigen::VectorXd xi(body.space.param_dim());
   for (int d = 0, k = 0; d < body.space.param_dim(); ++d)
-    xi(d) = d == side.direction ? (side.end ? body.refined.upper(d) : body.refined.lower(d)) : r.interface_center(k++);
-  const Eigen::VectorXd centre = body.refined.point(xi);
+    xi(d) = d == side.direction ? (side.end ? patch.upper(d) : patch.lower(d)) : r.interface_center(k++);
+  const Eigen::VectorXd centre = patch.point(xi);
   std::map<int, double> distance;
-  for (int node : side_nodes(body, side)) distance[node] = (body.dofs.node_points().row(node).transpose() - centre).norm();
+  for (int node : side_nodes(body, surface->patch, side)) distance[node] = (body.dofs.node_points().row(node).transpose() - centre).norm();
   std::vector<std::pair<double, int>> ranked;
   for (auto [node, d] : distance) ranked.emplace_back(d, node);
   std::sort(ranked.begin(), ranked.end());
@@ -50,7 +51,8 @@ ReductionRequest reduction_request(const BodyModel& body) {
 ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system, const Eigen::MatrixXd& extra) {
   const Eigen::MatrixXd rigid = admissible_rigid_fields(rigid_nodal_fields(body.dofs.node_points(), body.spec.analysis),
                                                         body.dofs.free_indices());
-  const double scale = eigenvalue_scale(body.spec.material.youngs_modulus, body.spec.material.density, body_size(body));
+  const format::Material& fastest = fastest_material(body.spec);
+  const double scale = eigenvalue_scale(fastest.youngs_modulus, fastest.density, body_size(body));
   ReductionRequest request = reduction_request(body);
   request.extra_vectors = extra;
   // more modes than the refined model has: a model-file problem, not a failed computation

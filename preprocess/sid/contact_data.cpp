@@ -8,9 +8,10 @@ namespace isosid::prep {
 namespace {
 
 std::vector<BoundaryPoint> selected_points(const BodyModel& body, const ContactSurfaceSpec& spec) {
-  const auto side = body.refined.side(spec.side);
+  const auto side = body.refined[std::size_t(spec.patch)].side(spec.side);
   if (!side) throw format::InputError(body.spec.file, "contact_surface " + spec.name, "unknown side '" + spec.side + "'");
-  std::vector<BoundaryPoint> out = boundary_points(body.space, body.elasticity, *side, spec.points_per_direction, spec.interval);
+  std::vector<BoundaryPoint> out =
+      boundary_points(body.space, body.elasticity, spec.patch, *side, spec.points_per_direction, spec.interval);
   if (out.empty())
     throw format::InputError(body.spec.file, "contact_surface " + spec.name, "no Gauss point lies in the interval");
   // a side that collapses (the axis of a body of revolution, a pole) or an interval narrower
@@ -32,7 +33,7 @@ format::ContactSurface contact_points(const BodyModel& body, const ContactSurfac
   const auto n = Eigen::Index(pts.size());
   format::ContactSurface s;
   s.name = spec.name;
-  s.side = side_name(*body.refined.side(spec.side));
+  s.side = side_name(*body.refined[std::size_t(spec.patch)].side(spec.side));
   s.master_patch = spec.name;
   s.parameter.resize(n, pd);
   s.element.resize(n);

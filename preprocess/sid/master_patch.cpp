@@ -12,12 +12,12 @@ namespace isosid::prep {
 namespace {
 
 /// Element boundaries along tangential direction d on the side that the patch's knots lack.
-std::vector<double> missing_knots(const BodyModel& body, PatchSide side, int d) {
-  const std::vector<double> have = unique_knots(body.refined.knots[std::size_t(d)]);
+std::vector<double> missing_knots(const BodyModel& body, int patch, PatchSide side, int d) {
+  const std::vector<double> have = unique_knots(body.refined[std::size_t(patch)].knots[std::size_t(d)]);
   const double tol = 1e-12 * (have.back() - have.front());
   std::vector<double> out;
   for (const Element& e : body.space.elements) {
-    if (!body.space.on_side(e, side)) continue;
+    if (e.patch != patch || !body.space.on_side(e, side)) continue;
     for (double x : {e.lo(d), e.hi(d)}) {
       auto near = [&](double y) { return std::abs(x - y) <= tol; };
       if (std::none_of(have.begin(), have.end(), near) && std::none_of(out.begin(), out.end(), near)) out.push_back(x);
@@ -47,12 +47,13 @@ void tensor_apply(const std::vector<Eigen::MatrixXd>& A, Eigen::MatrixXd& V, boo
 
 }  // namespace
 
-format::MasterPatch master_patch(const BodyModel& body, const std::string& name, PatchSide side, const Eigen::MatrixXd& Phi_nodal) {
-  NurbsPatch p = body.refined;
+format::MasterPatch master_patch(const BodyModel& body, const std::string& name, int patch, PatchSide side,
+                                 const Eigen::MatrixXd& Phi_nodal) {
+  NurbsPatch p = body.refined[std::size_t(patch)];
   bool inserted = false;
   for (int d = 0; d < p.param_dim(); ++d)
     if (d != side.direction) {
-      const std::vector<double> X = missing_knots(body, side, d);
+      const std::vector<double> X = missing_knots(body, patch, side, d);
       inserted = inserted || !X.empty();
       insert_knots(p, d, X);
     }
@@ -77,7 +78,8 @@ format::MasterPatch master_patch(const BodyModel& body, const std::string& name,
   }
   if (!inserted) {  // the side's functions are the body's own: copy their rows
     for (Eigen::Index i = 0; i < n; ++i)
-      m.Phi.middleRows(i * dim, dim) = Phi_nodal.middleRows(Eigen::Index(body.dofs.node_of(cps[std::size_t(i)])) * dim, dim);
+      m.Phi.middleRows(i * dim, dim) = Phi_nodal.middleRows(
+          Eigen::Index(body.dofs.node_of(body.space.patch_first_function[std::size_t(patch)] + cps[std::size_t(i)])) * dim, dim);
     return m;
   }
   // collocation at the Greville points of the side's tensor space: w(g) u(g) = sum N_m(g) W_m D_m
@@ -104,7 +106,7 @@ format::MasterPatch master_patch(const BodyModel& body, const std::string& name,
       xi(tangential[t]) = g[t][std::size_t(rest % count)];
       rest /= count;
     }
-    const PointOperator op = *point_operator_at(body.space, body.dofs, body.elasticity, xi);  // xi lies on the side
+    const PointOperator op = *point_operator_at(body.space, body.dofs, body.elasticity, patch, xi);  // xi lies on the side
     V.middleRows(k * dim, dim) = op.N * op.gather(Phi_nodal);
   }
   // w(g) u(g) = sum_m N_m(g) (W_m D_m): scale by the weight function, solve, unscale

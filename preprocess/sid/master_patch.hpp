@@ -12,7 +12,8 @@
 
 namespace isosid::prep {
 
-format::MasterPatch master_patch(const BodyModel& body, const std::string& name, PatchSide side,
+/// The master patch of side `side` of patch `patch` of the body.
+format::MasterPatch master_patch(const BodyModel& body, const std::string& name, int patch, PatchSide side,
                                  const Eigen::MatrixXd& Phi_nodal);
 
 }  // namespace isosid::prep

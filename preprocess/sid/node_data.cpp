@@ -10,8 +10,9 @@
 namespace isosid::prep {
 
 format::Node node_at(const BodyModel& body, const NodeSpec& spec, const Eigen::MatrixXd& Phi_nodal) {
-  const Eigen::VectorXd parameter = place(body.spec.patch, spec.at).parameter;
-  const auto at = point_operator_at(body.space, body.dofs, body.elasticity, parameter);
+  const NurbsPatch& patch = body.spec.patches[std::size_t(spec.patch)].patch;
+  const Eigen::VectorXd parameter = place(patch, spec.at).parameter;
+  const auto at = point_operator_at(body.space, body.dofs, body.elasticity, spec.patch, parameter);
   if (!at) throw format::InputError(body.spec.file, "node " + spec.name, "parameter outside the patch");
   const PointOperator& op = *at;
   // where the parametrization collapses (a pole or a corner on the axis) the gradients are not
@@ -20,12 +21,11 @@ format::Node node_at(const BodyModel& body, const NodeSpec& spec, const Eigen::M
   std::optional<PointOperator> inside;
   if (!op.dR_dx.allFinite()) {
     Eigen::VectorXd nudged = parameter;
-    const NurbsPatch& patch = body.spec.patch;
     for (Eigen::Index d = 0; d < nudged.size(); ++d) {
       const double lo = patch.lower(int(d)), hi = patch.upper(int(d));
       nudged(d) += 1e-7 * (hi - lo) * (nudged(d) >= 0.5 * (lo + hi) ? -1 : 1);
     }
-    inside = point_operator_at(body.space, body.dofs, body.elasticity, nudged);
+    inside = point_operator_at(body.space, body.dofs, body.elasticity, spec.patch, nudged);
     if (!inside || !inside->dR_dx.allFinite() || inside->nodes != op.nodes)
       throw format::InputError(body.spec.file, "node " + spec.name, "the body's mapping is singular there and around it");
   }

@@ -41,7 +41,10 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   format::Sid sid;
   sid.body_name = spec.body_name;
   sid.analysis = spec.analysis;
-  sid.material = spec.material;
+  // one material per SID: a multi-patch body's is that of its (first) contact surface, which
+  // the runtime's contact estimates use, else the one that sets the eigenvalue scale
+  sid.material = spec.contact_surfaces.empty() ? fastest_material(spec)
+                                               : spec.patches[std::size_t(spec.contact_surfaces.front().patch)].material;
   sid.thickness = spec.thickness;
 
   const Eigen::MatrixXd Phi = nodal_modes(body.dofs, basis.Phi);
@@ -65,7 +68,7 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
 
   for (const ContactSurfaceSpec& c : spec.contact_surfaces) {
     sid.contact_surfaces.push_back(contact_surface(body, c, Phi));
-    sid.master_patches.push_back(master_patch(body, c.name, *body.refined.side(c.side), Phi));
+    sid.master_patches.push_back(master_patch(body, c.name, c.patch, *body.refined[std::size_t(c.patch)].side(c.side), Phi));
   }
   for (const NodeSpec& n : spec.nodes) sid.nodes.push_back(node_at(body, n, Phi));
   for (const StressLineSpec& l : spec.stress_lines) sid.stress_recovery.push_back(stress_rows(body, l, Phi));

@@ -61,7 +61,7 @@ NodalTransfer nodal_transfer(const BodyModel& coarse, const BodyModel& fine) {
         xi(d) = el.lo(d) + tt[d] * (el.hi(d) - el.lo(d));
       }
       Rc.row(g) = point_operator(coarse.space, coarse.dofs, coarse.elasticity, el, tt).R.transpose();
-      at_fine.push_back(*point_operator_at(fine.space, fine.dofs, fine.elasticity, xi));  // inside: same patch
+      at_fine.push_back(*point_operator_at(fine.space, fine.dofs, fine.elasticity, el.patch, xi));  // inside: same patch
     }
     const Eigen::MatrixXd Rinv = Eigen::PartialPivLU<Eigen::MatrixXd>(Rc).inverse();  // functions x Gauss points
     for (int f = 0; f < nf; ++f) {

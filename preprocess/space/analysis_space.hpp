@@ -15,6 +15,12 @@ struct Element {
   std::vector<int> functions;   ///< global function indices of the functions living on the element
   Eigen::MatrixXd C;            ///< functions.size() x prod(p+1): Bernstein -> functions
   int level = 0;                ///< hierarchical level (0 for tensor spaces)
+  int patch = 0;                ///< the patch of a multi-patch body it belongs to
+};
+
+/// The parameter range of a patch.
+struct PatchRange {
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();
 };
 
 struct AnalysisSpace {
@@ -23,7 +29,9 @@ struct AnalysisSpace {
   Eigen::MatrixXd control_points;  ///< n_functions x phys_dim: the exact geometry x = sum R_i P_i
   Eigen::VectorXd weights;         ///< n_functions: W = sum w_i N_i
   std::vector<int> function_level; ///< n_functions: hierarchical level of each function (0 for tensor spaces)
-  Eigen::Vector3d param_lo = Eigen::Vector3d::Zero(), param_hi = Eigen::Vector3d::Zero();
+  std::vector<PatchRange> patch_boxes;  ///< one per patch; elements' boxes lie in their patch's
+  /// per patch: its first function (a tensor patch's control point i is function first + i)
+  std::vector<int> patch_first_function{0};
 
   int param_dim() const { return int(degrees.size()); }
   int phys_dim() const { return int(control_points.cols()); }
@@ -31,12 +39,18 @@ struct AnalysisSpace {
   int bernstein_count() const;
   /// Product of the element's parametric extents (length, area or volume in xi).
   double parametric_size(const Element& e) const;
-  /// True if the element touches the patch side.
+  /// True if the element touches the side of its own patch.
   bool on_side(const Element& e, PatchSide side) const;
+  int patch_count() const { return int(patch_boxes.size()); }
 };
 
 /// Tensor-product space of a NURBS patch: one element per non-empty knot span box (first
 /// direction fastest), functions numbered as the patch's control points.
 AnalysisSpace tensor_space(const NurbsPatch& patch);
+
+/// The space of a multi-patch body: the patches' spaces side by side, functions and elements
+/// numbered patch after patch, each element tagged with its patch. All need the same degrees
+/// (one reference rule); coincident control points are merged later, by the DofMap.
+AnalysisSpace join_spaces(std::vector<AnalysisSpace> spaces);
 
 }  // namespace isosid::prep

@@ -7,13 +7,14 @@
 
 namespace isosid::prep {
 
-DofMap::DofMap(const AnalysisSpace& space, int dim, double tolerance, const std::vector<PatchSide>& point_sides) : dim_(dim) {
+DofMap::DofMap(const AnalysisSpace& space, int dim, double tolerance, const std::vector<std::pair<int, PatchSide>>& point_sides)
+    : dim_(dim) {
   const Eigen::MatrixXd& P = space.control_points;
   const int n = int(P.rows());
   std::vector<bool> on_point_side(std::size_t(n), false);
   for (const Element& e : space.elements)
-    for (PatchSide side : point_sides)
-      if (space.on_side(e, side))
+    for (const auto& [patch, side] : point_sides)
+      if (e.patch == patch && space.on_side(e, side))
         for (int f : e.functions) on_point_side[f] = true;
   auto level = [&](int f) { return space.function_level.empty() ? 0 : space.function_level[f]; };
   auto mergeable = [&](int f, int g) {

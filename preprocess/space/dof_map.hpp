@@ -15,7 +15,8 @@ public:
   /// `point_sides` (sides collapsed to a point, where every function's trace is one value).
   /// Elsewhere a coarse and a fine function may share a control point by accident, e.g. at
   /// Greville points of odd degree, and must stay apart.
-  DofMap(const AnalysisSpace& space, int dim, double tolerance, const std::vector<PatchSide>& point_sides = {});
+  /// Merging across patches joins conforming interfaces. `point_sides` are (patch, side).
+  DofMap(const AnalysisSpace& space, int dim, double tolerance, const std::vector<std::pair<int, PatchSide>>& point_sides = {});
 
   int dim() const { return dim_; }
   int node_count() const { return int(node_points_.rows()); }

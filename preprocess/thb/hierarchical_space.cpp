@@ -92,9 +92,10 @@ public:
     HierarchicalSpace out;
     AnalysisSpace& s = out.space;
     s.degrees = mesh_.degrees;
+    PatchRange& box = s.patch_boxes.emplace_back();
     for (int d = 0; d < pd_; ++d) {
-      s.param_lo(d) = patch_.lower(d);
-      s.param_hi(d) = patch_.upper(d);
+      box.lo(d) = patch_.lower(d);
+      box.hi(d) = patch_.upper(d);
     }
     number_active_functions(s, out.functions_per_level);
     for (int l = 0; l < int(levels_.size()); ++l) out.elements_per_level.push_back(add_active_elements(l, s));

@@ -12,6 +12,7 @@ namespace isosid::prep {
 namespace {
 using common::list_text;
 using common::number_text;
+using common::number_text;
 
 std::vector<double> as_vector(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
 
@@ -32,6 +33,21 @@ nlohmann::json body_json(const BodyModel& body, double mass, std::string& levels
   j["nodes"] = body.dofs.node_count();
   j["dofs"] = body.dofs.free_count();
   j["mass_kg"] = mass;
+  if (body.spec.patches.size() > 1) {  // the patches, their materials and where they meet
+    for (std::size_t k = 0; k < body.spec.patches.size(); ++k) {
+      const PatchSpec& p = body.spec.patches[k];
+      j["patches"].push_back({{"name", p.name}, {"youngs_modulus_pa", p.material.youngs_modulus},
+                              {"poisson_ratio", p.material.poisson_ratio}, {"density_kg_m3", p.material.density}});
+      levels_text += "  patch " + p.name + ": E " + number_text(p.material.youngs_modulus) + " Pa, nu " +
+                     number_text(p.material.poisson_ratio) + ", rho " + number_text(p.material.density) + " kg/m^3\n";
+    }
+    for (const PatchInterface& i : body.interfaces) {
+      const std::string a = body.spec.patches[std::size_t(i.a)].name + "." + side_name(i.side_a),
+                        b = body.spec.patches[std::size_t(i.b)].name + "." + side_name(i.side_b);
+      j["interfaces"].push_back({a, b});
+      levels_text += "  interface " + a + " = " + b + "\n";
+    }
+  }
   if (!body.hierarchy) return j;
   const Hierarchy& h = *body.hierarchy;
   j["levels"] = nlohmann::json::array();
@@ -60,7 +76,7 @@ nlohmann::json placement_json(const ModelSpec& spec, std::string& text) {
   auto given = [](const GivenPoint& g) { return std::string(g.physical ? "point" : "parameter"); };
   nlohmann::json j = {{"nodes", nlohmann::json::array()}, {"stress_lines", nlohmann::json::array()}};
   for (const NodeSpec& n : spec.nodes) {
-    const BodyPoint p = place(spec.patch, n.at);
+    const BodyPoint p = place(spec.patches[std::size_t(n.patch)].patch, n.at);
     nlohmann::json node = located(p);
     node["name"] = n.name;
     node["given"] = given(n.at);
@@ -68,7 +84,7 @@ nlohmann::json placement_json(const ModelSpec& spec, std::string& text) {
     text += "  node " + n.name + " at " + described(p) + " (given by " + given(n.at) + ")\n";
   }
   for (const StressLineSpec& l : spec.stress_lines) {
-    const std::vector<BodyPoint> points = line_points(spec.patch, l.from, l.to, l.points);
+    const std::vector<BodyPoint> points = line_points(spec.patches[std::size_t(l.patch)].patch, l.from, l.to, l.points);
     j["stress_lines"].push_back({{"name", l.name}, {"given", given(l.from)}, {"points", l.points},
                                  {"from", located(points.front())}, {"to", located(points.back())}});
     text += "  stress line " + l.name + ", " + std::to_string(l.points) + " points from " + described(points.front()) + " to " +

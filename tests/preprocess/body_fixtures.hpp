@@ -11,9 +11,7 @@ inline prep::ModelSpec spec_for(prep::NurbsPatch patch, format::AnalysisType typ
   s.file = "test";
   s.body_name = "test";
   s.analysis = type;
-  s.material = {E, nu, rho};
-  s.patch = std::move(patch);
-  s.refinement = std::move(refinement);
+  s.patches.push_back({"", {E, nu, rho}, std::move(patch), std::move(refinement)});
   return s;
 }
 
@@ -25,14 +23,15 @@ inline prep::RefinementSpec uniform(std::vector<int> degrees, std::vector<int> p
   return r;
 }
 
-/// Nodes on any side of the body.
+/// Nodes on any side of any patch of the body (interfaces included).
 inline std::vector<int> boundary_nodes(const prep::BodyModel& b) {
   std::vector<int> all;
-  for (int d = 0; d < b.space.param_dim(); ++d)
-    for (int e = 0; e < 2; ++e) {
-      const auto n = prep::side_nodes(b, {d, e});
-      all.insert(all.end(), n.begin(), n.end());
-    }
+  for (int k = 0; k < b.space.patch_count(); ++k)
+    for (int d = 0; d < b.space.param_dim(); ++d)
+      for (int e = 0; e < 2; ++e) {
+        const auto n = prep::side_nodes(b, k, {d, e});
+        all.insert(all.end(), n.begin(), n.end());
+      }
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
   return all;

@@ -35,7 +35,7 @@ TEST_CASE("sphere contact cap: area 2 pi r^2 (1 - cos phi), outward normals, tra
   const auto s = prep::contact_points(b, surface(spec));
   const double r = 0.01;
   // the cap ends where the lower arc reaches the end of the surface's interval
-  const Eigen::Vector2d end = spec.patch.point(Eigen::Vector2d(spec.contact_surfaces.at(0).interval.at(0)[1], 0.0));
+  const Eigen::Vector2d end = spec.patches[0].patch.point(Eigen::Vector2d(spec.contact_surfaces.at(0).interval.at(0)[1], 0.0));
   const double cos_phi = -end(1) / r;
   CHECK(s.weight.sum() == Approx(2 * M_PI * r * r * (1 - cos_phi)).epsilon(1e-10));
   for (Eigen::Index g = 0; g < s.points(); ++g) {
@@ -49,7 +49,7 @@ TEST_CASE("disk contact arc: length times thickness", "[contact]") {
   const auto spec = model("disk_plane_strain.model.toml");
   const auto b = prep::build_body(spec);
   const auto s = prep::contact_points(b, surface(spec));
-  const Eigen::Vector2d a = spec.patch.point(Eigen::Vector2d(1.0, 0.3)), c = spec.patch.point(Eigen::Vector2d(1.0, 0.7));
+  const Eigen::Vector2d a = spec.patches[0].patch.point(Eigen::Vector2d(1.0, 0.3)), c = spec.patches[0].patch.point(Eigen::Vector2d(1.0, 0.7));
   const double angle = std::acos(a.dot(c) / (a.norm() * c.norm()));
   CHECK(s.weight.sum() == Approx(0.1 * angle * 1.0).epsilon(1e-10));
   for (Eigen::Index g = 0; g < s.points(); ++g) CHECK(s.position(g, 1) < 0);  // the bottom of the disk
@@ -69,7 +69,7 @@ TEST_CASE("3D ball contact patch: area of the spherical cap on a revolved patch"
   auto spec = model("ball_3d.model.toml");
   const auto b = prep::build_body(spec);
   const double r = 0.01;
-  const Eigen::Vector3d end = spec.patch.point(Eigen::Vector3d(0.25, 0.0, 0.0));
+  const Eigen::Vector3d end = spec.patches[0].patch.point(Eigen::Vector3d(0.25, 0.0, 0.0));
   const double exact = 2 * M_PI * r * r * (1 + end(1) / r);
   // the coarse quadratic 9-point circle makes the area integrand rational: p+1 points leave
   // 2.6e-7, 8 points per direction bring the quadrature error below 1e-10
@@ -99,5 +99,5 @@ TEST_CASE("the SID's Psi rows are N Phi and its master patch is the side's NURBS
   curve.points = m.control_points;
   curve.weights = m.weights;
   for (double u : {0.0, 0.13, 0.5, 0.91})
-    CHECK((curve.point(Eigen::VectorXd::Constant(1, u)) - spec.patch.point(Eigen::Vector2d(u, 0.0))).norm() < 1e-15);
+    CHECK((curve.point(Eigen::VectorXd::Constant(1, u)) - spec.patches[0].patch.point(Eigen::Vector2d(u, 0.0))).norm() < 1e-15);
 }

@@ -35,15 +35,15 @@ Errors solve_and_measure(prep::ModelSpec spec, const std::vector<Load>& loads, c
   const prep::BodyModel b = prep::build_body(spec);
   const auto sys = prep::assemble_system(b.space, b.dofs, b.elasticity);
   Vec f = Vec::Zero(b.dofs.free_count());
-  for (const Load& l : loads) f += prep::assemble_traction(b.space, b.dofs, b.elasticity, *b.refined.side(l.side), l.traction);
+  for (const Load& l : loads) f += prep::assemble_traction(b.space, b.dofs, b.elasticity, 0, *b.refined[0].side(l.side), l.traction);
   const Vec nodal = prep::expand_to_nodes(b.dofs, prep::SparseCholesky(sys.K).solve(f));
   double eu = 0, nu = 0, es = 0, ns = 0;
   const prep::ReferenceRule rule = prep::reference_rule(b.space, 2);
   for (const auto& e : b.space.elements)
     for (int q = 0; q < rule.size(); ++q) {
       const auto op = prep::point_operator(b.space, b.dofs, b.elasticity, e, rule.points.col(q).data());
-      const double w = rule.weights(q) * b.space.parametric_size(e) * std::abs(op.det_J) * b.elasticity.measure(op.x);
-      const Vec u = op.displacement(nodal), s = b.elasticity.D() * op.strain(nodal);
+      const double w = rule.weights(q) * b.space.parametric_size(e) * std::abs(op.det_J) * b.elasticity.of(e).measure(op.x);
+      const Vec u = op.displacement(nodal), s = b.elasticity.of(e).D() * op.strain(nodal);
       const Vec ue = exact.displacement(op.x), se = exact.stress(op.x);
       eu += w * (u - ue).squaredNorm();
       nu += w * ue.squaredNorm();

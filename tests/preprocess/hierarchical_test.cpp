@@ -45,7 +45,7 @@ prep::BodyModel hierarchical_body(prep::NurbsPatch patch, AnalysisType type, pre
 Eigen::VectorXd random_parameter(const prep::AnalysisSpace& s, std::mt19937& gen) {
   std::uniform_real_distribution<double> u(0, 1);
   Eigen::VectorXd xi(s.param_dim());
-  for (int d = 0; d < s.param_dim(); ++d) xi(d) = s.param_lo(d) + u(gen) * (s.param_hi(d) - s.param_lo(d));
+  for (int d = 0; d < s.param_dim(); ++d) xi(d) = s.patch_boxes[0].lo(d) + u(gen) * (s.patch_boxes[0].hi(d) - s.patch_boxes[0].lo(d));
   return xi;
 }
 
@@ -56,19 +56,19 @@ void check_space(const prep::BodyModel& b) {
   const prep::ElementEvaluator ev(s);
   std::mt19937 gen(7);
   std::uniform_real_distribution<double> u(-1, 1);
-  Eigen::VectorXd coarse(b.refined.count());
+  Eigen::VectorXd coarse(b.refined[0].count());
   for (auto& c : coarse) c = u(gen);
   // a field in the patch's rational space: sum_i R_i c_i with R_i = w_i N_i / W
   const Eigen::VectorXd fine = b.hierarchy->prolongation * coarse;
-  prep::NurbsPatch field = b.refined;
+  prep::NurbsPatch field = b.refined[0];
   field.points.conservativeResize(Eigen::NoChange, field.phys_dim() + 1);
   field.points.col(field.phys_dim() - 1) = coarse;
-  const double size = prep::patch_size(b.refined);
+  const double size = prep::patch_size(b.refined[0]);
   for (int k = 0; k < 300; ++k) {
     const Eigen::VectorXd xi = random_parameter(s, gen);
     int e = -1;
     double t[3];
-    REQUIRE(prep::locate(s, xi, e, t));
+    REQUIRE(prep::locate(s, 0, xi, e, t));
     prep::PointValues v;
     ev.evaluate(s.elements[std::size_t(e)], t, v);
     CHECK(std::abs(v.R.sum() - 1.0) < 1e-12);
@@ -211,7 +211,7 @@ TEST_CASE("the hierarchical sphere has at least 3x fewer DOFs than the graded on
   auto smallest_on_contact = [](const prep::BodyModel& b) {
     double h = 1e9;
     for (const auto& e : b.space.elements)
-      if (e.lo(1) == 0.0) h = std::min(h, (b.refined.point(Eigen::Vector2d(e.hi(0), 0)) - b.refined.point(Eigen::Vector2d(e.lo(0), 0))).norm());
+      if (e.lo(1) == 0.0) h = std::min(h, (b.refined[0].point(Eigen::Vector2d(e.hi(0), 0)) - b.refined[0].point(Eigen::Vector2d(e.lo(0), 0))).norm());
     return h;
   };
   CHECK(smallest_on_contact(thb) <= 25e-6);
@@ -244,13 +244,13 @@ TEST_CASE("the master patch of a hierarchical side reproduces the body's displac
   // the side's THB space lies in the tensor space of all its element boundaries; knot
   // insertion (geometry) and collocation (mode rows) are exact, up to the collocation solve
   const auto b = prep::build_body(model("sphere_axisym_thb.model.toml"));
-  const prep::PatchSide side = *b.refined.side("lower");
+  const prep::PatchSide side = *b.refined[0].side("lower");
   std::mt19937 gen(3);
   std::uniform_real_distribution<double> u(-1, 1), t01(0, 1);
   Eigen::MatrixXd Phi(b.dofs.total_dofs(), 3);
   for (Eigen::Index i = 0; i < Phi.size(); ++i) Phi(i) = u(gen);
-  const format::MasterPatch m = prep::master_patch(b, "contact", side, Phi);
-  REQUIRE(m.knots[0].size() > b.refined.knots[0].size());  // the fine knots were inserted
+  const format::MasterPatch m = prep::master_patch(b, "contact", 0, side, Phi);
+  REQUIRE(m.knots[0].size() > b.refined[0].knots[0].size());  // the fine knots were inserted
   const prep::ElementEvaluator ev(b.space);
   for (int k = 0; k < 200; ++k) {
     const double xi = t01(gen);
@@ -266,7 +266,7 @@ TEST_CASE("the master patch of a hierarchical side reproduces the body's displac
     const Eigen::VectorXd on_curve = curve.point(Eigen::VectorXd::Constant(1, xi));
     int e = -1;
     double t[3];
-    REQUIRE(prep::locate(b.space, Eigen::Vector2d(xi, 0.0), e, t));
+    REQUIRE(prep::locate(b.space, 0, Eigen::Vector2d(xi, 0.0), e, t));
     prep::PointValues v;
     ev.evaluate(b.space.elements[std::size_t(e)], t, v);
     CHECK((on_curve.head(2) - v.x).norm() < 1e-12 * 0.01);

@@ -18,7 +18,7 @@ struct Spectrum {
 
 Spectrum lowest(const prep::BodyModel& body, int n) {
   const auto sys = prep::assemble_system(body.space, body.dofs, body.elasticity);
-  const double scale = prep::eigenvalue_scale(body.spec.material.youngs_modulus, body.spec.material.density, prep::body_size(body));
+  const double scale = prep::eigenvalue_scale(body.spec.patches[0].material.youngs_modulus, body.spec.patches[0].material.density, prep::body_size(body));
   return {prep::lowest_modes(sys.K, sys.M, n, scale), scale};
 }
 

@@ -296,12 +296,12 @@ TEST_CASE("the seed beam model's first twelve elastic frequencies are converged 
   auto frequencies = [](const prep::ModelSpec& s) {
     const auto b = prep::build_body(s);
     const auto sys = prep::assemble_system(b.space, b.dofs, b.elasticity);
-    const auto m = prep::lowest_modes(sys.K, sys.M, 18, prep::eigenvalue_scale(s.material.youngs_modulus, s.material.density, 0.21));
+    const auto m = prep::lowest_modes(sys.K, sys.M, 18, prep::eigenvalue_scale(s.patches[0].material.youngs_modulus, s.patches[0].material.density, 0.21));
     REQUIRE(m.rigid_body_modes == 6);
     return Eigen::VectorXd(m.frequencies_hz().segment(6, 12));
   };
   const Eigen::VectorXd base = frequencies(spec);
-  for (int& n : spec.refinement.subdivisions) n = n * 3 / 2;  // 1.5x finer in every direction
+  for (int& n : spec.patches[0].refinement.subdivisions) n = n * 3 / 2;  // 1.5x finer in every direction
   const Eigen::VectorXd finer = frequencies(spec);
   const double change = ((base - finer).array() / finer.array()).abs().maxCoeff();
   INFO("largest relative change " << change);
@@ -437,15 +437,15 @@ TEST_CASE("contact elements sized from the expected contact radius", "[model][co
   auto spec = prep::read_model_file(model);
   REQUIRE(spec.contact_resolution);
   CHECK(spec.contact_resolution->element_size() == Approx(1.68e-4 / 8).epsilon(1e-12));
-  for (const auto& g : spec.refinement.graded) CHECK(g.smallest == Approx(1.68e-4 / 8).epsilon(1e-12));
+  for (const auto& g : spec.patches[0].refinement.graded) CHECK(g.smallest == Approx(1.68e-4 / 8).epsilon(1e-12));
   prep::set_contact_radius(spec, 4e-4, "test");
-  for (const auto& g : spec.refinement.graded) CHECK(g.smallest == Approx(5e-5).epsilon(1e-12));
+  for (const auto& g : spec.patches[0].refinement.graded) CHECK(g.smallest == Approx(5e-5).epsilon(1e-12));
   // the element at the pole along the lower arc: a/8 (graded knots meet the size exactly)
   const auto body = prep::build_body(spec);
   double pole = 1e9;
   for (const auto& e : body.space.elements)
     if (e.lo(0) == 0.0 && e.lo(1) == 0.0)
-      pole = (body.refined.point(Eigen::Vector2d(e.hi(0), 0)) - body.refined.point(Eigen::Vector2d(0, 0))).norm();
+      pole = (body.refined[0].point(Eigen::Vector2d(e.hi(0), 0)) - body.refined[0].point(Eigen::Vector2d(0, 0))).norm();
   CHECK(pole == Approx(5e-5).epsilon(0.01));  // a chord of an arc element: 1 % above its length at most
 
   const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q --contact-radius 4e-4 " + model + " -o " + dir.path("s.sid.h5"));

@@ -75,7 +75,7 @@ TEST_CASE("a node and a stress line given in metres land on the rows of their pa
                                                    solid ? AnalysisType::Solid : AnalysisType::Axisymmetric, 7e10, 0.3, 2700,
                                                    solid ? test::uniform({2, 2, 2}, {2, 2, 2}) : test::uniform({3, 2}, {3, 3})));
     const Eigen::MatrixXd Phi = Eigen::MatrixXd::Random(b.dofs.total_dofs(), 4) * 1e-3;
-    const prep::NurbsPatch& patch = b.spec.patch;
+    const prep::NurbsPatch& patch = b.spec.patches[0].patch;
     const Eigen::VectorXd xi = solid ? Eigen::VectorXd(Eigen::Vector3d(0.3, 0.6, 0.2)) : Eigen::VectorXd(Eigen::Vector2d(0.3, 0.6));
     const auto by_parameter = prep::node_at(b, {"p", {xi}}, Phi);
     const auto by_point = prep::node_at(b, {"p", {patch.point(xi), true}}, Phi);

@@ -29,13 +29,13 @@ Fixture fixture(const prep::ModelSpec& spec) {
   f.sys = prep::assemble_system(f.body.space, f.body.dofs, f.body.elasticity);
   f.rigid = prep::admissible_rigid_fields(prep::rigid_nodal_fields(f.body.dofs.node_points(), spec.analysis),
                                          f.body.dofs.free_indices());
-  f.scale = prep::eigenvalue_scale(spec.material.youngs_modulus, spec.material.density, prep::body_size(f.body));
+  f.scale = prep::eigenvalue_scale(spec.patches[0].material.youngs_modulus, spec.patches[0].material.density, prep::body_size(f.body));
   return f;
 }
 
 std::vector<int> interface_of(const prep::BodyModel& b, const std::string& side) {
   std::vector<int> dofs;
-  for (int node : prep::side_nodes(b, *b.refined.side(side)))
+  for (int node : prep::side_nodes(b, 0, *b.refined[0].side(side)))
     for (int a = 0; a < b.dofs.dim(); ++a)
       if (const int i = b.dofs.free_index(node, a); i >= 0) dofs.push_back(i);
   std::sort(dofs.begin(), dofs.end());
