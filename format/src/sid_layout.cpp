@@ -20,6 +20,7 @@ std::string_view size_name(Size s) {
     case Size::Knots: return "nknots";
     case Size::Levels: return "levels";
     case Size::Timings: return "ntimings";
+    case Size::Interfaces: return "ninterfaces";
     case Size::Count: break;
   }
   return "?";
@@ -123,9 +124,11 @@ const std::vector<const Item*>& items() {
         &node::list, &node::group, &node::origin, &node::phi, &node::psi, &node::AP,
         &master::list, &master::group, &master::degrees, &master::knots, &master::weights, &master::control_points,
         &master::Phi,
-        &contact::list, &contact::group, &contact::side, &contact::master_patch, &contact::parameter, &contact::element,
+        &contact::list, &contact::group, &contact::patch, &contact::side, &contact::master_patch, &contact::parameter, &contact::element,
         &contact::position, &contact::normal, &contact::weight, &contact::Psi,
-        &stress::list, &stress::group, &stress::components, &stress::position, &stress::S,
+        &stress::list, &stress::group, &stress::patch, &stress::components, &stress::position, &stress::S,
+        &patches::list, &patches::group, &patches::youngs_modulus, &patches::poisson_ratio, &patches::density,
+        &patches::interfaces,
         &transfer::group, &transfer::coarse_model_sha256, &transfer::coarse_to_fine, &transfer::fine_to_coarse,
         &discretization::group, &discretization::elements_per_level, &discretization::functions_per_level,
         &discretization::free_dofs, &discretization::contact_radius,

@@ -93,6 +93,8 @@ void read_master_patches(const h5::Reader& r, Sid& sid) {
 
 void read_contact(const h5::Reader& r, Sid& sid) {
   read_list(r, contact::list, sid.contact_surfaces, [&](ContactSurface& s) {
+    if (r.has_attribute(contact::patch.at(s.name), std::string(contact::patch.attribute)))
+      s.patch = r.string_attribute(contact::patch.at(s.name), std::string(contact::patch.attribute));
     s.side = r.string_attribute(contact::side.at(s.name), std::string(contact::side.attribute));
     s.master_patch = r.string_attribute(contact::master_patch.at(s.name), std::string(contact::master_patch.attribute));
     s.parameter = r.matrix(contact::parameter.at(s.name));
@@ -106,6 +108,8 @@ void read_contact(const h5::Reader& r, Sid& sid) {
 
 void read_stress(const h5::Reader& r, Sid& sid) {
   read_list(r, stress::list, sid.stress_recovery, [&](StressRecovery& s) {
+    if (r.has_attribute(stress::patch.at(s.name), std::string(stress::patch.attribute)))
+      s.patch = r.string_attribute(stress::patch.at(s.name), std::string(stress::patch.attribute));
     s.components = r.strings(stress::components.at(s.name));
     s.position = r.matrix(stress::position.at(s.name));
     s.S = r.matrix(stress::S.at(s.name));
@@ -119,6 +123,16 @@ void read_transfer(const h5::Reader& r, Sid& sid) {
   t.coarse_to_fine = r.matrix(transfer::coarse_to_fine.at());
   t.fine_to_coarse = r.matrix(transfer::fine_to_coarse.at());
   sid.transfer = std::move(t);
+}
+
+void read_patches(const h5::Reader& r, Sid& sid) {
+  if (!r.exists(patches::list.at())) return;
+  read_list(r, patches::list, sid.patches, [&](PatchInfo& p) {
+    p.material.youngs_modulus = r.scalar(patches::youngs_modulus.at(p.name));
+    p.material.poisson_ratio = r.scalar(patches::poisson_ratio.at(p.name));
+    p.material.density = r.scalar(patches::density.at(p.name));
+    if (r.exists(patches::interfaces.at(p.name))) p.interfaces = r.strings(patches::interfaces.at(p.name));
+  });
 }
 
 void read_discretization(const h5::Reader& r, Sid& sid) {
@@ -159,6 +173,7 @@ Sid read_sid_unprobed(const std::string& path) {
   read_contact(r, sid);
   read_stress(r, sid);
   read_transfer(r, sid);
+  read_patches(r, sid);
   read_discretization(r, sid);
   read_provenance(r, sid);
   validate_sid(sid, path);

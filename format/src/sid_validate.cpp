@@ -70,15 +70,19 @@ private:
   std::string file_;
 };
 
+/// A material's values, reported at the given fields.
+void check_material(const Checker& c, const Material& m, const std::string& E, const std::string& nu, const std::string& rho) {
+  c.finite(E, m.youngs_modulus);
+  c.require(m.youngs_modulus > 0, E, "must be positive");
+  c.finite(nu, m.poisson_ratio);
+  c.require(m.poisson_ratio > -1 && m.poisson_ratio < 0.5, nu, "must lie in (-1, 0.5)");
+  c.finite(rho, m.density);
+  c.require(m.density > 0, rho, "must be positive");
+}
+
 void check_body(const Checker& c, const Sid& sid) {
   c.require(!sid.body_name.empty(), body::name.at(), "empty body name");
-  const Material& m = sid.material;
-  c.finite(body::youngs_modulus.at(), m.youngs_modulus);
-  c.require(m.youngs_modulus > 0, body::youngs_modulus.at(), "must be positive");
-  c.finite(body::poisson_ratio.at(), m.poisson_ratio);
-  c.require(m.poisson_ratio > -1 && m.poisson_ratio < 0.5, body::poisson_ratio.at(), "must lie in (-1, 0.5)");
-  c.finite(body::density.at(), m.density);
-  c.require(m.density > 0, body::density.at(), "must be positive");
+  check_material(c, sid.material, body::youngs_modulus.at(), body::poisson_ratio.at(), body::density.at());
   c.finite(body::thickness.at(), sid.thickness);
   c.require(sid.thickness > 0, body::thickness.at(), "must be positive");
 }
@@ -260,6 +264,29 @@ void check_stress(const Checker& c, const Sid& sid) {
   });
 }
 
+/// The patches of a multi-patch body: materials, interfaces naming a side and another patch's
+/// side, and the patch each contact surface and stress line names.
+void check_patches(const Checker& c, const Sid& sid) {
+  auto known = [&](const std::string& name) {
+    return std::any_of(sid.patches.begin(), sid.patches.end(), [&](const PatchInfo& p) { return p.name == name; });
+  };
+  check_list(c, patches::list, sid.patches, [&](const PatchInfo& p) {
+    check_material(c, p.material, patches::youngs_modulus.at(p.name), patches::poisson_ratio.at(p.name), patches::density.at(p.name));
+    for (const std::string& i : p.interfaces) {
+      const std::size_t space = i.find(' '), dot = i.find('.', space == std::string::npos ? 0 : space);
+      const bool ok = space != std::string::npos && dot != std::string::npos && side_from_name(i.substr(0, space), sid.dim()) &&
+                      known(i.substr(space + 1, dot - space - 1)) && side_from_name(i.substr(dot + 1), sid.dim());
+      c.require(ok, patches::interfaces.at(p.name), "'" + i + "' is not `side patch.side` with a patch of /patches");
+    }
+  });
+  auto check_patch = [&](const std::string& patch, const std::string& field) {
+    if (patch.empty()) return;
+    c.require(known(patch), field, "names patch '" + patch + "', which is not in " + patches::list.at());
+  };
+  for (const ContactSurface& s : sid.contact_surfaces) check_patch(s.patch, contact::patch.at(s.name));
+  for (const StressRecovery& s : sid.stress_recovery) check_patch(s.patch, stress::patch.at(s.name));
+}
+
 void check_discretization(const Checker& c, const Sid& sid) {
   if (!sid.discretization) return;
   const Discretization& d = *sid.discretization;
@@ -290,6 +317,7 @@ void validate_sid(const Sid& sid, const std::string& file) {
   check_master_patches(c, sid);
   check_contact(c, sid);
   check_stress(c, sid);
+  check_patches(c, sid);
   check_transfer(c, sid);
   check_discretization(c, sid);
 }

@@ -13,6 +13,7 @@ using namespace layout;
 // Each item's path and units come from the layout table; `name` fills a list member's "<name>".
 void put_group(h5::Writer& w, const Item& item, std::string_view name = {}) { w.group(item.at(name)); }
 void put(h5::Writer& w, const Item& item, double value) { w.scalar(item.at(), value, item.units_text()); }
+void put(h5::Writer& w, const Item& item, std::string_view name, double value) { w.scalar(item.at(name), value, item.units_text()); }
 void put_integer(h5::Writer& w, const Item& item, long long value) { w.integer(item.at(), value); }
 void put(h5::Writer& w, const Item& item, const std::string& value) { w.string(item.at(), value); }
 void put(h5::Writer& w, const Item& item, std::string_view name, const std::vector<std::string>& value) {
@@ -105,6 +106,7 @@ void write_master_patches(h5::Writer& w, const Sid& sid) {
 
 void write_contact(h5::Writer& w, const Sid& sid) {
   write_list(w, contact::list, contact::group, sid.contact_surfaces, [&](const ContactSurface& s) {
+    if (!s.patch.empty()) put_attribute(w, contact::patch, s.name, s.patch);
     put_attribute(w, contact::side, s.name, s.side);
     put_attribute(w, contact::master_patch, s.name, s.master_patch);
     put(w, contact::parameter, s.name, s.parameter);
@@ -118,9 +120,20 @@ void write_contact(h5::Writer& w, const Sid& sid) {
 
 void write_stress(h5::Writer& w, const Sid& sid) {
   write_list(w, stress::list, stress::group, sid.stress_recovery, [&](const StressRecovery& s) {
+    if (!s.patch.empty()) put_attribute(w, stress::patch, s.name, s.patch);
     put(w, stress::components, s.name, s.components);
     put(w, stress::position, s.name, s.position);
     put(w, stress::S, s.name, s.S);
+  });
+}
+
+void write_patches(h5::Writer& w, const Sid& sid) {
+  if (sid.patches.empty()) return;
+  write_list(w, patches::list, patches::group, sid.patches, [&](const PatchInfo& p) {
+    put(w, patches::youngs_modulus, p.name, p.material.youngs_modulus);
+    put(w, patches::poisson_ratio, p.name, p.material.poisson_ratio);
+    put(w, patches::density, p.name, p.material.density);
+    if (!p.interfaces.empty()) put(w, patches::interfaces, p.name, p.interfaces);
   });
 }
 
@@ -184,6 +197,7 @@ void write_sid(const Sid& sid, const std::string& path, const WriteOptions& opti
     part("master", [&] { write_master_patches(w, sid); });
     part("contact", [&] { write_contact(w, sid); });
     part("stress", [&] { write_stress(w, sid); });
+    part("patches", [&] { write_patches(w, sid); });
     part("transfer", [&] { write_transfer(w, sid); });
     part("discretization", [&] { write_discretization(w, sid); });
     part("provenance", [&] { write_provenance(w, sid); });

@@ -55,14 +55,19 @@ json describe(const Sid& sid) {
   for (const Node& n : sid.nodes) j["nodes"].push_back({{"name", n.name}, {"position", vector_json(n.origin.M0.col(0))}});
   j["contact_surfaces"] = json::array();
   for (const ContactSurface& c : sid.contact_surfaces)
-    j["contact_surfaces"].push_back({{"name", c.name}, {"side", c.side}, {"points", c.points()},
+    j["contact_surfaces"].push_back({{"name", c.name}, {"patch", c.patch}, {"side", c.side}, {"points", c.points()},
                                      {"master_patch", c.master_patch}, {"area_m2", c.weight.sum()}});
+  j["patches"] = json::array();
+  for (const PatchInfo& p : sid.patches)
+    j["patches"].push_back({{"name", p.name}, {"youngs_modulus_pa", p.material.youngs_modulus},
+                            {"poisson_ratio", p.material.poisson_ratio}, {"density_kg_m3", p.material.density},
+                            {"interfaces", p.interfaces}});
   j["master_patches"] = json::array();
   for (const MasterPatch& m : sid.master_patches)
     j["master_patches"].push_back({{"name", m.name}, {"degrees", m.degrees}, {"control_points", m.weights.size()}});
   j["stress_recovery"] = json::array();
   for (const StressRecovery& s : sid.stress_recovery)
-    j["stress_recovery"].push_back({{"name", s.name}, {"points", s.position.rows()}, {"components", s.components}});
+    j["stress_recovery"].push_back({{"name", s.name}, {"patch", s.patch}, {"points", s.position.rows()}, {"components", s.components}});
   if (const auto& d = sid.discretization)
     j["mesh"] = json{{"elements_per_level", std::vector<int>(d->elements_per_level.begin(), d->elements_per_level.end())},
                      {"functions_per_level", std::vector<int>(d->functions_per_level.begin(), d->functions_per_level.end())},
@@ -99,8 +104,14 @@ void print_text(const Sid& sid, std::ostream& out) {
       << number_text(sid.damping.f2_hz) << " Hz: alpha1 = " << number_text(sid.damping.alpha1) << " 1/s, alpha2 = "
       << number_text(sid.damping.alpha2) << " s\n";
   for (const Node& n : sid.nodes) out << "node          " << n.name << " at " << vec3(n.origin.M0.col(0)) << " m\n";
+  for (const PatchInfo& p : sid.patches) {
+    out << "patch         " << p.name << ": E " << number_text(p.material.youngs_modulus) << " Pa, nu "
+        << number_text(p.material.poisson_ratio) << ", rho " << number_text(p.material.density) << " kg/m^3";
+    for (const std::string& i : p.interfaces) out << "; " << i.substr(0, i.find(' ')) << " meets " << i.substr(i.find(' ') + 1);
+    out << "\n";
+  }
   for (const ContactSurface& c : sid.contact_surfaces)
-    out << "contact       " << c.name << ": " << c.points() << " Gauss points on side '" << c.side << "', area "
+    out << "contact       " << c.name << ": " << c.points() << " Gauss points on side '" << (c.patch.empty() ? "" : c.patch + ".") << c.side << "', area "
         << number_text(c.weight.sum()) << " m^2, master patch '" << c.master_patch << "'\n";
   for (const MasterPatch& m : sid.master_patches) {
     out << "master patch  " << m.name << ": degrees";

@@ -27,6 +27,50 @@ void check_refined_size(const NurbsPatch& p, const std::vector<double>& added, c
   }
 }
 
+/// A THB refinement that reaches into the last coarse element row along an interface side
+/// would refine or truncate functions on that side, which the other patch does not share:
+/// refused, naming the patch and the side.
+void refuse_refined_interfaces(const ModelSpec& spec, const std::vector<PatchInterface>& interfaces, int patch,
+                               const NurbsPatch& refined, const HierarchicalMesh& mesh) {
+  if (mesh.domains.size() < 2) return;
+  const ParameterBox& box = mesh.domains[1];  // the largest refined region (they are nested)
+  for (const PatchInterface& i : interfaces) {
+    if (i.a != patch && i.b != patch) continue;
+    const PatchSide side = i.a == patch ? i.side_a : i.side_b;
+    const auto d = std::size_t(side.direction);
+    const std::vector<double> u = unique_knots(refined.knots[d]);
+    // the coarse functions nonzero on the side live on the outermost span only
+    const bool clear = side.end ? box.hi[d] <= u[u.size() - 2] + 1e-12 * (u.back() - u.front())
+                                : box.lo[d] >= u[1] - 1e-12 * (u.back() - u.front());
+    if (!clear)
+      throw format::InputError(spec.file, "patch " + spec.patches[std::size_t(patch)].name + ".refinement.hierarchical",
+                               "the refined region reaches the elements along side " + side_name(side) +
+                                   ", an interface with another patch: keep it at least one element inside the patch");
+  }
+}
+
+/// The THB prolongation and level counts of one patch, widened to the whole body: the other
+/// patches' functions carry over unchanged (identity blocks) and count as level 0.
+void widen_to_body(Hierarchy& h, std::size_t thb_patch, const std::vector<AnalysisSpace>& spaces, const std::vector<NurbsPatch>& refined) {
+  std::vector<Eigen::Triplet<double>> t;
+  int row = 0, col = 0;
+  for (std::size_t k = 0; k < spaces.size(); ++k) {
+    if (k == thb_patch) {
+      for (int o = 0; o < h.prolongation.outerSize(); ++o)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(h.prolongation, o); it; ++it)
+          t.emplace_back(row + int(it.row()), col + int(it.col()), it.value());
+    } else {
+      for (int i = 0; i < spaces[k].n_functions(); ++i) t.emplace_back(row + i, col + i, 1.0);
+      h.functions_per_level[0] += spaces[k].n_functions();
+      h.elements_per_level[0] += int(spaces[k].elements.size());
+    }
+    row += spaces[k].n_functions();
+    col += refined[k].count();
+  }
+  h.prolongation.resize(row, col);
+  h.prolongation.setFromTriplets(t.begin(), t.end());
+}
+
 }  // namespace
 
 NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& r, const std::string& file) {
@@ -89,22 +133,28 @@ BodyModel build_body(const ModelSpec& spec) {
   std::vector<NurbsPatch> refined;
   for (const PatchSpec& p : spec.patches) refined.push_back(refine_patch(p.patch, p.refinement, spec.file));
   make_conforming(refined, interfaces);
-  AnalysisSpace space;
+  // one patch at most is refined hierarchically (the model file says so); the others are tensor spaces
+  std::vector<AnalysisSpace> spaces;
   std::optional<Hierarchy> hierarchy;
-  const RefinementSpec& first = spec.patches.front().refinement;
-  if (first.hierarchical) {  // bodies of one patch (the model file refuses it in several)
-    Hierarchy h{hierarchical_mesh(refined.front(), *first.hierarchical, spec.file), {}, {}, {}};
-    HierarchicalSpace thb = hierarchical_space(refined.front(), h.mesh);
-    space = std::move(thb.space);
+  std::size_t thb_patch = 0;
+  for (std::size_t k = 0; k < refined.size(); ++k) {
+    const RefinementSpec& r = spec.patches[k].refinement;
+    if (!r.hierarchical) {
+      spaces.push_back(tensor_space(refined[k]));
+      continue;
+    }
+    Hierarchy h{hierarchical_mesh(refined[k], *r.hierarchical, spec.file), {}, {}, {}};
+    refuse_refined_interfaces(spec, interfaces, int(k), refined[k], h.mesh);
+    HierarchicalSpace thb = hierarchical_space(refined[k], h.mesh);
+    spaces.push_back(std::move(thb.space));
     h.functions_per_level = std::move(thb.functions_per_level);
     h.elements_per_level = std::move(thb.elements_per_level);
     h.prolongation = std::move(thb.prolongation);
     hierarchy = std::move(h);
-  } else {
-    std::vector<AnalysisSpace> spaces;
-    for (const NurbsPatch& p : refined) spaces.push_back(tensor_space(p));
-    space = join_spaces(std::move(spaces));
+    thb_patch = k;
   }
+  if (hierarchy && refined.size() > 1) widen_to_body(*hierarchy, thb_patch, spaces, refined);
+  AnalysisSpace space = join_spaces(std::move(spaces));
   const double size = patches_size(refined);
   const int dim = format::spatial_dim(spec.analysis);
   std::vector<std::pair<int, PatchSide>> point_sides;

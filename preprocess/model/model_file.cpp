@@ -498,8 +498,9 @@ ModelSpec read_model_file(const std::string& path) {
     for (std::size_t k = 0; k < patch_tables.size(); ++k)
       if (auto r = patch_tables[k].optional_table("refinement")) {
         m.patches[k].refinement = read_refinement(*r, m.patches[k].patch, k, resolution);
-        if (m.patches[k].refinement.hierarchical)
-          r->table("hierarchical").fail("box", "hierarchical refinement in a body of several patches is not supported yet");
+        if (m.patches[k].refinement.hierarchical &&
+            std::any_of(m.patches.begin(), m.patches.begin() + std::ptrdiff_t(k), [](const PatchSpec& p) { return p.refinement.hierarchical.has_value(); }))
+          r->table("hierarchical").fail("box", "only one patch of a body may be refined hierarchically");
       }
   }
   if (m.contact_resolution && m.contact_resolution->graded.empty() && !m.contact_resolution->hierarchical)
@@ -528,7 +529,8 @@ void set_contact_radius(ModelSpec& model, double radius, const std::string& sour
   ContactResolutionSpec& resolution = *model.contact_resolution;
   resolution.contact_radius = radius;
   for (const auto& [patch, k] : resolution.graded) model.patches[patch].refinement.graded[k].smallest = resolution.element_size();
-  if (resolution.hierarchical) model.patches[0].refinement.hierarchical->smallest = resolution.element_size();
+  for (PatchSpec& p : model.patches)
+    if (resolution.hierarchical && p.refinement.hierarchical) p.refinement.hierarchical->smallest = resolution.element_size();
 }
 
 }  // namespace isosid::prep

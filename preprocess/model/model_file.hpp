@@ -77,7 +77,7 @@ struct ContactResolutionSpec {
   double elements_per_radius = 8;      ///< smallest contact element = contact_radius / this
   /// the refinement.graded entries sized by it: (patch, entry)
   std::vector<std::pair<std::size_t, std::size_t>> graded;
-  bool hierarchical = false;           ///< refinement.hierarchical (of the one patch) sized by it
+  bool hierarchical = false;           ///< refinement.hierarchical (of the one patch that has it) sized by it
   double element_size() const { return contact_radius / elements_per_radius; }
 };
 

@@ -72,6 +72,17 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   }
   for (const NodeSpec& n : spec.nodes) sid.nodes.push_back(node_at(body, n, Phi));
   for (const StressLineSpec& l : spec.stress_lines) sid.stress_recovery.push_back(stress_rows(body, l, Phi));
+  if (spec.patches.size() > 1) {  // the patches, their materials and interfaces; what lies on which
+    for (const PatchSpec& p : spec.patches) sid.patches.push_back({p.name, p.material, {}});
+    for (const PatchInterface& i : body.interfaces) {
+      sid.patches[std::size_t(i.a)].interfaces.push_back(side_name(i.side_a) + " " + spec.patches[std::size_t(i.b)].name + "." + side_name(i.side_b));
+      sid.patches[std::size_t(i.b)].interfaces.push_back(side_name(i.side_b) + " " + spec.patches[std::size_t(i.a)].name + "." + side_name(i.side_a));
+    }
+    for (std::size_t k = 0; k < spec.contact_surfaces.size(); ++k)
+      sid.contact_surfaces[k].patch = spec.patches[std::size_t(spec.contact_surfaces[k].patch)].name;
+    for (std::size_t k = 0; k < spec.stress_lines.size(); ++k)
+      sid.stress_recovery[k].patch = spec.patches[std::size_t(spec.stress_lines[k].patch)].name;
+  }
 
   format::Discretization& mesh = sid.discretization.emplace();
   auto as_vector = [](const std::vector<int>& v) { return Eigen::VectorXi(Eigen::Map<const Eigen::VectorXi>(v.data(), Eigen::Index(v.size()))); };

@@ -38,19 +38,20 @@ double contact_element_size(const format::ContactSurface& surface, const format:
   return *quartile;
 }
 
-double combined_modulus(const FloatingBody& slave, const FloatingBody* master) {
-  auto compliance = [](const FloatingBody& b) {
-    const format::Material& m = b.sid().material;
+double combined_modulus(const FloatingBody& slave, const FloatingBody* master, const std::string& slave_patch,
+                        const std::string& master_patch) {
+  auto compliance = [](const FloatingBody& b, const std::string& patch) {
+    const format::Material& m = format::material_of(b.sid(), patch);
     return b.nq() == 0 || m.youngs_modulus <= 0 ? 0.0 : (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
   };
-  return 1 / (compliance(slave) + (master ? compliance(*master) : 0.0));
+  return 1 / (compliance(slave, slave_patch) + (master ? compliance(*master, master_patch) : 0.0));
 }
 
 double default_penalty(const FloatingBody& slave, const format::ContactSurface& slave_surface, const FloatingBody* master,
                        const format::ContactSurface* master_surface, double contact_radius) {
   double h = contact_element_size(slave_surface, slave.sid());
   if (master && master_surface) h = std::min(h, contact_element_size(*master_surface, master->sid()));
-  const double modulus = combined_modulus(slave, master);
+  const double modulus = combined_modulus(slave, master, slave_surface.patch, master_surface ? master_surface->patch : "");
   if (!std::isfinite(h) || !std::isfinite(modulus))
     throw format::InputError(slave.name(), "penalty",
                              "cannot be derived (no contact element size or no elastic material): give it in the scene");

@@ -3,6 +3,7 @@
 // over which the contact carries load: the Hertz contact radius a the impact will reach, or
 // the size h of the fine contact elements where that is larger or unknown.
 #pragma once
+#include <string>
 #include "body/floating_body.hpp"
 
 #include <map>
@@ -27,8 +28,10 @@ std::map<int, double> contact_element_lengths(const format::ContactSurface& surf
 double contact_element_size(const format::ContactSurface& surface, const format::Sid& sid);
 
 /// Combined modulus E* of two bodies: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2; a body without
-/// elastic coordinates (rigid) adds nothing. `master` may be null (a fixed surface).
-double combined_modulus(const FloatingBody& slave, const FloatingBody* master);
+/// elastic coordinates (rigid) adds nothing. `master` may be null (a fixed surface). The
+/// patches name whose material applies in a body of several patches (format::material_of).
+double combined_modulus(const FloatingBody& slave, const FloatingBody* master, const std::string& slave_patch = "",
+                        const std::string& master_patch = "");
 
 /// c_p = kPenaltyStiffnessRatio E* / max(a, h) (N/m^3), h the contact element size of both
 /// surfaces (`master_surface` may be null), a the expected contact radius or half-width (0:

@@ -81,7 +81,7 @@ std::optional<ImpactEstimate> estimate_impact(const SurfaceContact& contact, con
   e.approach_speed = -best.normal.dot(body.point_velocity(best_P, Psi, y) - v_target);
   const double m1 = sid.refmod.mass, m2 = target.body() ? target.body()->sid().refmod.mass : INFINITY;
   const double mass = std::isinf(m2) ? m1 : m1 * m2 / (m1 + m2);
-  const double modulus = combined_modulus(body, target.body());
+  const double modulus = combined_modulus(body, target.body(), surface.patch);
   const auto lengths = contact_element_lengths(surface, sid);
   const auto element = lengths.find(surface.element(nearest));
   if (e.approach_speed <= 0 || !std::isfinite(modulus) || relative(0) <= 0 || (!line && relative(1) <= 0) || element == lengths.end())

@@ -63,7 +63,8 @@ void StressMonitor::evaluate(const double* y) {
   sigma_.noalias() = line_.S * body_.q(y);
   const auto nc = Eigen::Index(line_.components.size());
   for (Eigen::Index i = 0; i < points(); ++i)
-    values_(i) = von_mises(line_.components, sigma_.data() + i * nc, body_.sid().analysis, body_.sid().material.poisson_ratio);
+    values_(i) = von_mises(line_.components, sigma_.data() + i * nc, body_.sid().analysis,
+                          format::material_of(body_.sid(), line_.patch).poisson_ratio);
 }
 
 void StressMonitor::sample(const double* y) {

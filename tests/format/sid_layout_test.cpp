@@ -64,11 +64,22 @@ TEST_CASE("a written SID holds exactly the items of the layout table", "[format]
   const test::ScratchDir dir("layout");
   format::Sid sid = test::lumped_sid(test::random_lumped_body(12, 5, 4));
   sid.discretization = format::Discretization{Eigen::VectorXi::Constant(2, 8), Eigen::VectorXi::Constant(2, 20), 60, 1.5e-4};
+  // as a body of two patches: materials, interfaces, and the patch of each surface and line
+  sid.patches = {{"a", sid.material, {"xi1 b.xi0"}}, {"b", {7e10, 0.33, 2700}, {"xi0 a.xi1"}}};
+  sid.contact_surfaces[0].patch = "a";
+  sid.stress_recovery[0].patch = "b";
   REQUIRE(sid.transfer);
   REQUIRE(!sid.master_patches.empty());
   REQUIRE(!sid.stress_recovery.empty());
   const std::string file = dir.path("all.sid.h5");
   format::write_sid(sid, file);
+
+  const format::Sid back = format::read_sid(file);
+  REQUIRE(back.patches.size() == 2);
+  CHECK(back.patches[1].material.density == 2700);
+  CHECK(back.patches[0].interfaces == std::vector<std::string>{"xi1 b.xi0"});
+  CHECK(back.contact_surfaces[0].patch == "a");
+  CHECK(back.stress_recovery[0].patch == "b");
 
   const std::set<std::string> objects = hdf5_objects(file);
   std::set<const layout::Item*> seen;

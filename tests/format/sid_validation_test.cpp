@@ -163,6 +163,19 @@ TEST_CASE("non-positive mass and other physics checks are refused before writing
     s.contact_surfaces[0].side = "bottom";
     CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face") && Contains("'bottom' is not a side"));
   }
+  SECTION("a contact surface on a patch the SID does not have") {
+    s.patches = {{"a", s.material, {}}, {"b", s.material, {}}};
+    s.contact_surfaces[0].patch = "c";
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face") && Contains("names patch 'c'"));
+  }
+  SECTION("an interface that names no patch side") {
+    s.patches = {{"a", s.material, {"xi1 nowhere.xi0"}}, {"b", s.material, {}}};
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/patches/a/interfaces") && Contains("'xi1 nowhere.xi0'"));
+  }
+  SECTION("a patch material out of range") {
+    s.patches = {{"a", {2e11, 0.7, 7800}, {}}};
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/patches/a/poisson_ratio"));
+  }
   SECTION("Poisson ratio") {
     s.material.poisson_ratio = 0.5;
     CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/body/poisson_ratio"));

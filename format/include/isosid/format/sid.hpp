@@ -52,7 +52,8 @@ struct Node {
 /// Gauss points of a contact boundary: where the runtime evaluates penalty contact.
 struct ContactSurface {
   std::string name;
-  std::string side;            ///< the patch side it lies on, e.g. "bottom"
+  std::string patch;           ///< the body's patch it lies on (empty: a body of one patch)
+  std::string side;            ///< the patch side it lies on, e.g. "zeta0"
   std::string master_patch;    ///< the MasterPatch describing the same boundary
   Eigen::MatrixXd parameter;   ///< npts x param_dim, patch parameters of each point
   Eigen::VectorXi element;     ///< npts, element index (in the body's element list)
@@ -76,9 +77,17 @@ struct MasterPatch {
 /// Points where stresses are recovered as sigma = S q (linear elasticity).
 struct StressRecovery {
   std::string name;
+  std::string patch;                     ///< the body's patch it lies in (empty: a body of one patch)
   std::vector<std::string> components;   ///< e.g. xx yy zz xy (2D) or xx yy zz xy yz xz (3D)
   Eigen::MatrixXd position;              ///< npts x dim, m
   Eigen::MatrixXd S;                     ///< (npts*ncomp) x nq, Pa per unit q
+};
+
+/// One patch of a body of several: its material and where it meets the others.
+struct PatchInfo {
+  std::string name;
+  Material material;
+  std::vector<std::string> interfaces;   ///< "side other.side", e.g. "xi1 beam_free.xi0"
 };
 
 /// Maps elastic coordinates between a coarse model and this (refined) model of one body.
@@ -126,6 +135,7 @@ struct Sid {
   std::vector<ContactSurface> contact_surfaces;
   std::vector<MasterPatch> master_patches;
   std::vector<StressRecovery> stress_recovery;
+  std::vector<PatchInfo> patches;  ///< bodies of several patches only; `material` is then one of theirs
   std::optional<TransferOperator> transfer;
   std::optional<Discretization> discretization;
   Provenance provenance;
@@ -133,6 +143,14 @@ struct Sid {
   Eigen::Index nq() const { return refmod.nq(); }
   int dim() const { return spatial_dim(analysis); }
 };
+
+/// The material of the body's patch `patch` (a contact surface's or stress line's), or the
+/// body's material for a body of one patch.
+inline const Material& material_of(const Sid& sid, const std::string& patch) {
+  for (const PatchInfo& p : sid.patches)
+    if (p.name == patch) return p.material;
+  return sid.material;
+}
 
 /// The master patch called `name`, or nullptr (how a contact surface finds its boundary NURBS).
 inline const MasterPatch* find_master_patch(const Sid& sid, const std::string& name) {

@@ -13,7 +13,7 @@
 namespace isosid::format::layout {
 
 /// The sizes shape rules are written in.
-enum class Size { One, Nq, Dim, Points, ControlPoints, Components, CoarseNq, ParamDim, Knots, Levels, Timings, Count };
+enum class Size { One, Nq, Dim, Points, ControlPoints, Components, CoarseNq, ParamDim, Knots, Levels, Timings, Interfaces, Count };
 
 /// factor * a * b, e.g. 3nq = {3, Nq}, npts·dim = {1, Points, Dim}.
 struct Extent {
@@ -168,6 +168,8 @@ inline constexpr Item list{"/contact", {}, Kind::Group, kScalar, "", Presence::R
 inline constexpr Item group{"/contact/<name>", {}, Kind::Group, kScalar, "", Presence::Optional, "one contact surface"};
 inline constexpr Item side{"/contact/<name>", "side", Kind::StringAttribute, kScalar, "", Presence::Required,
                            "the patch side its points lie on: xi0, xi1, eta0, eta1, zeta0 or zeta1 (direction and end)"};
+inline constexpr Item patch{"/contact/<name>", "patch", Kind::StringAttribute, kScalar, "", Presence::Optional,
+                            "the patch (in /patches) of a body of several patches it lies on"};
 inline constexpr Item master_patch{"/contact/<name>", "master_patch", Kind::StringAttribute, kScalar, "",
                                    Presence::Required, "the master patch of the same boundary (in /master), or empty"};
 inline constexpr Item parameter{"/contact/<name>/parameter", {}, Kind::Float64,
@@ -189,6 +191,8 @@ namespace stress {
 inline constexpr Item list{"/stress", {}, Kind::Group, kScalar, "", Presence::Required,
                            "stress recovery point sets, σ = S q"};
 inline constexpr Item group{"/stress/<name>", {}, Kind::Group, kScalar, "", Presence::Optional, "one point set"};
+inline constexpr Item patch{"/stress/<name>", "patch", Kind::StringAttribute, kScalar, "", Presence::Optional,
+                            "the patch (in /patches) of a body of several patches the points lie in"};
 inline constexpr Item components{"/stress/<name>/components", {}, Kind::String, vector_of({1, Size::Components}), "",
                                  Presence::Required, "e.g. xx yy zz xy (2D) or xx yy zz xy yz xz (3D)"};
 inline constexpr Item position{"/stress/<name>/position", {}, Kind::Float64, matrix({1, Size::Points}, {1, Size::Dim}),
@@ -196,6 +200,21 @@ inline constexpr Item position{"/stress/<name>/position", {}, Kind::Float64, mat
 inline constexpr Item S{"/stress/<name>/S", {}, Kind::Float64, matrix({1, Size::Points, Size::Components}, kNq), "Pa/[q]",
                         Presence::Required, "stress rows, row p·ncomp + c"};
 }  // namespace stress
+
+namespace patches {
+inline constexpr Item list{"/patches", {}, Kind::Group, kScalar, "", Presence::Optional,
+                           "the patches of a body of several (absent for one patch; /body then holds the material of "
+                           "the first contact surface's patch, else the one of highest wave speed)"};
+inline constexpr Item group{"/patches/<name>", {}, Kind::Group, kScalar, "", Presence::Optional, "one patch"};
+inline constexpr Item youngs_modulus{"/patches/<name>/youngs_modulus", {}, Kind::Float64, kScalar, "Pa", Presence::Optional,
+                                     "its Young's modulus, > 0"};
+inline constexpr Item poisson_ratio{"/patches/<name>/poisson_ratio", {}, Kind::Float64, kScalar, "1", Presence::Optional,
+                                    "its Poisson's ratio, in (-1, 0.5)"};
+inline constexpr Item density{"/patches/<name>/density", {}, Kind::Float64, kScalar, "kg/m^3", Presence::Optional,
+                              "its density, > 0"};
+inline constexpr Item interfaces{"/patches/<name>/interfaces", {}, Kind::String, vector_of({1, Size::Interfaces}), "",
+                                 Presence::Optional, "where it meets another patch: `side other.side`, e.g. `xi1 beam.xi0`"};
+}  // namespace patches
 
 namespace transfer {
 inline constexpr Item group{"/transfer", {}, Kind::Group, kScalar, "", Presence::Optional,
