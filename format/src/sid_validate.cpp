@@ -279,9 +279,14 @@ void check_patches(const Checker& c, const Sid& sid) {
       c.require(ok, patches::interfaces.at(p.name), "'" + i + "' is not `side patch.side` with a patch of /patches");
     }
   });
-  auto check_patch = [&](const std::string& patch, const std::string& field) {
-    if (patch.empty()) return;
-    c.require(known(patch), field, "names patch '" + patch + "', which is not in " + patches::list.at());
+  auto check_patch = [&](const std::string& patches_named, const std::string& field) {
+    std::size_t from = 0;
+    while (from < patches_named.size()) {  // space-separated for a surface over several patches
+      const std::size_t to = std::min(patches_named.find(' ', from), patches_named.size());
+      const std::string patch = patches_named.substr(from, to - from);
+      c.require(known(patch), field, "names patch '" + patch + "', which is not in " + patches::list.at());
+      from = to + 1;
+    }
   };
   for (const ContactSurface& s : sid.contact_surfaces) check_patch(s.patch, contact::patch.at(s.name));
   for (const StressRecovery& s : sid.stress_recovery) check_patch(s.patch, stress::patch.at(s.name));

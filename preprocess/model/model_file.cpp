@@ -315,9 +315,19 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     c.allow_only({"name", "side", "interval", "points_per_direction"});
     ContactSurfaceSpec s;
     s.name = unique_name(c, surfaces);
-    const SideRef ref = side_ref(c, "side", c.string("side"), m.patches);
+    // one side, or several patch sides that continue each other (a surface over several patches)
+    const std::vector<std::string> sides = c.holds_string("side") ? std::vector<std::string>{c.string("side")} : c.strings("side");
+    if (sides.empty()) c.fail("side", "names no side");
+    const SideRef ref = side_ref(c, "side", sides[0], m.patches);
     s.patch = ref.patch;
     s.side = ref.side;
+    for (std::size_t k = 1; k < sides.size(); ++k) {
+      const SideRef more = side_ref(c, "side", sides[k], m.patches);
+      if (more.resolved.direction != ref.resolved.direction || more.resolved.end != ref.resolved.end)
+        c.fail("side", "'" + sides[k] + "' is not the same side as '" + sides[0] + "' (a surface over several patches joins like sides)");
+      s.continued.push_back({more.patch, more.side});
+    }
+    if (!s.continued.empty() && c.has("interval")) c.fail("interval", "only on a surface of one patch side");
     const NurbsPatch& patch = m.patches[std::size_t(s.patch)].patch;
     const PatchSide* side = &ref.resolved;
     if (c.has("interval")) {
@@ -398,6 +408,7 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
       // inside the parameter range of the interface surface's side
       const auto surface = std::find_if(m.contact_surfaces.begin(), m.contact_surfaces.end(),
                                         [&](const ContactSurfaceSpec& s) { return s.name == red.interface_surface; });
+      if (!surface->continued.empty()) r->fail("interface_surface", "must lie on one patch side (its interface_center is a parameter there)");
       const NurbsPatch& patch = m.patches[std::size_t(surface->patch)].patch;
       const std::vector<double> c = r->numbers("interface_center");
       if (int(c.size()) != patch.param_dim() - 1) r->fail("interface_center", "needs one parameter per tangential direction");

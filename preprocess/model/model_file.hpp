@@ -54,6 +54,9 @@ struct ContactSurfaceSpec {
   std::vector<std::array<double, 2>> interval;  ///< per tangential direction; empty: the whole side
   int points_per_direction = 0;                 ///< Gauss points per element and direction (0: p+1)
   int patch = 0;                                ///< index in ModelSpec::patches
+  /// further (patch, side) the surface continues over, in order along one tangential direction
+  /// (`side = ["a.zeta1", "b.zeta1", ...]`); its points and master patch are joined
+  std::vector<std::pair<int, std::string>> continued;
 };
 
 struct NodeSpec {

@@ -5,6 +5,7 @@
 #include "isosid/common/sha256.hpp"
 #include "isosid/version.hpp"
 #include "sid/contact_data.hpp"
+#include "sid/joined_surface.hpp"
 #include "sid/master_patch.hpp"
 #include "sid/node_data.hpp"
 #include "sid/sid_terms.hpp"
@@ -67,8 +68,14 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   sid.De.M0 = sid.damping.alpha1 * sid.Me.M0 + sid.damping.alpha2 * sid.Ke.M0;
 
   for (const ContactSurfaceSpec& c : spec.contact_surfaces) {
-    sid.contact_surfaces.push_back(contact_surface(body, c, Phi));
-    sid.master_patches.push_back(master_patch(body, c.name, c.patch, *body.refined[std::size_t(c.patch)].side(c.side), Phi));
+    if (c.continued.empty()) {
+      sid.contact_surfaces.push_back(contact_surface(body, c, Phi));
+      sid.master_patches.push_back(master_patch(body, c.name, c.patch, *body.refined[std::size_t(c.patch)].side(c.side), Phi));
+    } else {  // over several patch sides
+      JoinedSurface joined = joined_contact_surface(body, c, Phi);
+      sid.contact_surfaces.push_back(std::move(joined.surface));
+      sid.master_patches.push_back(std::move(joined.master));
+    }
   }
   for (const NodeSpec& n : spec.nodes) sid.nodes.push_back(node_at(body, n, Phi));
   for (const StressLineSpec& l : spec.stress_lines) sid.stress_recovery.push_back(stress_rows(body, l, Phi));
@@ -78,8 +85,11 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
       sid.patches[std::size_t(i.a)].interfaces.push_back(side_name(i.side_a) + " " + spec.patches[std::size_t(i.b)].name + "." + side_name(i.side_b));
       sid.patches[std::size_t(i.b)].interfaces.push_back(side_name(i.side_b) + " " + spec.patches[std::size_t(i.a)].name + "." + side_name(i.side_a));
     }
-    for (std::size_t k = 0; k < spec.contact_surfaces.size(); ++k)
-      sid.contact_surfaces[k].patch = spec.patches[std::size_t(spec.contact_surfaces[k].patch)].name;
+    for (std::size_t k = 0; k < spec.contact_surfaces.size(); ++k) {
+      const ContactSurfaceSpec& c = spec.contact_surfaces[k];
+      sid.contact_surfaces[k].patch = spec.patches[std::size_t(c.patch)].name;
+      for (const auto& [patch, side] : c.continued) sid.contact_surfaces[k].patch += " " + spec.patches[std::size_t(patch)].name;
+    }
     for (std::size_t k = 0; k < spec.stress_lines.size(); ++k)
       sid.stress_recovery[k].patch = spec.patches[std::size_t(spec.stress_lines[k].patch)].name;
   }

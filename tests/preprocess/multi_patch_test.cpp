@@ -9,6 +9,7 @@
 #include "refine/patch_refinement.hpp"
 #include "pipeline/prepare.hpp"
 #include "sid/body_integrals.hpp"
+#include "sid/joined_surface.hpp"
 #include "sid/transfer.hpp"
 #include "space/reference_rule.hpp"
 #include "preprocess/body_fixtures.hpp"
@@ -17,6 +18,7 @@
 
 #include <catch2/catch.hpp>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 using namespace isosid;
@@ -209,7 +211,41 @@ TEST_CASE("the SID of a multi-patch body records its patches, and isosid-info sh
   CHECK(sid.material.youngs_modulus == 2.1e11);  // the contact surface's patch
   const auto info = test::run_program(std::string(ISOSID_INFO_EXE) + " " + sid_file);
   CHECK_THAT(info.out, Catch::Matchers::Contains("patch         upright: E 2.1e+11 Pa, nu 0.3, rho 7850 kg/m^3; eta0 meets corner.eta1"));
-  CHECK_THAT(info.out, Catch::Matchers::Contains("on side 'upright.eta1'"));
+  CHECK_THAT(info.out, Catch::Matchers::Contains("on side 'eta1' of patch upright"));
+}
+
+TEST_CASE("a contact surface over three patch sides: one surface, one joined master patch", "[multipatch][contact]") {
+  const prep::BodyModel b = prep::build_body(model("beam_clamped_glued.model.toml"));
+  const prep::ContactSurfaceSpec& spec = b.spec.contact_surfaces.at(0);
+  REQUIRE(spec.continued.size() == 2);
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Eigen::MatrixXd Phi(b.dofs.total_dofs(), 2);
+  for (Eigen::Index i = 0; i < Phi.size(); ++i) Phi(i) = u(gen);
+  const prep::JoinedSurface j = prep::joined_contact_surface(b, spec, Phi);
+  // the Gauss points of the three sides: the whole top face, 210 x 15 mm
+  CHECK(j.surface.weight.sum() == Approx(0.210 * 0.015).epsilon(1e-12));
+  // parameters laid end to end: xi runs over [0, 3], zeta stays at the side
+  CHECK(j.surface.parameter.col(0).maxCoeff() < 3.0);
+  CHECK(j.surface.parameter.col(0).maxCoeff() > 2.0);
+  CHECK((j.surface.parameter.col(2).array() == 1.0).all());
+  // the joined master patch: the face's geometry and the body's displacement at every point,
+  // the joints between patches included (C0 knots there)
+  prep::NurbsPatch face;
+  face.degrees = j.master.degrees;
+  face.knots = j.master.knots;
+  face.weights = j.master.weights;
+  face.points.resize(j.master.weights.size(), 3 + 3 * 2);
+  face.points.leftCols(3) = j.master.control_points;
+  for (Eigen::Index i = 0; i < j.master.weights.size(); ++i)
+    for (int c = 0; c < 2; ++c) face.points.block(i, 3 + 3 * c, 1, 3) = j.master.Phi.block(3 * i, c, 3, 1).transpose();
+  for (Eigen::Index g = 0; g < j.surface.points(); ++g) {
+    const Eigen::Vector2d at_face(j.surface.parameter(g, 0), j.surface.parameter(g, 1));
+    const Eigen::VectorXd on_face = face.point(at_face);
+    CHECK((on_face.head(3) - j.surface.position.row(g).transpose()).norm() < 1e-12 * 0.21);
+    // the contact rows Psi are the body's displacement at the point: the same field
+    for (int c = 0; c < 2; ++c) CHECK((on_face.segment(3 + 3 * c, 3) - j.surface.Psi.block(3 * g, c, 3, 1)).norm() < 1e-10);
+  }
 }
 
 /// The L-bracket model with a hierarchical refinement of its steel upright around `point`.

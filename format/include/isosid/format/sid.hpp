@@ -52,7 +52,7 @@ struct Node {
 /// Gauss points of a contact boundary: where the runtime evaluates penalty contact.
 struct ContactSurface {
   std::string name;
-  std::string patch;           ///< the body's patch it lies on (empty: a body of one patch)
+  std::string patch;           ///< the body's patch it lies on (empty: a body of one patch; several: space-separated)
   std::string side;            ///< the patch side it lies on, e.g. "zeta0"
   std::string master_patch;    ///< the MasterPatch describing the same boundary
   Eigen::MatrixXd parameter;   ///< npts x param_dim, patch parameters of each point
@@ -147,8 +147,9 @@ struct Sid {
 /// The material of the body's patch `patch` (a contact surface's or stress line's), or the
 /// body's material for a body of one patch.
 inline const Material& material_of(const Sid& sid, const std::string& patch) {
+  const std::string first = patch.substr(0, patch.find(' '));  // a surface over several patches: its first
   for (const PatchInfo& p : sid.patches)
-    if (p.name == patch) return p.material;
+    if (p.name == first) return p.material;
   return sid.material;
 }
 

@@ -169,7 +169,8 @@ inline constexpr Item group{"/contact/<name>", {}, Kind::Group, kScalar, "", Pre
 inline constexpr Item side{"/contact/<name>", "side", Kind::StringAttribute, kScalar, "", Presence::Required,
                            "the patch side its points lie on: xi0, xi1, eta0, eta1, zeta0 or zeta1 (direction and end)"};
 inline constexpr Item patch{"/contact/<name>", "patch", Kind::StringAttribute, kScalar, "", Presence::Optional,
-                            "the patch (in /patches) of a body of several patches it lies on"};
+                            "the patch (in /patches) of a body of several patches it lies on; several, space-separated, "
+                            "for a surface over several patch sides (its points and master patch joined end to end)"};
 inline constexpr Item master_patch{"/contact/<name>", "master_patch", Kind::StringAttribute, kScalar, "",
                                    Presence::Required, "the master patch of the same boundary (in /master), or empty"};
 inline constexpr Item parameter{"/contact/<name>/parameter", {}, Kind::Float64,
