@@ -1,0 +1,37 @@
+// MacNeal's massless-boundary reduction (seed 003; Monjaraz-Tec, Gross & Krack 2022):
+// free-interface normal modes plus residual-flexibility attachment modes of the boundary DOFs.
+// Coordinates [u_b; eta]: u_b the physical displacements of the boundary DOFs, which carry no
+// mass, eta the amplitudes of the retained elastic modes. A free body is reduced with inertia
+// relief: boundary loads are balanced by rigid-body inertia, and the flexibility acts on the
+// elastic subspace only (the floating frame carries the rigid motion).
+#pragma once
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <vector>
+
+namespace isosid::prep {
+
+struct MasslessBoundaryModel {
+  std::vector<int> boundary_dofs;  ///< free DOF indices, in the order of u_b
+  Eigen::MatrixXd T;               ///< free DOFs x (nb + nm): u = T [u_b; eta]; its boundary rows are [I 0]
+  Eigen::MatrixXd K;               ///< (nb + nm)^2, T^T K T
+  Eigen::MatrixXd M;               ///< diag(0_bb, I): the boundary carries no mass (not T^T M T, by design)
+  Eigen::VectorXd omega2;          ///< the retained elastic modes' squared frequencies
+  Eigen::Index boundary() const { return Eigen::Index(boundary_dofs.size()); }
+};
+
+/// Reduces (K, M) on the free DOFs to the boundary DOFs plus `n_modes` elastic free-interface
+/// modes. `rigid` holds the admissible rigid-body fields (columns; none for a constrained
+/// body); `lambda_scale` as for lowest_modes.
+MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                                        const Eigen::MatrixXd& rigid, const std::vector<int>& boundary_dofs, int n_modes,
+                                        double lambda_scale);
+
+/// The elastic static response K^+ L of loads L on the free DOFs (columns): K^-1 L for a
+/// constrained body; for a free one the loads are first balanced by rigid-body inertia
+/// (L <- P L, P = I - M R R^T with R the M-orthonormal rigid fields) and the response is the
+/// one without rigid content (R^T M u = 0).
+Eigen::MatrixXd elastic_static_response(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                                        const Eigen::MatrixXd& rigid, const Eigen::MatrixXd& loads, double lambda_scale);
+
+}  // namespace isosid::prep
