@@ -60,6 +60,8 @@ private:
   std::string names_;
   mutable Eigen::VectorXd z_, R_, step_, z_old_, coefficients_;
   mutable Eigen::MatrixXd scaled_U_, small_;
+  mutable Eigen::MatrixXd jacobian_;                         ///< K + U V^T, formed when the rank exceeds the size
+  mutable Eigen::PartialPivLU<Eigen::MatrixXd> jacobian_lu_;
   mutable QuasistaticTerms terms_;
   mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual
   mutable Eigen::VectorXd rotation_loads_;       ///< centrifugal and Coriolis loads on z
