@@ -2,6 +2,7 @@
 #include "reduce/sparse_cholesky.hpp"
 
 #include "isosid/format/error.hpp"
+#include "reduce/blas_threads.hpp"
 
 #include <Eigen/CholmodSupport>
 
@@ -12,6 +13,7 @@ struct SparseCholesky::Impl {
 };
 
 SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& A) : impl_(std::make_unique<Impl>()) {
+  use_single_threaded_blas();
   impl_->llt.compute(A);
   if (impl_->llt.info() != Eigen::Success)
     throw format::ComputationError("CHOLMOD: the matrix is not positive definite (is the body free of constraints?)");

@@ -1,0 +1,17 @@
+// One BLAS thread; see blas_threads.hpp.
+#include "reduce/blas_threads.hpp"
+
+#include <dlfcn.h>
+#include <mutex>
+
+namespace isosid::prep {
+
+void use_single_threaded_blas() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    using SetThreads = void (*)(int);
+    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
+  });
+}
+
+}  // namespace isosid::prep
