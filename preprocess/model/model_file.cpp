@@ -215,16 +215,20 @@ struct SideRef {
   PatchSide resolved;
 };
 
+/// The index of the patch called `name`; refused at `key` if there is none.
+int patch_named(const TomlView& t, const std::string& key, const std::string& name, const std::vector<PatchSpec>& patches) {
+  const auto it = std::find_if(patches.begin(), patches.end(), [&](const PatchSpec& p) { return p.name == name; });
+  if (it == patches.end()) t.fail(key, "no patch named '" + name + "'");
+  return int(it - patches.begin());
+}
+
 SideRef side_ref(const TomlView& t, const std::string& key, const std::string& text, const std::vector<PatchSpec>& patches) {
   SideRef ref{0, text, {}};
   if (patches.size() > 1) {
     const std::size_t dot = text.find('.');
     if (dot == std::string::npos)
       t.fail(key, "'" + text + "': name the patch too, as patch.side (e.g. " + patches[0].name + ".xi0)");
-    const std::string name = text.substr(0, dot);
-    const auto it = std::find_if(patches.begin(), patches.end(), [&](const PatchSpec& p) { return p.name == name; });
-    if (it == patches.end()) t.fail(key, "no patch named '" + name + "'");
-    ref.patch = int(it - patches.begin());
+    ref.patch = patch_named(t, key, text.substr(0, dot), patches);
     ref.side = text.substr(dot + 1);
   }
   const auto side = patches[std::size_t(ref.patch)].patch.side(ref.side);
@@ -235,11 +239,7 @@ SideRef side_ref(const TomlView& t, const std::string& key, const std::string& t
 
 /// The patch a node or stress line lies in: the `patch` key in a body of several patches.
 int patch_key(const TomlView& t, const std::vector<PatchSpec>& patches) {
-  if (patches.size() == 1) return 0;
-  const std::string name = t.string("patch");
-  const auto it = std::find_if(patches.begin(), patches.end(), [&](const PatchSpec& p) { return p.name == name; });
-  if (it == patches.end()) t.fail("patch", "no patch named '" + name + "'");
-  return int(it - patches.begin());
+  return patches.size() == 1 ? 0 : patch_named(t, "patch", t.string("patch"), patches);
 }
 
 std::vector<FixedComponents> read_boundary(const TomlView& b, const std::vector<PatchSpec>& patches, int dim) {
