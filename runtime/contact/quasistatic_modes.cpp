@@ -89,16 +89,14 @@ void solve_leading_block(Eigen::MatrixXd& A, Eigen::Index r, Eigen::VectorXd& b)
 void QuasistaticModes::solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   const Eigen::Index r = terms_.rank;
   const auto U = terms_.U.leftCols(r), V = terms_.V.leftCols(r);
-  if (dense_stiffness_.size()) {
-    x = (dense_stiffness_ + U * V.transpose()).partialPivLu().solve(b);
-    return;
-  }
-  // more active contact terms than quasistatic modes: the n x n Jacobian itself is cheaper to
-  // form and factor (n^2 r + n^3 / 3) than Woodbury's r x r capacitance (n r^2 + r^3 / 3)
-  if (r > size()) {
+  // the n x n Jacobian itself: always for a dense K_h, and when more contact terms are active
+  // than there are quasistatic modes (forming and factoring it, n^2 r + n^3 / 3, is then cheaper
+  // than Woodbury's r x r capacitance, n r^2 + r^3 / 3)
+  if (dense_stiffness_.size() || r > size()) {
     if (jacobian_.rows() != size()) jacobian_.resize(size(), size()), jacobian_lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(size());
     jacobian_.noalias() = U * V.transpose();
-    jacobian_.diagonal() += stiffness_;
+    if (dense_stiffness_.size()) jacobian_ += dense_stiffness_;
+    else jacobian_.diagonal() += stiffness_;
     jacobian_lu_.compute(jacobian_);
     x = jacobian_lu_.solve(b);
     return;

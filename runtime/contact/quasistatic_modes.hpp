@@ -60,7 +60,7 @@ private:
   std::string names_;
   mutable Eigen::VectorXd z_, R_, step_, z_old_, coefficients_;
   mutable Eigen::MatrixXd scaled_U_, small_;
-  mutable Eigen::MatrixXd jacobian_;                         ///< K + U V^T, formed when the rank exceeds the size
+  mutable Eigen::MatrixXd jacobian_;                         ///< K + U V^T, when K is dense or the rank exceeds the size
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> jacobian_lu_;
   mutable QuasistaticTerms terms_;
   mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual
