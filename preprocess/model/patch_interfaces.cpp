@@ -2,6 +2,7 @@
 #include "model/patch_interfaces.hpp"
 
 #include "model/body_model.hpp"
+#include "geometry/multi_index.hpp"
 #include "model/placement.hpp"
 #include "refine/patch_refinement.hpp"
 #include "isosid/format/error.hpp"
@@ -12,9 +13,10 @@
 namespace isosid::prep {
 namespace {
 
-/// The control net of one side: tangential directions (ascending) and the flat control-point
-/// index of each face point, first tangential direction fastest.
+/// The control net of one side: tangential directions (ascending), their control-point counts,
+/// and the control points (NurbsPatch::side_points, first tangential direction fastest).
 struct Face {
+  PatchSide side;
   std::vector<int> directions, counts;
   std::vector<int> index;
   int at(const std::vector<int>& j) const {
@@ -27,24 +29,22 @@ struct Face {
   }
 };
 
-Face face_of(const NurbsPatch& p, PatchSide side) {
-  Face f;
+/// The faces of every side of a patch, in the order xi0, xi1, eta0, ...
+std::vector<Face> faces_of(const NurbsPatch& p) {
+  std::vector<Face> out;
   const std::vector<int> n = p.counts();
   for (int d = 0; d < p.param_dim(); ++d)
-    if (d != side.direction) {
-      f.directions.push_back(d);
-      f.counts.push_back(n[std::size_t(d)]);
+    for (int end = 0; end < 2; ++end) {
+      Face& f = out.emplace_back();
+      f.side = {d, end};
+      for (int t = 0; t < p.param_dim(); ++t)
+        if (t != d) {
+          f.directions.push_back(t);
+          f.counts.push_back(n[std::size_t(t)]);
+        }
+      f.index = p.side_points(f.side);
     }
-  std::vector<int> ijk(std::size_t(p.param_dim()), 0), j(f.directions.size(), 0);
-  ijk[std::size_t(side.direction)] = side.end ? n[std::size_t(side.direction)] - 1 : 0;
-  while (true) {
-    for (std::size_t t = 0; t < j.size(); ++t) ijk[std::size_t(f.directions[t])] = j[t];
-    f.index.push_back(flat_index(n, ijk));
-    std::size_t t = 0;
-    while (t < j.size() && ++j[t] == f.counts[t]) j[t++] = 0;
-    if (t == j.size()) break;
-  }
-  return f;
+  return out;
 }
 
 /// The knot vector of direction d mapped onto [0, 1], reversed if asked.
@@ -55,9 +55,8 @@ Eigen::VectorXd unit_knots(const NurbsPatch& p, int d, bool reversed) {
   return u;
 }
 
-/// Whether side sa of A and side sb of B carry the same control net, and how their directions pair.
-bool faces_match(const NurbsPatch& A, PatchSide sa, const NurbsPatch& B, PatchSide sb, double tol, PatchInterface& out) {
-  const Face fa = face_of(A, sa), fb = face_of(B, sb);
+/// Whether face fa of A and face fb of B carry the same control net, and how their directions pair.
+bool faces_match(const NurbsPatch& A, const Face& fa, const NurbsPatch& B, const Face& fb, double tol, PatchInterface& out) {
   const std::size_t nt = fa.directions.size();
   std::vector<int> perm(nt);
   for (std::size_t t = 0; t < nt; ++t) perm[t] = int(t);
@@ -66,22 +65,20 @@ bool faces_match(const NurbsPatch& A, PatchSide sa, const NurbsPatch& B, PatchSi
       bool ok = true;
       for (std::size_t t = 0; t < nt && ok; ++t) ok = fa.counts[t] == fb.counts[std::size_t(perm[t])];
       if (!ok) continue;
-      std::vector<int> j(nt, 0), jb(nt, 0);
+      MultiIndex j(int(nt), fa.counts);
+      std::vector<int> ja(nt, 0), jb(nt, 0);
       double ratio = 0;
-      while (ok) {
+      do {
         for (std::size_t t = 0; t < nt; ++t) {
-          const int m = fa.counts[t] - 1;
-          jb[std::size_t(perm[t])] = (flips >> t & 1) ? m - j[t] : j[t];
+          ja[t] = j[int(t)];
+          jb[std::size_t(perm[t])] = (flips >> t & 1) ? fa.counts[t] - 1 - ja[t] : ja[t];
         }
-        const int ia = fa.at(j), ib = fb.at(jb);
+        const int ia = fa.at(ja), ib = fb.at(jb);
         ok = (A.points.row(ia) - B.points.row(ib)).norm() <= tol;
         // NURBS weights of one patch may be scaled as a whole: equal up to one factor
         if (ok && ratio == 0) ratio = A.weights(ia) / B.weights(ib);
         ok = ok && std::abs(A.weights(ia) - ratio * B.weights(ib)) <= 1e-12 * A.weights(ia);
-        std::size_t t = 0;
-        while (t < nt && ++j[t] == fa.counts[t]) j[t++] = 0;
-        if (t == nt) break;
-      }
+      } while (ok && j.next());
       if (!ok) continue;
       out.b_direction.clear();
       out.reversed.clear();
@@ -97,8 +94,7 @@ bool faces_match(const NurbsPatch& A, PatchSide sa, const NurbsPatch& B, PatchSi
 
 /// Whether two sides are flat in one common coordinate and overlap over an area in the others
 /// (their control-net boxes), i.e. touch face to face.
-bool touch_over_area(const NurbsPatch& A, PatchSide sa, const NurbsPatch& B, PatchSide sb, double tol) {
-  const Face fa = face_of(A, sa), fb = face_of(B, sb);
+bool touch_over_area(const NurbsPatch& A, const Face& fa, const NurbsPatch& B, const Face& fb, double tol) {
   auto box = [](const NurbsPatch& p, const Face& f, Eigen::VectorXd& lo, Eigen::VectorXd& hi) {
     lo = hi = p.points.row(f.index[0]).transpose();
     for (int i : f.index) {
@@ -130,10 +126,12 @@ bool overlaps(const NurbsPatch& A, const NurbsPatch& B, double tol) {
     for (std::size_t k = 0; k + 1 < u.size(); ++k)
       for (double t : {0.25, 0.5, 0.75}) centres[std::size_t(d)].push_back(u[k] + t * (u[k + 1] - u[k]));
   }
-  std::vector<std::size_t> j(std::size_t(pd), 0);
-  while (true) {
+  std::vector<std::size_t> sizes;
+  for (const auto& c : centres) sizes.push_back(c.size());
+  MultiIndex j(pd, sizes);
+  do {
     Eigen::VectorXd xi(pd);
-    for (int d = 0; d < pd; ++d) xi(d) = centres[std::size_t(d)][j[std::size_t(d)]];
+    for (int d = 0; d < pd; ++d) xi(d) = centres[std::size_t(d)][std::size_t(j[d])];
     const BodyPoint p = nearest_point(B, A.point(xi));
     bool inside = p.distance <= tol;
     for (int d = 0; d < pd && inside; ++d) {
@@ -141,10 +139,8 @@ bool overlaps(const NurbsPatch& A, const NurbsPatch& B, double tol) {
       inside = p.parameter(d) > B.lower(d) + 1e-6 * w && p.parameter(d) < B.upper(d) - 1e-6 * w;
     }
     if (inside) return true;
-    std::size_t d = 0;
-    while (d < j.size() && ++j[d] == centres[d].size()) j[d++] = 0;
-    if (d == j.size()) return false;
-  }
+  } while (j.next());
+  return false;
 }
 
 std::string side_text(const std::vector<PatchSpec>& patches, int patch, PatchSide side) {
@@ -159,42 +155,36 @@ std::vector<PatchInterface> find_interfaces(const std::vector<PatchSpec>& patche
   double size = 0;
   for (const PatchSpec& p : patches) size = std::max(size, patch_size(p.patch));
   const double tol = 1e-10 * size;
-  const int pd = patches[0].patch.param_dim();
+  std::vector<std::vector<Face>> faces;
+  for (const PatchSpec& p : patches) faces.push_back(faces_of(p.patch));
   for (int a = 0; a < int(patches.size()); ++a)
     for (int b = a + 1; b < int(patches.size()); ++b) {
       const NurbsPatch &A = patches[std::size_t(a)].patch, &B = patches[std::size_t(b)].patch;
       if (overlaps(A, B, tol) || overlaps(B, A, tol))
         throw format::InputError(file, "patch", "patches '" + patches[std::size_t(a)].name + "' and '" +
                                                     patches[std::size_t(b)].name + "' overlap");
-      for (int da = 0; da < pd; ++da)
-        for (int ea = 0; ea < 2; ++ea)
-          for (int db = 0; db < pd; ++db)
-            for (int eb = 0; eb < 2; ++eb) {
-              const PatchSide sa{da, ea}, sb{db, eb};
-              PatchInterface i{a, b, sa, sb, {}, {}};
-              if (faces_match(A, sa, B, sb, tol, i)) {
-                // the two sides' knot vectors must agree up to an affine map, or the merged
-                // control points carry different functions
-                int t = 0;
-                for (int dir = 0; dir < pd; ++dir) {
-                  if (dir == sa.direction) continue;
-                  const Eigen::VectorXd ua = unit_knots(A, dir, false),
-                                        ub = unit_knots(B, i.b_direction[std::size_t(t)], i.reversed[std::size_t(t)]);
-                  if (ua.size() != ub.size() || (ua - ub).cwiseAbs().maxCoeff() > 1e-12 ||
-                      A.degrees[std::size_t(dir)] != B.degrees[std::size_t(i.b_direction[std::size_t(t)])])
-                    throw format::InputError(file, "patch", "non-matching interface between " + side_text(patches, a, sa) +
-                                                                " and " + side_text(patches, b, sb) +
-                                                                ": the control points coincide but the knots or degrees differ");
-                  ++t;
-                }
-                out.push_back(i);
-              } else if (touch_over_area(A, sa, B, sb, tol)) {
-                throw format::InputError(file, "patch", "non-matching interface between " + side_text(patches, a, sa) + " and " +
-                                                            side_text(patches, b, sb) +
-                                                            ": the sides touch but their control points differ (split the "
-                                                            "larger patch so that the sides match)");
-              }
+      for (const Face& fa : faces[std::size_t(a)])
+        for (const Face& fb : faces[std::size_t(b)]) {
+          auto between = [&] {
+            return "non-matching interface between " + side_text(patches, a, fa.side) + " and " + side_text(patches, b, fb.side);
+          };
+          PatchInterface i{a, b, fa.side, fb.side, {}, {}};
+          if (faces_match(A, fa, B, fb, tol, i)) {
+            // the two sides' knot vectors must agree up to an affine map, or the merged
+            // control points carry different functions
+            for (std::size_t t = 0; t < fa.directions.size(); ++t) {
+              const int da = fa.directions[t], db = i.b_direction[t];
+              const Eigen::VectorXd ua = unit_knots(A, da, false), ub = unit_knots(B, db, i.reversed[t]);
+              if (ua.size() != ub.size() || (ua - ub).cwiseAbs().maxCoeff() > 1e-12 ||
+                  A.degrees[std::size_t(da)] != B.degrees[std::size_t(db)])
+                throw format::InputError(file, "patch", between() + ": the control points coincide but the knots or degrees differ");
             }
+            out.push_back(i);
+          } else if (touch_over_area(A, fa, B, fb, tol)) {
+            throw format::InputError(file, "patch", between() + ": the sides touch but their control points differ (split the "
+                                                              "larger patch so that the sides match)");
+          }
+        }
     }
   return out;
 }
