@@ -17,7 +17,6 @@ public:
 
   const Elasticity& of_patch(int patch) const { return patches_[std::size_t(patch)]; }
   const Elasticity& of(const Element& e) const { return of_patch(e.patch); }
-  int patch_count() const { return int(patches_.size()); }
   // the same for every patch: the analysis type fixes them
   format::AnalysisType type() const { return patches_.front().type(); }
   int dim() const { return patches_.front().dim(); }

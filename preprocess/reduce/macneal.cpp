@@ -3,6 +3,7 @@
 
 #include "isosid/format/error.hpp"
 #include "reduce/modal_analysis.hpp"
+#include "reduce/mode_basis.hpp"
 #include "reduce/sparse_cholesky.hpp"
 
 #include <Eigen/Cholesky>
@@ -12,13 +13,15 @@ namespace isosid::prep {
 Eigen::MatrixXd elastic_static_response(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
                                         const Eigen::MatrixXd& rigid, const Eigen::MatrixXd& loads, double lambda_scale) {
   if (rigid.cols() == 0) return SparseCholesky(K).solve(loads);
-  // M-orthonormal rigid fields R: P = I - M R R^T removes the loads' rigid-body resultants
-  const Eigen::MatrixXd MR0 = M * rigid;
-  const Eigen::LLT<Eigen::MatrixXd> gram(rigid.transpose() * MR0);
-  const Eigen::MatrixXd R = gram.matrixU().solve<Eigen::OnTheRight>(rigid);  // R^T M R = I
-  const Eigen::MatrixXd MR = M * R;
-  auto balance = [&](const Eigen::MatrixXd& f) -> Eigen::MatrixXd { return f - MR * (R.transpose() * f); };
-  auto elastic = [&](const Eigen::MatrixXd& u) -> Eigen::MatrixXd { return u - R * (MR.transpose() * u); };
+  // P = I - M R (R^T M R)^-1 R^T removes the loads' rigid-body resultants; the response is
+  // kept free of rigid content by the projection the reduction bases use (remove_rigid_content)
+  const Eigen::MatrixXd MR = M * rigid;
+  const Eigen::LDLT<Eigen::MatrixXd> gram(rigid.transpose() * MR);
+  auto balance = [&](const Eigen::MatrixXd& f) -> Eigen::MatrixXd { return f - MR * gram.solve(rigid.transpose() * f); };
+  auto elastic = [&](Eigen::MatrixXd u) {
+    remove_rigid_content(u, M, rigid);
+    return u;
+  };
   // K is singular on the rigid fields: solve with the shifted K + s M, which differs from K
   // only by s M; the iteration u += (K + s M)^-1 (L - K u) contracts by s / (s + omega_1^2) on
   // the elastic subspace (s = 1e-3 of the eigenvalue scale: about 1e-3 per pass)

@@ -17,7 +17,7 @@ Eigen::Index at(const std::vector<Eigen::Index>& n, int chain, Eigen::Index i, E
 
 std::vector<Eigen::Index> counts(const format::MasterPatch& m) {
   std::vector<Eigen::Index> n;
-  for (std::size_t d = 0; d < m.degrees.size(); ++d) n.push_back(m.knots[d].size() - m.degrees[d] - 1);
+  for (std::size_t d = 0; d < m.degrees.size(); ++d) n.push_back(basis_count(m.knots[d], m.degrees[d]));
   return n;
 }
 
