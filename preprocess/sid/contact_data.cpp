@@ -25,10 +25,7 @@ std::vector<BoundaryPoint> selected_points(const BodyModel& body, const ContactS
   return out;
 }
 
-}  // namespace
-
-format::ContactSurface contact_points(const BodyModel& body, const ContactSurfaceSpec& spec) {
-  const std::vector<BoundaryPoint> pts = selected_points(body, spec);
+format::ContactSurface points_of(const BodyModel& body, const ContactSurfaceSpec& spec, const std::vector<BoundaryPoint>& pts) {
   const int dim = body.dofs.dim(), pd = body.space.param_dim();
   const auto n = Eigen::Index(pts.size());
   format::ContactSurface s;
@@ -51,8 +48,7 @@ format::ContactSurface contact_points(const BodyModel& body, const ContactSurfac
   return s;
 }
 
-Eigen::SparseMatrix<double> contact_shape_rows(const BodyModel& body, const ContactSurfaceSpec& spec) {
-  const std::vector<BoundaryPoint> pts = selected_points(body, spec);
+Eigen::SparseMatrix<double> shape_rows_of(const BodyModel& body, const std::vector<BoundaryPoint>& pts) {
   const int dim = body.dofs.dim();
   std::vector<Eigen::Triplet<double>> t;
   for (std::size_t g = 0; g < pts.size(); ++g) {
@@ -66,9 +62,20 @@ Eigen::SparseMatrix<double> contact_shape_rows(const BodyModel& body, const Cont
   return N;
 }
 
+}  // namespace
+
+format::ContactSurface contact_points(const BodyModel& body, const ContactSurfaceSpec& spec) {
+  return points_of(body, spec, selected_points(body, spec));
+}
+
+Eigen::SparseMatrix<double> contact_shape_rows(const BodyModel& body, const ContactSurfaceSpec& spec) {
+  return shape_rows_of(body, selected_points(body, spec));
+}
+
 format::ContactSurface contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal) {
-  format::ContactSurface s = contact_points(body, spec);
-  s.Psi = contact_shape_rows(body, spec) * Phi_nodal;
+  const std::vector<BoundaryPoint> pts = selected_points(body, spec);  // once for both
+  format::ContactSurface s = points_of(body, spec, pts);
+  s.Psi = shape_rows_of(body, pts) * Phi_nodal;
   return s;
 }
 
