@@ -2,6 +2,8 @@
 #pragma once
 #include "assemble/assembly.hpp"
 #include "model/body_model.hpp"
+#include "reduce/modal_analysis.hpp"
+#include "reduce/mode_basis.hpp"
 
 namespace isosid::test {
 
@@ -35,6 +37,35 @@ inline std::vector<int> boundary_nodes(const prep::BodyModel& b) {
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
   return all;
+}
+
+/// A body with its stiffness and mass on the free DOFs, its admissible rigid-body fields and its
+/// eigenvalue scale: where the reduction tests start.
+struct AssembledBody {
+  prep::BodyModel body;
+  prep::SystemMatrices sys;
+  Eigen::MatrixXd rigid;
+  double scale = 0;
+};
+
+inline AssembledBody assembled(const prep::ModelSpec& spec) {
+  AssembledBody f{prep::build_body(spec), {}, {}, 0};
+  f.sys = prep::assemble_system(f.body.space, f.body.dofs, f.body.elasticity);
+  f.rigid = prep::admissible_rigid_fields(prep::rigid_nodal_fields(f.body.dofs.node_points(), spec.analysis),
+                                         f.body.dofs.free_indices());
+  const format::Material& m = prep::fastest_material(spec);
+  f.scale = prep::eigenvalue_scale(m.youngs_modulus, m.density, prep::body_size(f.body));
+  return f;
+}
+
+/// Free DOF indices (ascending) of the nodes on a side of a patch.
+inline std::vector<int> side_free_dofs(const prep::BodyModel& b, int patch, prep::PatchSide side) {
+  std::vector<int> dofs;
+  for (int node : prep::side_nodes(b, patch, side))
+    for (int a = 0; a < b.dofs.dim(); ++a)
+      if (const int i = b.dofs.free_index(node, a); i >= 0) dofs.push_back(i);
+  std::sort(dofs.begin(), dofs.end());
+  return dofs;
 }
 
 }  // namespace isosid::test

@@ -16,12 +16,8 @@ using format::AnalysisType;
 
 namespace {
 
-struct Fixture {
-  prep::BodyModel body;
-  prep::SystemMatrices sys;
-  Eigen::MatrixXd rigid;
+struct Fixture : test::AssembledBody {
   std::vector<int> boundary;
-  double scale;
 };
 
 /// A 0.2 x 0.02 m steel strip (plane stress, quadratic, 16 x 2 elements), optionally clamped
@@ -30,13 +26,8 @@ Fixture strip(bool clamped) {
   prep::ModelSpec spec = test::spec_for(prep::primitives::rectangle(0.2, 0.02, 0.0, 0.0), AnalysisType::PlaneStress, 2.1e11,
                                         0.3, 7800, test::uniform({2, 2}, {16, 2}));
   if (clamped) spec.fixed = {{"xi0", {0, 1}}};
-  Fixture f{prep::build_body(spec), {}, {}, {}, 0};
-  f.sys = prep::assemble_system(f.body.space, f.body.dofs, f.body.elasticity);
-  f.rigid = prep::admissible_rigid_fields(prep::rigid_nodal_fields(f.body.dofs.node_points(), spec.analysis), f.body.dofs.free_indices());
-  for (int node : prep::side_nodes(f.body, 0, {1, 1}))
-    for (int a = 0; a < 2; ++a)
-      if (const int i = f.body.dofs.free_index(node, a); i >= 0) f.boundary.push_back(i);
-  f.scale = prep::eigenvalue_scale(2.1e11, 7800, prep::body_size(f.body));
+  Fixture f{test::assembled(spec), {}};
+  f.boundary = test::side_free_dofs(f.body, 0, {1, 1});
   return f;
 }
 

@@ -17,29 +17,10 @@ using format::AnalysisType;
 
 namespace {
 
-struct Fixture {
-  prep::BodyModel body;
-  prep::SystemMatrices sys;
-  Eigen::MatrixXd rigid;
-  double scale;
-};
-
-Fixture fixture(const prep::ModelSpec& spec) {
-  Fixture f{prep::build_body(spec), {}, {}, 0};
-  f.sys = prep::assemble_system(f.body.space, f.body.dofs, f.body.elasticity);
-  f.rigid = prep::admissible_rigid_fields(prep::rigid_nodal_fields(f.body.dofs.node_points(), spec.analysis),
-                                         f.body.dofs.free_indices());
-  f.scale = prep::eigenvalue_scale(spec.patches[0].material.youngs_modulus, spec.patches[0].material.density, prep::body_size(f.body));
-  return f;
-}
+using Fixture = test::AssembledBody;
 
 std::vector<int> interface_of(const prep::BodyModel& b, const std::string& side) {
-  std::vector<int> dofs;
-  for (int node : prep::side_nodes(b, 0, *b.refined[0].side(side)))
-    for (int a = 0; a < b.dofs.dim(); ++a)
-      if (const int i = b.dofs.free_index(node, a); i >= 0) dofs.push_back(i);
-  std::sort(dofs.begin(), dofs.end());
-  return dofs;
+  return test::side_free_dofs(b, 0, *b.refined[0].side(side));
 }
 
 void check_basis(const Fixture& f, const prep::ReducedBasis& r) {
@@ -63,7 +44,7 @@ void check_basis(const Fixture& f, const prep::ReducedBasis& r) {
 
 TEST_CASE("modal, Craig-Bampton and full bases are orthonormal, diagonal and in a Buckens frame", "[reduction]") {
   SECTION("free plane-strain disk") {
-    const Fixture f = fixture(test::spec_for(prep::primitives::disk(0.1), AnalysisType::PlaneStrain, 2.1e11, 0.3, 7850,
+    const Fixture f = test::assembled(test::spec_for(prep::primitives::disk(0.1), AnalysisType::PlaneStrain, 2.1e11, 0.3, 7850,
                                              test::uniform({3, 3}, {3, 3})));
     REQUIRE(f.rigid.cols() == 3);
     prep::ReductionRequest modal{"modal", 8, {}, "", {}};
@@ -82,7 +63,7 @@ TEST_CASE("modal, Craig-Bampton and full bases are orthonormal, diagonal and in 
     for (int i = 0; i < 8; ++i) CHECK(full.omega2(i) == Approx(m.omega2(i)).epsilon(1e-9));
   }
   SECTION("axisymmetric half-disk with the radial DOF fixed on the axis") {
-    const Fixture f = fixture(test::spec_for(prep::primitives::half_disk(0.01), AnalysisType::Axisymmetric, 7.28e10, 0.33,
+    const Fixture f = test::assembled(test::spec_for(prep::primitives::half_disk(0.01), AnalysisType::Axisymmetric, 7.28e10, 0.33,
                                              2789, test::uniform({3, 2}, {3, 3})));
     REQUIRE(f.rigid.cols() == 1);
     prep::ReductionRequest cb{"craig-bampton", 4, interface_of(f.body, "lower"), "", {}};
@@ -96,7 +77,7 @@ TEST_CASE("Craig-Bampton reproduces the full static deflection under interface l
   auto spec = test::spec_for(prep::primitives::rectangle(0.2, 0.02), AnalysisType::PlaneStress, 2.1e11, 0.3, 7850,
                              test::uniform({3, 3}, {8, 2}));
   spec.fixed = {{"left", {0, 1}}};
-  const Fixture f = fixture(spec);
+  const Fixture f = test::assembled(spec);
   REQUIRE(f.rigid.cols() == 0);  // clamped: no rigid-body field is admissible
   const std::vector<int> interface = interface_of(f.body, "right");
   prep::ReductionRequest cb{"craig-bampton", 3, interface, "", {}};
@@ -117,7 +98,7 @@ TEST_CASE("Craig-Bampton eigenvalues bound the full ones from above and become e
   auto spec = test::spec_for(prep::primitives::rectangle(0.2, 0.02), AnalysisType::PlaneStress, 2.1e11, 0.3, 7850,
                              test::uniform({2, 2}, {6, 1}));
   spec.fixed = {{"left", {0, 1}}};
-  const Fixture f = fixture(spec);
+  const Fixture f = test::assembled(spec);
   const Eigen::MatrixXd Kd = f.sys.K, Md = f.sys.M;
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Kd, Md);
   const Eigen::VectorXd exact = dense.eigenvalues();
