@@ -123,8 +123,13 @@ void check_terms(const Checker& c, const Sid& sid) {
     return std::string();
   };
   for (Taylor Sid::*member : {&Sid::J, &Sid::Me, &Sid::Ke, &Sid::De}) c.symmetric(m0_path(member), (sid.*member).M0);
-  for (Index i = 0; i < nq; ++i)
+  // the massless boundary of a MacNeal SID carries no mass, every other coordinate does
+  const Index carrying = nq - sid.refmod.n_massless();
+  for (Index i = 0; i < carrying; ++i)
     c.require(sid.Me.M0(i, i) > 0, m0_path(&Sid::Me), "non-positive diagonal entry at " + std::to_string(i));
+  if (carrying < nq && sid.Me.M0.rows() == nq && sid.Me.M0.cols() == nq)
+    c.require(sid.Me.M0.bottomRows(nq - carrying).isZero(0.0), m0_path(&Sid::Me),
+              "rows " + std::to_string(carrying) + " to " + std::to_string(nq - 1) + " (the massless boundary) must be zero");
   // in the normal form (Me = I, Ke diagonal) Ke holds the squared circular frequencies: the
   // runtime applies Ke as that diagonal, so a list that disagrees would go unnoticed there
   const MatrixXd& K = sid.Ke.M0;

@@ -390,13 +390,27 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     m.stress_lines.push_back(l);
   }
   if (auto r = top.optional_table("reduction")) {
-    r->allow_only({"method", "normal_modes", "interface_surface", "interface_points", "interface_center"});
+    r->allow_only({"method", "normal_modes", "interface_surface", "interface_points", "interface_center", "boundary_surface"});
     ReductionSpec& red = m.reduction;
     red.method = r->string("method");
-    if (red.method != "modal" && red.method != "craig-bampton" && red.method != "full")
-      r->fail("method", "unknown method '" + red.method + "' (modal, craig-bampton, full)");
+    if (red.method != "modal" && red.method != "craig-bampton" && red.method != "full" && red.method != "macneal")
+      r->fail("method", "unknown method '" + red.method + "' (modal, craig-bampton, full, macneal)");
     const long long n = r->integer("normal_modes", red.method == "full" ? 0 : 10);
-    if (n < 0 || n > 100000 || (red.method == "modal" && n < 1)) r->fail("normal_modes", "must be a positive count");
+    if (n < 0 || n > 100000 || ((red.method == "modal" || red.method == "macneal") && n < 1))
+      r->fail("normal_modes", "must be a positive count");
+    if (red.method == "macneal") {
+      red.boundary_surface = r->string("boundary_surface");
+      const auto surface = std::find_if(m.contact_surfaces.begin(), m.contact_surfaces.end(),
+                                        [&](const ContactSurfaceSpec& s) { return s.name == red.boundary_surface; });
+      if (surface == m.contact_surfaces.end()) r->fail("boundary_surface", "no contact_surface named '" + red.boundary_surface + "'");
+      if (!surface->continued.empty()) r->fail("boundary_surface", "must lie on one patch side (a surface over several is not supported)");
+      // the massless coordinates are the fine model's control points: a THB body's coarse
+      // modes (its transfer operator) would not carry them
+      if (std::any_of(m.patches.begin(), m.patches.end(), [](const PatchSpec& p) { return p.refinement.hierarchical.has_value(); }))
+        r->fail("method", "macneal is not available for hierarchically refined bodies (refine with subdivisions or graded knots)");
+    } else if (r->has("boundary_surface")) {
+      r->fail("boundary_surface", "only used by method = \"macneal\"");
+    }
     red.normal_modes = int(n);
     if (red.method == "craig-bampton") {
       red.interface_surface = r->string("interface_surface");

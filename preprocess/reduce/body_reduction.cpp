@@ -3,8 +3,10 @@
 
 #include "isosid/format/error.hpp"
 #include "reduce/modal_analysis.hpp"
+#include "sid/contact_data.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace isosid::prep {
@@ -40,11 +42,37 @@ std::vector<int> interface_dofs(const BodyModel& body, std::string& description)
   return dofs;
 }
 
+std::vector<int> massless_boundary_dofs(const BodyModel& body, std::string& description) {
+  const ReductionSpec& r = body.spec.reduction;
+  const auto surface = std::find_if(body.spec.contact_surfaces.begin(), body.spec.contact_surfaces.end(),
+                                    [&](const ContactSurfaceSpec& c) { return c.name == r.boundary_surface; });
+  // every DOF that moves a contact point: then the points' displacements depend on the
+  // boundary coordinates alone, and the contact problem is one of the massless boundary
+  const Eigen::SparseMatrix<double> N = contact_shape_rows(body, *surface);
+  std::vector<int> dofs;
+  int points = 0;
+  for (int n = 0; n < body.dofs.node_count(); ++n) {
+    bool moves = false;
+    for (int a = 0; a < body.dofs.dim(); ++a) {
+      bool used = false;  // a function of the element that vanishes on the side stores a zero
+      for (Eigen::SparseMatrix<double>::InnerIterator it(N, n * body.dofs.dim() + a); it; ++it) used = used || std::abs(it.value()) > 1e-14;
+      moves = moves || used;
+      if (const int i = body.dofs.free_index(n, a); used && i >= 0) dofs.push_back(i);
+    }
+    points += moves;
+  }
+  std::sort(dofs.begin(), dofs.end());
+  description = "massless boundary: the " + std::to_string(points) + " control points under contact surface '" + surface->name +
+                "' (" + std::to_string(dofs.size()) + " DOFs)";
+  return dofs;
+}
+
 ReductionRequest reduction_request(const BodyModel& body) {
   ReductionRequest q;
   q.method = body.spec.reduction.method;
   q.normal_modes = body.spec.reduction.normal_modes;
   if (q.method == "craig-bampton") q.interface_dofs = interface_dofs(body, q.interface_description);
+  if (q.method == "macneal") q.interface_dofs = massless_boundary_dofs(body, q.interface_description);
   return q;
 }
 
@@ -57,7 +85,8 @@ ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system, co
   request.extra_vectors = extra;
   // more modes than the refined model has: a model-file problem, not a failed computation
   const Eigen::Index free = system.K.rows();
-  const Eigen::Index needed = request.normal_modes + (request.method == "modal" ? rigid.cols() : Eigen::Index(request.interface_dofs.size()));
+  const Eigen::Index needed = request.normal_modes + (request.method == "modal" ? rigid.cols() : Eigen::Index(request.interface_dofs.size())) +
+                              (request.method == "macneal" ? rigid.cols() : 0);
   if (request.method != "full" && needed > free)
     throw format::InputError(body.spec.file, "reduction.normal_modes",
                              std::to_string(request.normal_modes) + " modes need " + std::to_string(needed) +

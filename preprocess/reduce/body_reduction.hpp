@@ -16,6 +16,10 @@ namespace isosid::prep {
 /// point at `interface_center`; also describes them in words.
 std::vector<int> interface_dofs(const BodyModel& body, std::string& description);
 
+/// The massless boundary of a MacNeal reduction: every free DOF of the control points that
+/// move a Gauss point of the boundary surface; also describes them in words.
+std::vector<int> massless_boundary_dofs(const BodyModel& body, std::string& description);
+
 /// The request for prep::reduce() from the model's [reduction] table.
 ReductionRequest reduction_request(const BodyModel& body);
 

@@ -72,6 +72,7 @@ MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, co
   out.K = 0.5 * (out.K + out.K.transpose());
   out.M = Eigen::MatrixXd::Zero(nb + n_modes, nb + n_modes);
   out.M.bottomRightCorner(n_modes, n_modes).setIdentity();
+  out.Phi = Phi;
   out.omega2 = omega2;
   return out;
 }

@@ -16,6 +16,7 @@ struct MasslessBoundaryModel {
   Eigen::MatrixXd T;               ///< free DOFs x (nb + nm): u = T [u_b; eta]; its boundary rows are [I 0]
   Eigen::MatrixXd K;               ///< (nb + nm)^2, T^T K T
   Eigen::MatrixXd M;               ///< diag(0_bb, I): the boundary carries no mass (not T^T M T, by design)
+  Eigen::MatrixXd Phi;             ///< free DOFs x nm: the retained free-interface modes (M-normalized)
   Eigen::VectorXd omega2;          ///< the retained elastic modes' squared frequencies
   Eigen::Index boundary() const { return Eigen::Index(boundary_dofs.size()); }
 };

@@ -11,12 +11,21 @@
 namespace isosid::prep {
 
 struct ReducedBasis {
-  Eigen::MatrixXd Phi;        ///< free DOFs x nq: Phi^T M Phi = I, Phi^T K Phi = diag(omega2)
-  Eigen::VectorXd omega2;     ///< ascending squared angular frequencies
+  Eigen::MatrixXd Phi;        ///< free DOFs x nq: Phi^T M Phi = I, Phi^T K Phi = diag(omega2); MacNeal: see `massless`
+  Eigen::VectorXd omega2;     ///< ascending squared angular frequencies (0 for massless coordinates)
   int n_low = 0;              ///< leading normal (low-frequency) modes
-  std::string method;         ///< modal, craig-bampton, full
-  std::string interface;      ///< description of the interface (Craig-Bampton)
+  std::string method;         ///< modal, craig-bampton, full, macneal
+  std::string interface;      ///< description of the interface (Craig-Bampton) or massless boundary (MacNeal)
   int removed_rigid = 0;      ///< basis directions dropped as rigid-body content
+  /// MacNeal: the last coordinates are the displacements of these free DOFs (the massless
+  /// boundary, in order). The mass is carried by `inertial` (free DOFs x nq: the free-interface
+  /// modes, zero columns for the boundary), so inertial^T M inertial = diag(I, 0) and
+  /// Phi^T K Phi is dense.
+  std::vector<int> massless_dofs;
+  Eigen::MatrixXd inertial;
+  Eigen::Index massless() const { return Eigen::Index(massless_dofs.size()); }
+  /// The displacement field whose motion carries the mass: Phi itself except for MacNeal.
+  const Eigen::MatrixXd& mass_carrying() const { return massless() > 0 ? inertial : Phi; }
 };
 
 /// Rigid-body displacement fields on all nodal DOFs (node-major, `dim` per node): translations

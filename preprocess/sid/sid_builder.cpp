@@ -34,6 +34,19 @@ std::string utc_now() {
   std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
   return buf;
 }
+/// "boundary 7: control point 112 z": which physical DOF a massless coordinate is (its
+/// column of the basis is the unit displacement of that DOF at the boundary).
+std::string massless_coordinate_name(const BodyModel& body, const ReducedBasis& basis, Eigen::Index k) {
+  const Eigen::Index first = basis.Phi.cols() - basis.massless();
+  const int dof = basis.massless_dofs[std::size_t(k - first)];
+  const char* axes = "xyz";
+  for (int n = 0; n < body.dofs.node_count(); ++n)
+    for (int a = 0; a < body.dofs.dim(); ++a)
+      if (body.dofs.free_index(n, a) == dof)
+        return "boundary " + std::to_string(k - first + 1) + ": control point " + std::to_string(n) + " " + axes[a];
+  return "boundary " + std::to_string(k - first + 1);
+}
+
 }  // namespace
 
 format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const SparseMatrix& scalar_mass,
@@ -49,9 +62,11 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   sid.thickness = spec.thickness;
 
   const Eigen::MatrixXd Phi = nodal_modes(body.dofs, basis.Phi);
-  fill_inertia_terms(sid, scalar_mass, body.dofs.node_points(), Phi);
+  // the inertia terms from the field that carries the mass (MacNeal: the boundary carries none)
+  const Eigen::MatrixXd& inertial = basis.mass_carrying();
+  fill_inertia_terms(sid, scalar_mass, body.dofs.node_points(), basis.massless() > 0 ? nodal_modes(body.dofs, inertial) : Phi);
   auto symmetric = [](const Eigen::MatrixXd& A) { return Eigen::MatrixXd(0.5 * (A + A.transpose())); };
-  sid.Me.M0 = symmetric(basis.Phi.transpose() * (system.M * basis.Phi));
+  sid.Me.M0 = symmetric(inertial.transpose() * (system.M * inertial));
   sid.Ke.M0 = symmetric(basis.Phi.transpose() * (system.K * basis.Phi));
 
   format::RefMod& r = sid.refmod;
@@ -59,9 +74,11 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   r.n_low = basis.n_low;
   r.reduction_method = basis.method;
   r.interface_description = basis.interface;
-  for (Eigen::Index k = 0; k < basis.Phi.cols(); ++k)
+  const Eigen::Index first_massless = basis.Phi.cols() - basis.massless();
+  for (Eigen::Index k = 0; k < first_massless; ++k)
     r.mode_names.push_back((k < basis.n_low ? "low mode " : "high mode ") + std::to_string(k + 1) + ": " +
                            std::to_string(r.frequencies_hz(k)) + " Hz");
+  for (Eigen::Index k = first_massless; k < basis.Phi.cols(); ++k) r.mode_names.push_back(massless_coordinate_name(body, basis, k));
   const double f1 = spec.damping.f1_hz > 0 ? spec.damping.f1_hz : r.frequencies_hz(0);
   const double f2 = spec.damping.f2_hz > 0 ? spec.damping.f2_hz : r.frequencies_hz(std::max(0, basis.n_low - 1));
   sid.damping = rayleigh_damping(spec.damping.kappa, f1, std::max(f2, f1));

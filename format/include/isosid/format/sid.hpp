@@ -31,6 +31,9 @@ struct RefMod {
   std::string interface_description;     ///< e.g. the contact surface and interval of the constraint modes
   Eigen::Index nq() const { return frequencies_hz.size(); }
   int n_high() const { return static_cast<int>(nq()) - n_low; }
+  /// MacNeal SIDs: the high coordinates are the displacements of the massless boundary's DOFs
+  /// (no mass: their rows of Me are zero, their frequency is listed as 0).
+  int n_massless() const { return reduction_method == "macneal" ? n_high() : 0; }
 };
 
 /// Rayleigh damping De = alpha1 Me + alpha2 Ke from (kappa, f1, f2) (seed 000 eq. 26-28).

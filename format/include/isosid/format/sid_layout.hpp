@@ -98,15 +98,15 @@ inline constexpr Item nq{"/refmod/nq", {}, Kind::Int64, kScalar, "", Presence::R
 inline constexpr Item mode_names{"/refmod/mode_names", {}, Kind::String, vector_of(kNq), "", Presence::Required,
                                  "one name per elastic coordinate"};
 inline constexpr Item frequencies_hz{"/refmod/frequencies_hz", {}, Kind::Float64, vector_of(kNq), "Hz", Presence::Required,
-                                     "natural frequencies of the reduced body, >= 0"};
+                                     "natural frequencies of the reduced body, >= 0 (0 for a massless boundary coordinate)"};
 inline constexpr Item n_low{"/refmod/n_low", {}, Kind::Int64, kScalar, "", Presence::Required,
                             "leading normal (low-frequency) modes, in [0, nq]"};
 inline constexpr Item n_high{"/refmod/n_high", {}, Kind::Int64, kScalar, "", Presence::Required,
-                             "the rest, nq - n_low (constraint / attachment modes)"};
+                             "the rest, nq - n_low (constraint / attachment modes; `macneal`: the massless boundary DOFs)"};
 inline constexpr Item reduction_method{"/refmod/reduction_method", {}, Kind::String, kScalar, "", Presence::Required,
                                        "`modal`, `craig-bampton`, `full` or `macneal`"};
 inline constexpr Item interface{"/refmod/interface", {}, Kind::String, kScalar, "", Presence::Required,
-                                "the interface of the constraint modes, e.g. contact surface and interval"};
+                                "the interface of the constraint modes or the massless boundary, e.g. contact surface and interval"};
 }  // namespace refmod
 
 namespace damping {
