@@ -38,9 +38,15 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
     : name_(spec.name), sid_(std::move(sid)), spec_(spec), stiffness_(sid_.Ke.M0), damping_(sid_.De.M0),
       B_(sid_.nq(), 6), Ge_(sid_.nq(), 3), Oe_(sid_.nq(), 6), hq_(sid_.nq()) {
   const Index n = nq();
-  // the Schur-complement solve below relies on the SID's normal form Me = I
-  if (n > 0 && (sid_.Me.M0 - MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff() > 1e-8)
-    throw format::InputError(spec.sid_file, "/terms/Me/M0", "the runtime needs mass-normalized modes (Me = I)");
+  // the Schur-complement solve below relies on the SID's normal form Me = I (a MacNeal SID:
+  // I on the modes, zero on the massless boundary)
+  const Index massless = sid_.refmod.n_massless();
+  MatrixXd normal_form = MatrixXd::Identity(n, n);
+  normal_form.bottomRightCorner(massless, massless).setZero();
+  if (n > 0 && (sid_.Me.M0 - normal_form).cwiseAbs().maxCoeff() > 1e-8)
+    throw format::InputError(spec.sid_file, "/terms/Me/M0",
+                             massless ? "the runtime needs mass-normalized modes and a massless boundary (Me = diag(I, 0))"
+                                      : "the runtime needs mass-normalized modes (Me = I)");
   const bool axisymmetric_sid = sid_.analysis == format::AnalysisType::Axisymmetric;
   if ((dimension == Dimension::Axisymmetric) != axisymmetric_sid)
     throw format::InputError(spec.sid_file, "/body/analysis_type",
@@ -54,15 +60,18 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
     for (int i = 0; i < 6; ++i)
       if (l == names[i]) locked_[std::size_t(i)] = true;
   rotates_ = !(locked_[3] && locked_[4] && locked_[5]);
-  n_dynamic_ = n;
+  // coordinates without mass cannot be integrated: a massless boundary is always solved statically
+  n_dynamic_ = n - massless;
   if (spec.high_modes == "quasistatic") {
     n_dynamic_ = sid_.refmod.n_low;
     if (spec.quasistatic_above_hz > 0) {
       n_dynamic_ = 0;
-      while (n_dynamic_ < n && sid_.refmod.frequencies_hz(n_dynamic_) <= spec.quasistatic_above_hz) ++n_dynamic_;
+      while (n_dynamic_ < n - massless && sid_.refmod.frequencies_hz(n_dynamic_) <= spec.quasistatic_above_hz) ++n_dynamic_;
     }
   }
   q_high_ = VectorXd::Zero(n - n_dynamic_);
+  const MatrixXd coupling = sid_.Ke.M0.bottomLeftCorner(n - n_dynamic_, n_dynamic_);
+  if (!coupling.isZero(0.0)) quasistatic_coupling_ = coupling;
   q_full_ = VectorXd::Zero(n);
   qdot_full_ = VectorXd::Zero(n);
   if (spec.q0.size() && spec.q0.size() != n_dynamic_)
@@ -219,11 +228,12 @@ void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, co
   out.noalias() -= Oe_ * wq;
 }
 
-void FloatingBody::add_quasistatic_rotation_loads(const double* y, Eigen::Ref<VectorXd> out) const {
+void FloatingBody::add_quasistatic_loads(const double* y, Eigen::Ref<VectorXd> out) const {
   const VectorXd& qv = q(y);
   hq_.setZero();
   add_rotation_loads(qv, qdot(y), omega(y), hq_);
   out += hq_.tail(n_quasistatic());
+  if (quasistatic_coupling_.size()) out.noalias() -= quasistatic_coupling_ * qv.head(n_dynamic_);
 }
 
 double FloatingBody::kinetic_energy(const double* y) const {

@@ -87,11 +87,12 @@ public:
   /// dissipated power of the modal damping.
   double derivatives(const double* y, const GeneralizedForce& applied, const Eigen::Vector3d& gravity, double* ydot) const;
 
-  /// Adds the quasistatic modes' share of the rotation loads (-Ge(qdot) w - Oe(q) w^2) at y to
-  /// out (n_quasistatic entries): a spinning body's centrifugal deformation. Gravity and the
-  /// frame's acceleration are left out: on a free body they cancel (inertia relief is not
-  /// modelled for quasistatic modes).
-  void add_quasistatic_rotation_loads(const double* y, Eigen::Ref<Eigen::VectorXd> out) const;
+  /// Adds the loads on the quasistatic modes at y that do not depend on them to out
+  /// (n_quasistatic entries): the rotation loads (-Ge(qdot) w - Oe(q) w^2, a spinning body's
+  /// centrifugal deformation) and, where Ke couples them to the integrated modes (a MacNeal
+  /// SID's boundary), -K_hd q_d. Gravity and the frame's acceleration are left out: on a free
+  /// body they cancel (inertia relief is not modelled for quasistatic modes).
+  void add_quasistatic_loads(const double* y, Eigen::Ref<Eigen::VectorXd> out) const;
 
   // --- energies ---
   double kinetic_energy(const double* y) const;
@@ -125,6 +126,7 @@ private:
   format::Sid sid_;
   BodySpec spec_;
   ModalMatrix stiffness_, damping_;  ///< Ke, De
+  Eigen::MatrixXd quasistatic_coupling_;  ///< Ke's block (quasistatic rows, integrated columns) if not zero
   std::array<bool, 6> locked_{};  ///< x y z rx ry rz (body-frame accelerations)
   bool rotates_ = true;           ///< false if all rotations are locked: rotational terms vanish
   Eigen::Index offset_ = 0;

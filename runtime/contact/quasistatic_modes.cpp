@@ -59,7 +59,7 @@ void QuasistaticModes::residual(const double* y, Eigen::VectorXd& R) const {
   else
     R = stiffness_.cwiseProduct(z_);
   R -= terms_.force;
-  R -= rotation_loads_;
+  R -= held_loads_;
 }
 
 namespace {
@@ -121,23 +121,23 @@ double QuasistaticModes::potential_change(double penalty_before) const {
   // centrifugal deformation of a spinning body), and subtracting two values of it would
   // leave round-off where the line search needs the change
   double change = penalty_energy_ - penalty_before;
-  if (dense_stiffness_.size()) return change + (z_ - z_old_).dot(0.5 * dense_stiffness_ * (z_ + z_old_) - rotation_loads_);
+  if (dense_stiffness_.size()) return change + (z_ - z_old_).dot(0.5 * dense_stiffness_ * (z_ + z_old_) - held_loads_);
   for (Eigen::Index i = 0; i < z_.size(); ++i)
-    change += (z_(i) - z_old_(i)) * (0.5 * stiffness_(i) * (z_(i) + z_old_(i)) - rotation_loads_(i));
+    change += (z_(i) - z_old_(i)) * (0.5 * stiffness_(i) * (z_(i) + z_old_(i)) - held_loads_(i));
   return change;
 }
 
-void QuasistaticModes::update_rotation_loads(const double* y) const {
-  rotation_loads_.setZero(size());
-  // held during the Newton iterations: they depend on q only through the small Oe1 terms
-  for (FloatingBody* b : bodies_)
-    b->add_quasistatic_rotation_loads(y, rotation_loads_.segment(b->quasistatic_offset(), b->n_quasistatic()));
+void QuasistaticModes::update_held_loads(const double* y) const {
+  held_loads_.setZero(size());
+  // held during the Newton iterations: the rotation loads depend on z only through the small
+  // Oe1 terms, the coupling not at all
+  for (FloatingBody* b : bodies_) b->add_quasistatic_loads(y, held_loads_.segment(b->quasistatic_offset(), b->n_quasistatic()));
 }
 
 int QuasistaticModes::solve(const double* y) const {
   if (size() == 0) return 0;
   for (FloatingBody* b : bodies_) z_.segment(b->quasistatic_offset(), b->n_quasistatic()) = b->quasistatic_modes();
-  update_rotation_loads(y);
+  update_held_loads(y);
   // Without friction the equilibrium minimizes the convex energy
   // Pi(z) = 1/2 z^T K z - z . loads + sum 1/2 c_p g^2 w, whose gradient is the residual R: Newton steps
   // with an Armijo line search on Pi converge across active-set changes, where a line search
@@ -181,11 +181,11 @@ double QuasistaticModes::friction_power(const double* y, const double* ydot, Eig
   const double h = 1.5e-8 * (1.0 + state.norm()) / rate_norm;
   shifted_y_ = state + h * rate;
   const Eigen::VectorXd R0 = R_;
-  update_rotation_loads(shifted_y_.data());
+  update_held_loads(shifted_y_.data());
   residual(shifted_y_.data(), R_);
   // the Jacobian of the shifted state: it differs from that at y by O(h)
   solve_jacobian((R0 - R_) / h, z_rate_);
-  update_rotation_loads(y);
+  update_held_loads(y);
   residual(y, R_);  // leaves R_, the terms and the penalty energy those of y again
   return -friction_.dot(z_rate_);
 }

@@ -41,8 +41,9 @@ public:
 
 private:
   void scatter(const Eigen::VectorXd& z) const;
-  /// Centrifugal and Coriolis loads on z at state y (held while Newton iterates).
-  void update_rotation_loads(const double* y) const;
+  /// The loads on z at state y that do not depend on z (held while Newton iterates): centrifugal
+  /// and Coriolis loads, and the stiffness coupling to the integrated modes.
+  void update_held_loads(const double* y) const;
   /// Residual K z - f(z) at the current z_, and the rank-one terms of its Jacobian.
   void residual(const double* y, Eigen::VectorXd& R) const;
   /// Solves (K + U V^T) x = b.
@@ -64,7 +65,7 @@ private:
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> jacobian_lu_;
   mutable QuasistaticTerms terms_;
   mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual
-  mutable Eigen::VectorXd rotation_loads_;       ///< centrifugal and Coriolis loads on z
+  mutable Eigen::VectorXd held_loads_;           ///< update_held_loads()
   mutable Eigen::VectorXd shifted_y_, friction_, z_rate_;  ///< friction_power's buffers
 };
 
