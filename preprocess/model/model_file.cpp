@@ -393,12 +393,13 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     r->allow_only({"method", "normal_modes", "interface_surface", "interface_points", "interface_center", "boundary_surface"});
     ReductionSpec& red = m.reduction;
     red.method = r->string("method");
-    if (red.method != "modal" && red.method != "craig-bampton" && red.method != "full" && red.method != "macneal")
-      r->fail("method", "unknown method '" + red.method + "' (modal, craig-bampton, full, macneal)");
+    const bool massless = red.method == "macneal" || red.method == "craig-bampton-massless";
+    if (red.method != "modal" && red.method != "craig-bampton" && red.method != "full" && !massless)
+      r->fail("method", "unknown method '" + red.method + "' (modal, craig-bampton, full, macneal, craig-bampton-massless)");
     const long long n = r->integer("normal_modes", red.method == "full" ? 0 : 10);
-    if (n < 0 || n > 100000 || ((red.method == "modal" || red.method == "macneal") && n < 1))
+    if (n < 0 || n > 100000 || ((red.method == "modal" || massless) && n < 1))
       r->fail("normal_modes", "must be a positive count");
-    if (red.method == "macneal") {
+    if (massless) {
       red.boundary_surface = r->string("boundary_surface");
       const auto surface = std::find_if(m.contact_surfaces.begin(), m.contact_surfaces.end(),
                                         [&](const ContactSurfaceSpec& s) { return s.name == red.boundary_surface; });
@@ -407,9 +408,9 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
       // the massless coordinates are the fine model's control points: a THB body's coarse
       // modes (its transfer operator) would not carry them
       if (std::any_of(m.patches.begin(), m.patches.end(), [](const PatchSpec& p) { return p.refinement.hierarchical.has_value(); }))
-        r->fail("method", "macneal is not available for hierarchically refined bodies (refine with subdivisions or graded knots)");
+        r->fail("method", red.method + " is not available for hierarchically refined bodies (refine with subdivisions or graded knots)");
     } else if (r->has("boundary_surface")) {
-      r->fail("boundary_surface", "only used by method = \"macneal\"");
+      r->fail("boundary_surface", "only used by the massless-boundary methods (macneal, craig-bampton-massless)");
     }
     red.normal_modes = int(n);
     if (red.method == "craig-bampton") {

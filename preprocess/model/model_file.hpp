@@ -36,10 +36,10 @@ struct RefinementSpec {
 
 /// How the body is reduced (the [reduction] table).
 struct ReductionSpec {
-  std::string method = "modal";          ///< modal | craig-bampton | full | macneal
+  std::string method = "modal";          ///< modal | craig-bampton | full | macneal | craig-bampton-massless
   int normal_modes = 10;
   std::string interface_surface;         ///< contact surface whose side holds the interface nodes
-  std::string boundary_surface;          ///< macneal: the contact surface whose control points are the massless boundary
+  std::string boundary_surface;          ///< massless-boundary methods: the contact surface whose control points are the boundary
   int interface_points = 0;              ///< that many side nodes nearest to the point at interface_center
   Eigen::VectorXd interface_center;      ///< tangential parameter(s) on that side
 };

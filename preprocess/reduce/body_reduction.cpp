@@ -72,7 +72,7 @@ ReductionRequest reduction_request(const BodyModel& body) {
   q.method = body.spec.reduction.method;
   q.normal_modes = body.spec.reduction.normal_modes;
   if (q.method == "craig-bampton") q.interface_dofs = interface_dofs(body, q.interface_description);
-  if (q.method == "macneal") q.interface_dofs = massless_boundary_dofs(body, q.interface_description);
+  if (q.method == "macneal" || q.method == "craig-bampton-massless") q.interface_dofs = massless_boundary_dofs(body, q.interface_description);
   return q;
 }
 
@@ -92,6 +92,10 @@ ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system, co
                              std::to_string(request.normal_modes) + " modes need " + std::to_string(needed) +
                                  " free DOFs with the " + (request.method == "modal" ? "rigid-body modes" : "interface DOFs") +
                                  ", but the refined model has " + std::to_string(free));
+  if (request.method == "craig-bampton-massless" && rigid.cols() > 0)
+    throw format::InputError(body.spec.file, "reduction.method",
+                             "craig-bampton-massless needs a body that its [boundary] holds (this one has " + std::to_string(rigid.cols()) +
+                                 " rigid-body motions); use macneal for a free body");
   return reduce(system.K, system.M, rigid, request, scale);
 }
 

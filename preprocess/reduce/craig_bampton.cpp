@@ -58,4 +58,29 @@ Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const 
   return basis;
 }
 
+MasslessBoundaryModel massless_craig_bampton(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                                             const Eigen::MatrixXd& rigid, const std::vector<int>& boundary_dofs, int n_modes,
+                                             double lambda_scale) {
+  if (rigid.cols() > 0)
+    throw format::ComputationError("the massless Craig-Bampton variant needs a body its boundary conditions hold; a free body "
+                                   "would carry its rigid motion in massless constraint modes (use macneal, which relieves inertia)");
+  const Eigen::Index nb = Eigen::Index(boundary_dofs.size());
+  const Eigen::MatrixXd cb = craig_bampton_basis(K, M, boundary_dofs, n_modes, lambda_scale);
+  const Eigen::MatrixXd Theta = cb.leftCols(n_modes);
+  // constraint modes less their mass coupling to Theta: Theta vanishes on the boundary, so the
+  // boundary rows stay [I 0], and Theta^T M Psi = 0 leaves Theta's motion free of u_b's inertia
+  const Eigen::MatrixXd Psi = cb.rightCols(nb) - Theta * (Theta.transpose() * (M * cb.rightCols(nb)));
+  MasslessBoundaryModel out;
+  out.boundary_dofs = boundary_dofs;
+  out.T.resize(K.rows(), nb + n_modes);
+  out.T << Psi, Theta;
+  out.K = out.T.transpose() * (K * out.T);
+  out.K = 0.5 * (out.K + out.K.transpose());
+  out.M = Eigen::MatrixXd::Zero(nb + n_modes, nb + n_modes);
+  out.M.bottomRightCorner(n_modes, n_modes).setIdentity();
+  out.Phi = Theta;
+  out.omega2 = (Theta.transpose() * (K * Theta)).diagonal();
+  return out;
+}
+
 }  // namespace isosid::prep

@@ -5,21 +5,14 @@
 // relief: boundary loads are balanced by rigid-body inertia, and the flexibility acts on the
 // elastic subspace only (the floating frame carries the rigid motion).
 #pragma once
+#include "reduce/massless_boundary.hpp"
+
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <vector>
 
 namespace isosid::prep {
 
-struct MasslessBoundaryModel {
-  std::vector<int> boundary_dofs;  ///< free DOF indices, in the order of u_b
-  Eigen::MatrixXd T;               ///< free DOFs x (nb + nm): u = T [u_b; eta]; its boundary rows are [I 0]
-  Eigen::MatrixXd K;               ///< (nb + nm)^2, T^T K T
-  Eigen::MatrixXd M;               ///< diag(0_bb, I): the boundary carries no mass (not T^T M T, by design)
-  Eigen::MatrixXd Phi;             ///< free DOFs x nm: the retained free-interface modes (M-normalized)
-  Eigen::VectorXd omega2;          ///< the retained elastic modes' squared frequencies
-  Eigen::Index boundary() const { return Eigen::Index(boundary_dofs.size()); }
-};
 
 /// Reduces (K, M) on the free DOFs to the boundary DOFs plus `n_modes` elastic free-interface
 /// modes. `rigid` holds the admissible rigid-body fields (columns; none for a constrained

@@ -9,33 +9,15 @@
 
 namespace isosid::prep {
 
-namespace {
-
-/// MacNeal's model as a basis in the runtime's order: the modes' coordinates eta first (they
-/// carry the mass and are integrated), the massless boundary DOFs last (solved statically).
-ReducedBasis massless_boundary_basis(const MasslessBoundaryModel& m) {
-  const Eigen::Index nb = m.boundary(), nm = m.Phi.cols();
-  ReducedBasis out;
-  out.Phi.resize(m.T.rows(), nm + nb);
-  out.Phi << m.T.rightCols(nm), m.T.leftCols(nb);
-  out.inertial = Eigen::MatrixXd::Zero(m.T.rows(), nm + nb);
-  out.inertial.leftCols(nm) = m.Phi;
-  out.omega2 = Eigen::VectorXd::Zero(nm + nb);
-  out.omega2.head(nm) = m.omega2;
-  out.n_low = int(nm);
-  out.massless_dofs = m.boundary_dofs;
-  return out;
-}
-
-}  // namespace
-
 ReducedBasis reduce(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, const Eigen::MatrixXd& rigid,
                     const ReductionRequest& r, double lambda_scale) {
   const int n_rigid = int(rigid.cols());
-  if (r.method == "macneal") {
-    // not an M-orthonormal basis by design: its boundary is massless, its stiffness coupled
-    if (r.extra_vectors.cols() > 0) throw format::ComputationError("a MacNeal reduction cannot carry a coarse model's modes");
-    ReducedBasis out = massless_boundary_basis(macneal_reduction(K, M, rigid, r.interface_dofs, r.normal_modes, lambda_scale));
+  if (r.method == "macneal" || r.method == "craig-bampton-massless") {
+    // not M-orthonormal bases by design: their boundary is massless, their stiffness coupled
+    if (r.extra_vectors.cols() > 0) throw format::ComputationError("a massless-boundary reduction cannot carry a coarse model's modes");
+    ReducedBasis out = massless_boundary_basis(r.method == "macneal"
+                                                   ? macneal_reduction(K, M, rigid, r.interface_dofs, r.normal_modes, lambda_scale)
+                                                   : massless_craig_bampton(K, M, rigid, r.interface_dofs, r.normal_modes, lambda_scale));
     out.method = r.method;
     out.interface = r.interface_description;
     return out;

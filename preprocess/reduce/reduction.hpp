@@ -1,6 +1,6 @@
 // Model reduction as chosen in the model file: modal truncation, Craig-Bampton, the full
-// modal basis, or MacNeal's massless boundary. Every result is a Buckens-frame basis;
-// all but MacNeal's are M-orthonormal and K-diagonal.
+// modal basis, or a massless boundary (MacNeal, massless Craig-Bampton). Every result is a Buckens-frame basis;
+// all but the massless-boundary ones are M-orthonormal and K-diagonal.
 #pragma once
 #include "reduce/mode_basis.hpp"
 
@@ -11,9 +11,9 @@
 namespace isosid::prep {
 
 struct ReductionRequest {
-  std::string method = "modal";      ///< modal | craig-bampton | full | macneal
-  int normal_modes = 10;             ///< modal, macneal: elastic modes kept; craig-bampton: fixed-interface modes
-  std::vector<int> interface_dofs;   ///< free DOF indices (craig-bampton: interface; macneal: massless boundary)
+  std::string method = "modal";      ///< modal | craig-bampton | full | macneal | craig-bampton-massless
+  int normal_modes = 10;             ///< modal, macneal: elastic modes kept; craig-bampton(-massless): fixed-interface modes
+  std::vector<int> interface_dofs;   ///< free DOF indices (craig-bampton: interface; massless methods: the boundary)
   std::string interface_description;
   Eigen::MatrixXd extra_vectors;     ///< free DOFs x k, added to the basis (e.g. a coarse model's modes)
 };

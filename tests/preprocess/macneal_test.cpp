@@ -1,8 +1,10 @@
-// MacNeal's massless-boundary reduction (seed 003): the reduced model keeps the full model's
+// Massless-boundary reductions (seed 003). MacNeal's: the reduced model keeps the full model's
 // static flexibility at the boundary and its retained free-interface frequencies, and its
 // boundary carries no mass; a free body is reduced with inertia relief, checked against an
-// independent statically determinate support.
+// independent statically determinate support. The massless Craig-Bampton variant: with the
+// boundary held it is the fixed-interface modal model, statically exact, massless boundary.
 #include "geometry/primitives.hpp"
+#include "reduce/craig_bampton.hpp"
 #include "reduce/macneal.hpp"
 #include "reduce/modal_analysis.hpp"
 #include "reduce/mode_basis.hpp"
@@ -108,4 +110,36 @@ TEST_CASE("MacNeal reduction of a free body uses inertia relief", "[macneal]") {
   const Eigen::VectorXd full_omega2 = prep::lowest_modes(f.sys.K, f.sys.M, modes + 3, f.scale).eigenvalues.tail(modes);
   const Eigen::VectorXd reduced = condensed_omega2(r);
   for (int k = 0; k < modes; ++k) CHECK(reduced(k) == Approx(full_omega2(k)).epsilon(1e-10));
+}
+
+TEST_CASE("massless Craig-Bampton: fixed-interface frequencies, boundary flexibility, massless boundary", "[macneal]") {
+  const Fixture f = strip(true);
+  const int modes = 6;
+  const prep::MasslessBoundaryModel r = prep::massless_craig_bampton(f.sys.K, f.sys.M, f.rigid, f.boundary, modes, f.scale);
+  const Eigen::Index nb = r.boundary();
+  // the boundary held: the reduced model's frequencies are the full model's with the boundary
+  // DOFs fixed (an independent eigen solve of the interior), to the eigen solver's round-off
+  std::vector<int> interior;
+  for (int i = 0; i < f.sys.K.rows(); ++i)
+    if (std::find(f.boundary.begin(), f.boundary.end(), i) == f.boundary.end()) interior.push_back(i);
+  const Eigen::VectorXd held = prep::lowest_modes(prep::submatrix(f.sys.K, interior, interior), prep::submatrix(f.sys.M, interior, interior),
+                                                  modes, f.scale).eigenvalues;
+  const Eigen::VectorXd reduced = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(r.K.bottomRightCorner(modes, modes)).eigenvalues();
+  for (int k = 0; k < modes; ++k) CHECK(reduced(k) == Approx(held(k)).epsilon(1e-10));
+  // statically exact: the boundary flexibility of the clamped body (condition of K ~ 1e8)
+  const Eigen::MatrixXd Eb = unit_columns(f.sys.K.rows(), f.boundary);
+  CHECK(relative(reduced_flexibility(r), Eigen::MatrixXd(Eb.transpose() * prep::SparseCholesky(f.sys.K).solve(Eb))) < 1e-8);
+  // massless boundary, physical boundary coordinates, and the constraint modes carry no
+  // inertia coupling to the modes (Theta^T M Psi = 0, relative to the modes' unit mass)
+  CHECK(r.M.topRows(nb).norm() == 0.0);
+  const Eigen::MatrixXd boundary_rows = Eb.transpose() * r.T;
+  CHECK(boundary_rows.leftCols(nb) == Eigen::MatrixXd::Identity(nb, nb));
+  CHECK(boundary_rows.rightCols(modes).norm() == 0.0);
+  CHECK((r.Phi.transpose() * (f.sys.M * r.T.leftCols(nb))).norm() < 1e-10);
+}
+
+TEST_CASE("massless Craig-Bampton refuses a free body", "[macneal]") {
+  const Fixture f = strip(false);
+  CHECK_THROWS_WITH(prep::massless_craig_bampton(f.sys.K, f.sys.M, f.rigid, f.boundary, 4, f.scale),
+                    Catch::Matchers::Contains("use macneal"));
 }

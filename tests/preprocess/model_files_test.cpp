@@ -346,6 +346,42 @@ parameter = [1.0, 0.5]
   CHECK(sid["contact_surfaces"][0]["points"] == 4 * 3);
 }
 
+TEST_CASE("massless-boundary SIDs from model files: MacNeal (free) and massless Craig-Bampton (clamped)", "[model][sid][macneal]") {
+  const test::ScratchDir dir("prep-massless");
+  // the block's top: quadratic along x with 4 spans, 6 control points, 12 DOFs
+  const std::string surface = "\n[[contact_surface]]\nname = \"contact\"\nside = \"top\"\n";
+  struct Case {
+    std::string extra;
+    int modes;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"[reduction]\nmethod = \"macneal\"\nnormal_modes = 4\nboundary_surface = \"contact\"\n", 4},
+           {"[boundary]\nclamped = [\"left\"]\n[reduction]\nmethod = \"craig-bampton-massless\"\nnormal_modes = 5\nboundary_surface = \"contact\"\n", 5},
+       }) {
+    INFO(c.extra);
+    std::ofstream(dir.path("m.model.toml")) << std::string(kValid) + surface + c.extra;
+    const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q --json " + dir.path("m.model.toml"));
+    INFO(r.err);
+    REQUIRE(r.exit_status == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["n_low"] == c.modes);
+    // the clamped corner's control point is not free: 6 points x 2 DOFs, less its two
+    const int boundary = c.extra.find("clamped") != std::string::npos ? 10 : 12;
+    CHECK(j["n_high"] == boundary);
+    // the SID passes the reader's validation (massless rows of Me, names of the boundary DOFs)
+    const format::Sid sid = format::read_sid(dir.path("m.sid.h5"));
+    CHECK(sid.refmod.n_massless() == boundary);
+    CHECK(sid.Me.M0.bottomRows(boundary).isZero(0.0));
+    CHECK_THAT(sid.refmod.mode_names.back(), Contains("boundary " + std::to_string(boundary) + ": control point"));
+  }
+  // a free body has no massless Craig-Bampton model
+  std::ofstream(dir.path("m.model.toml")) << std::string(kValid) + surface +
+                                                 "[reduction]\nmethod = \"craig-bampton-massless\"\nnormal_modes = 5\nboundary_surface = \"contact\"\n";
+  const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("m.model.toml"));
+  CHECK(r.exit_status == 2);
+  CHECK_THAT(r.err, Contains("reduction.method: craig-bampton-massless needs a body that its [boundary] holds"));
+}
+
 TEST_CASE("reduction settings are validated", "[model][sid]") {
   const test::ScratchDir dir("prep-sid-bad");
   const std::string base = std::string(kValid) + "\n[[contact_surface]]\nname = \"contact\"\nside = \"top\"\n";
@@ -361,7 +397,7 @@ TEST_CASE("reduction settings are validated", "[model][sid]") {
             "reduction.boundary_surface: no contact_surface named 'nope'"},
            {"[reduction]\nmethod = \"macneal\"\nnormal_modes = 3\n", "reduction.boundary_surface: missing"},
            {"[reduction]\nmethod = \"macneal\"\nnormal_modes = 0\nboundary_surface = \"contact\"\n", "reduction.normal_modes: must be a positive count"},
-           {"[reduction]\nmethod = \"modal\"\nboundary_surface = \"contact\"\n", "reduction.boundary_surface: only used by method = \"macneal\""},
+           {"[reduction]\nmethod = \"modal\"\nboundary_surface = \"contact\"\n", "reduction.boundary_surface: only used by the massless-boundary methods"},
            {"[damping]\nkappa = -1\n", "damping.kappa: is a damping ratio: must lie in [0, 1]"},
            {"[damping]\nf1 = 100.0\n", "damping.f2: give both f1 and f2"},
            {"[[node]]\nname = \"n\"\nparameter = [2.0, 0.5]\n", "node[0].parameter: outside"},

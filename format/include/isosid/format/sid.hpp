@@ -27,13 +27,15 @@ struct RefMod {
   std::vector<std::string> mode_names;   ///< nq names
   Eigen::VectorXd frequencies_hz;        ///< nq natural frequencies of the reduced body
   int n_low = 0;                         ///< leading normal (low-frequency) modes; the rest are high
-  std::string reduction_method;          ///< "modal", "craig-bampton", "full", "macneal"
+  std::string reduction_method;          ///< "modal", "craig-bampton", "full", "macneal", "craig-bampton-massless"
   std::string interface_description;     ///< e.g. the contact surface and interval of the constraint modes
   Eigen::Index nq() const { return frequencies_hz.size(); }
   int n_high() const { return static_cast<int>(nq()) - n_low; }
-  /// MacNeal SIDs: the high coordinates are the displacements of the massless boundary's DOFs
-  /// (no mass: their rows of Me are zero, their frequency is listed as 0).
-  int n_massless() const { return reduction_method == "macneal" ? n_high() : 0; }
+  /// Massless-boundary SIDs (MacNeal and the massless Craig-Bampton variant): the high
+  /// coordinates are the displacements of the boundary's DOFs (no mass: their rows of Me are
+  /// zero, their frequency is listed as 0).
+  bool massless_boundary() const { return reduction_method == "macneal" || reduction_method == "craig-bampton-massless"; }
+  int n_massless() const { return massless_boundary() ? n_high() : 0; }
 };
 
 /// Rayleigh damping De = alpha1 Me + alpha2 Ke from (kappa, f1, f2) (seed 000 eq. 26-28).

@@ -102,9 +102,9 @@ inline constexpr Item frequencies_hz{"/refmod/frequencies_hz", {}, Kind::Float64
 inline constexpr Item n_low{"/refmod/n_low", {}, Kind::Int64, kScalar, "", Presence::Required,
                             "leading normal (low-frequency) modes, in [0, nq]"};
 inline constexpr Item n_high{"/refmod/n_high", {}, Kind::Int64, kScalar, "", Presence::Required,
-                             "the rest, nq - n_low (constraint / attachment modes; `macneal`: the massless boundary DOFs)"};
+                             "the rest, nq - n_low (constraint / attachment modes; massless-boundary methods: the boundary DOFs)"};
 inline constexpr Item reduction_method{"/refmod/reduction_method", {}, Kind::String, kScalar, "", Presence::Required,
-                                       "`modal`, `craig-bampton`, `full` or `macneal`"};
+                                       "`modal`, `craig-bampton`, `full`, `macneal` or `craig-bampton-massless`"};
 inline constexpr Item interface{"/refmod/interface", {}, Kind::String, kScalar, "", Presence::Required,
                                 "the interface of the constraint modes or the massless boundary, e.g. contact surface and interval"};
 }  // namespace refmod
