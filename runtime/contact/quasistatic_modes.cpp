@@ -25,6 +25,9 @@ QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBod
     // floor Newton stalls at a kink of the penalty law when the solution is zero to round-off.
     const double m = b->sid().refmod.mass;
     floor_ = std::max(floor_, 1e-16 * std::sqrt(m) * std::sqrt(b->sid().J.M0.trace() / m));
+    // exact contact closes gaps to 1e-12 of the body's size: a thousand times the resolution of
+    // a gap between positions of that size, far below any elastic displacement
+    gap_tolerance_ = std::max(gap_tolerance_, 1e-12 * std::sqrt(b->sid().J.M0.trace() / m));
   }
   stiffness_.resize(n);
   Eigen::Index at = 0;
@@ -41,6 +44,7 @@ QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBod
     if (!touches) continue;
     contacts_.push_back(&c);
     conservative_ = conservative_ && c.frictionless();
+    exact_ = exact_ || c.exact();
   }
   z_.setZero(n);
 }
@@ -138,6 +142,23 @@ int QuasistaticModes::solve(const double* y) const {
   if (size() == 0) return 0;
   for (FloatingBody* b : bodies_) z_.segment(b->quasistatic_offset(), b->n_quasistatic()) = b->quasistatic_modes();
   update_held_loads(y);
+  int iterations = newton(y);
+  if (!exact_) return iterations;
+  // exact contact: Uzawa passes on the multipliers, each followed by Newton, until the forces
+  // settle (the gaps of the active points then close); a pass contracts the error by about
+  // k / (k + c_p w), the boundary's stiffness against the augmentation's
+  for (int pass = 1; pass <= kMaxUzawaPasses; ++pass) {
+    double violation = 0;
+    for (const SurfaceContact* c : contacts_)
+      if (c->exact()) violation = std::max(violation, c->update_multipliers(y));
+    if (violation <= gap_tolerance_) return iterations;
+    iterations += newton(y);
+  }
+  throw QuasistaticDivergence("the exact contact of " + names_ + " did not settle in " + std::to_string(kMaxUzawaPasses) +
+                              " augmented-Lagrangian passes: raise its penalty (the augmentation) toward the boundary's stiffness or above");
+}
+
+int QuasistaticModes::newton(const double* y) const {
   // Without friction the equilibrium minimizes the convex energy
   // Pi(z) = 1/2 z^T K z - z . loads + sum 1/2 c_p g^2 w, whose gradient is the residual R: Newton steps
   // with an Armijo line search on Pi converge across active-set changes, where a line search

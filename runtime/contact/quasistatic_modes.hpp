@@ -25,6 +25,9 @@ public:
 
 class QuasistaticModes {
 public:
+  /// Augmented-Lagrangian passes of exact contact before the solve gives up.
+  static constexpr int kMaxUzawaPasses = 100;
+
   /// Assigns every body with quasistatic modes its block of the stacked vector z.
   QuasistaticModes(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const std::vector<SurfaceContact>& contacts);
 
@@ -46,6 +49,8 @@ private:
   void update_held_loads(const double* y) const;
   /// Residual K z - f(z) at the current z_, and the rank-one terms of its Jacobian.
   void residual(const double* y, Eigen::VectorXd& R) const;
+  /// Newton's method for z at y with the contacts' current multipliers; returns its iterations.
+  int newton(const double* y) const;
   /// Solves (K + U V^T) x = b.
   void solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// Change of the potential energy from z_old_ to z_ (frictionless contact: its gradient is
@@ -57,7 +62,9 @@ private:
   Eigen::VectorXd stiffness_;                    ///< diagonal of K_h (the SID's normal form)
   Eigen::MatrixXd dense_stiffness_;              ///< K_h if it is not diagonal (SIDs from elsewhere)
   bool conservative_ = true;
+  bool exact_ = false;                           ///< some contact is exact: Uzawa passes around Newton
   double floor_ = 0;                             ///< unresolvable displacement, modal units
+  double gap_tolerance_ = 0;                     ///< m: exact contact's gaps close to this
   std::string names_;
   mutable Eigen::VectorXd z_, R_, step_, z_old_, coefficients_;
   mutable Eigen::MatrixXd scaled_U_, small_;

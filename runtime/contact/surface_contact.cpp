@@ -25,6 +25,8 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
   }
   edge_ = edge_points(surface_, body.sid().analysis);
   hints_.assign(std::size_t(surface_.points()), Eigen::Vector2d::Constant(NAN));
+  multiplier_.assign(std::size_t(surface_.points()), 0.0);
+  updated_ = multiplier_;
   if (surface_.points() == 0) return;
   bound_center_.head(dim_) = surface_.position.colwise().mean().transpose();
   for (Eigen::Index g = 0; g < surface_.points(); ++g) {
@@ -80,9 +82,10 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
   const FloatingBody* master = target_.body();
   const Eigen::Matrix3d A_master = master ? master->orientation(y).toRotationMatrix() : Eigen::Matrix3d::Identity();
   for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
-    if (t.gap >= 0) return;
+    const double p = pressure(g, t.gap);
+    if (p <= 0) return;
     const double w = surface_.weight(g);
-    const double fn = -spec_.penalty * t.gap * w;  // > 0
+    const double fn = p * w;
     Eigen::Vector3d F = fn * t.normal;
     if (spec_.friction > 0) {
       const Eigen::Vector3d vt = sliding_velocity(P, Psi, y, t);
@@ -96,7 +99,8 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
     ++s.active_points;
     s.edge_points += edge_[std::size_t(g)];
     s.max_penetration = std::max(s.max_penetration, -t.gap);
-    s.penalty_energy += 0.5 * spec_.penalty * t.gap * t.gap * w;
+    // the energy of the actual penetration (exact contact: none once the gaps have closed)
+    if (t.gap < 0) s.penalty_energy += 0.5 * spec_.penalty * t.gap * t.gap * w;
   });
   return s;
 }
@@ -120,9 +124,11 @@ double SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& 
     add_elastic_force(Psi_h, sign * (A.transpose() * n), terms.V.col(k).segment(at, nh));
   };
   for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
-    if (t.gap >= 0) return;
-    const double w = surface_.weight(g), fn = -spec_.penalty * t.gap * w;
-    energy += 0.5 * spec_.penalty * t.gap * t.gap * w;
+    const double p = pressure(g, t.gap);
+    if (p <= 0) return;
+    const double w = surface_.weight(g), fn = p * w;
+    // Newton's merit: its derivative along the gap is -p w (penalty: 1/2 c_p g^2 w)
+    energy += 0.5 * p * p * w / spec_.penalty;
     Eigen::Vector3d F = fn * t.normal, Ft = Eigen::Vector3d::Zero(), dF_dgap = -spec_.penalty * w * t.normal;
     if (spec_.friction > 0) {
       // Along the point's rigid-body sliding, held during the Newton iterations. The quasistatic
@@ -141,10 +147,26 @@ double SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& 
   return energy;
 }
 
+double SurfaceContact::update_multipliers(const double* y) const {
+  std::fill(updated_.begin(), updated_.end(), 0.0);  // points the target does not see carry none
+  double violation = 0;
+  for_each_point(y, [&](Eigen::Index g, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) {
+    const double p = pressure(g, t.gap);
+    updated_[std::size_t(g)] = p;
+    // pressed points should touch, free ones not penetrate
+    violation = std::max(violation, p > 0 ? std::abs(t.gap) : -t.gap);
+  });
+  std::swap(multiplier_, updated_);
+  return violation;
+}
+
 double SurfaceContact::min_gap(const double* y) const {
   double smallest = INFINITY;
-  const double clearance = for_each_point(
-      y, [&](Eigen::Index, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) { smallest = std::min(smallest, t.gap); });
+  // exact contact presses a point at a gap that closes to round-off, of either sign: its
+  // effective gap g - lambda / c_p is negative exactly while it carries pressure
+  const double clearance = for_each_point(y, [&](Eigen::Index g, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) {
+    smallest = std::min(smallest, spec_.exact ? t.gap - multiplier_[std::size_t(g)] / spec_.penalty : t.gap);
+  });
   if (clearance > 0) return clearance;
   // no point is a candidate of the target (all beside it): clear, by an unknown positive gap
   return std::isinf(smallest) ? std::max(bound_radius_, 1e-3) : smallest;

@@ -3,13 +3,16 @@
 // master patch. Each slave point that penetrates the target carries c_p |g| w along the
 // target's normal plus regularized Coulomb friction against the relative sliding velocity;
 // body targets receive the reaction. A bounding-sphere broad phase skips the whole surface
-// while it is clear of the target.
+// while it is clear of the target. Exact contact on a massless boundary (seed 003) is the
+// augmented Lagrangian: each point carries the pressure max(0, lambda - c_p g) with a
+// multiplier lambda that the static solve updates (Uzawa) until the active gaps close.
 #pragma once
 #include "body/floating_body.hpp"
 #include "contact/contact_target.hpp"
 #include "contact/quasistatic_terms.hpp"
 #include "scene/scene.hpp"
 
+#include <algorithm>
 #include <vector>
 
 namespace isosid::run {
@@ -47,11 +50,26 @@ public:
   /// A derived penalty follows the contact radius (or half-width) the impact is expected to
   /// reach, m (default_penalty); a penalty the scene gave stays.
   void fit_penalty_to_contact_radius(double contact_radius);
-  /// Smallest signed gap over the contact points (negative: penetration), for event
-  /// location; while the broad phase finds the surface clear, a positive lower bound.
+  /// Smallest signed gap over the contact points (negative: penetration; exact contact: the
+  /// gap less lambda / c_p, negative while pressed), for event location; while the broad phase
+  /// finds the surface clear, a positive lower bound.
   double min_gap(const double* y) const;
 
+  /// Exact contact (augmented Lagrangian) rather than penalty.
+  bool exact() const { return spec_.exact; }
+  /// Uzawa update of the exact contact's multipliers at y: lambda <- max(0, lambda - c_p g)
+  /// per point. Returns how far the constraints were from holding at y, m: the largest gap of
+  /// a pressed point or penetration of a free one.
+  double update_multipliers(const double* y) const;
+
 private:
+  /// Contact pressure of point g at gap `gap`, Pa: c_p |g| inside the target for penalty
+  /// contact, max(0, lambda_g - c_p g) for exact contact.
+  double pressure(Eigen::Index g, double gap) const {
+    if (spec_.exact) return std::max(0.0, multiplier_[std::size_t(g)] - spec_.penalty * gap);
+    return gap < 0 ? -spec_.penalty * gap : 0.0;
+  }
+
   /// Calls f(g, Psi_g, P, A, target point) for every slave point that is a candidate:
   /// Psi_g its shape rows, P its body-frame position, A the slave's rotation. Returns the
   /// broad-phase clearance (> 0: no point was visited).
@@ -78,6 +96,7 @@ private:
   double bound_growth_ = 0;   ///< max over points of |Psi_g|_F: the sphere grows by this times |q|
   std::vector<char> edge_;                       ///< per point: in an edge element of the surface
   mutable std::vector<Eigen::Vector2d> hints_;  ///< warm starts of the target projections
+  mutable std::vector<double> multiplier_, updated_;  ///< exact contact: lambda per point, Pa
   mutable TargetPoint point_;
   mutable Eigen::VectorXd displacement_;         ///< Psi q of all points
 };

@@ -10,7 +10,7 @@
 namespace isosid::run {
 
 enum class Dimension { Planar, Axisymmetric, Solid };
-enum class IntegratorKind { DormandPrince, Implicit };
+enum class IntegratorKind { DormandPrince, Implicit, Leapfrog };
 
 struct SimulationSettings {
   Dimension dimension = Dimension::Solid;
@@ -18,6 +18,7 @@ struct SimulationSettings {
   IntegratorKind integrator = IntegratorKind::DormandPrince;
   double rtol = 1e-6, atol = 1e-9;
   double max_step = 0;          ///< s, 0: unlimited
+  double step = 0;              ///< s, the leapfrog's fixed step
   long max_steps = 10'000'000;  ///< a run needing more steps stops with a diagnosis instead of crawling
   double output_interval = 0;   ///< s
   /// Bodies may start interpenetrating (refused otherwise: they would be thrown apart).
@@ -77,6 +78,9 @@ struct ContactSpec {
   double penalty = 0;           ///< N/m^3 (pressure per penetration); 0: derived (default_penalty)
   double friction = 0;          ///< Coulomb coefficient
   double regularization = 1e-6; ///< m/s, velocity below which friction is regularized
+  /// The contact on a massless boundary solved exactly (augmented Lagrangian: the penalty
+  /// becomes the augmentation, the gap of every active point closes); else penalty contact.
+  bool exact = false;
 };
 
 /// A joint between a body and another body or the ground (seed 001): both attachments

@@ -105,7 +105,7 @@ std::string resolve(const std::string& scene_file, const std::string& path) {
 }
 
 SimulationSettings read_simulation(const TomlView& s) {
-  s.allow_only({"dimension", "end_time", "integrator", "rtol", "atol", "max_step", "max_steps", "output_interval", "gravity",
+  s.allow_only({"dimension", "end_time", "integrator", "step", "rtol", "atol", "max_step", "max_steps", "output_interval", "gravity",
                 "allow_initial_penetration", "joint_stabilization"});
   SimulationSettings out;
   const std::string dim = s.string("dimension");
@@ -123,8 +123,19 @@ SimulationSettings read_simulation(const TomlView& s) {
     out.integrator = IntegratorKind::DormandPrince;
   else if (integrator == "implicit")
     out.integrator = IntegratorKind::Implicit;
+  else if (integrator == "leapfrog")
+    out.integrator = IntegratorKind::Leapfrog;
   else
-    s.fail("integrator", "unknown integrator '" + integrator + "' (dopri5, implicit)");
+    s.fail("integrator", "unknown integrator '" + integrator + "' (dopri5, implicit, leapfrog)");
+  if (out.integrator == IntegratorKind::Leapfrog) {
+    // fixed steps: the step-size control's keys have nothing to control
+    out.step = s.positive("step");
+    if (out.step > out.end_time) s.fail("step", "exceeds end_time");
+    for (const char* key : {"rtol", "atol", "max_step"})
+      if (s.has(key)) s.fail(key, "not used by the leapfrog (its step is fixed: step)");
+  } else if (s.has("step")) {
+    s.fail("step", "only used by integrator = \"leapfrog\" (dopri5 and implicit choose their steps; see max_step)");
+  }
   out.rtol = s.positive("rtol", 1e-6);
   out.atol = s.positive("atol", 1e-9);
   out.max_step = s.positive("max_step", out.end_time);
@@ -139,10 +150,11 @@ SimulationSettings read_simulation(const TomlView& s) {
     std::snprintf(count, sizeof count, "%.3g samples", samples);
     s.fail("output_interval", std::string("end_time / output_interval asks for ") + count + ", more than the limit of 1e7");
   }
-  if (const double steps = out.end_time / out.max_step; steps > double(out.max_steps)) {
+  const bool leapfrog = out.integrator == IntegratorKind::Leapfrog;
+  if (const double steps = out.end_time / (leapfrog ? out.step : out.max_step); steps > double(out.max_steps)) {
     std::snprintf(count, sizeof count, "%.3g steps", steps);
-    s.fail("max_step", std::string("end_time / max_step needs at least ") + count + ", more than max_steps = " +
-                           std::to_string(out.max_steps));
+    const char* key = leapfrog ? "step" : "max_step";
+    s.fail(key, std::string("end_time / ") + key + " needs at least " + count + ", more than max_steps = " + std::to_string(out.max_steps));
   }
   out.allow_initial_penetration = s.boolean("allow_initial_penetration", false);
   return out;
@@ -243,7 +255,7 @@ Scene read_scene_file(const std::string& path) {
   }
   for (const ShapeSpec& s : scene.fixed_surfaces) check_fits_dimension(s, scene.simulation.dimension, top);
   for (const TomlView& c : top.tables("contact")) {
-    c.allow_only({"name", "body", "surface", "target", "target_surface", "penalty", "friction", "regularization"});
+    c.allow_only({"name", "body", "surface", "target", "target_surface", "penalty", "friction", "regularization", "enforcement"});
     ContactSpec s;
     s.name = unique(c);
     s.body = c.string("body");
@@ -254,6 +266,9 @@ Scene read_scene_file(const std::string& path) {
     s.friction = c.number("friction", 0.0);
     if (s.friction < 0 || s.friction > 10) c.fail("friction", "must lie in [0, 10]");
     s.regularization = c.positive("regularization", s.regularization);
+    const std::string enforcement = c.string("enforcement", "penalty");
+    if (enforcement != "penalty" && enforcement != "exact") c.fail("enforcement", "must be penalty or exact");
+    s.exact = enforcement == "exact";
     const BodySpec* slave = scene.body(s.body);
     if (!slave || slave->rigid) c.fail("body", "no flexible_body named '" + s.body + "' (the slave side carries the contact points)");
     const BodySpec* master = scene.body(s.target);

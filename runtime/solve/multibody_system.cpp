@@ -35,6 +35,7 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
     }
     slave_body_.push_back(body_index(c.body));
     contacts_.emplace_back(c, *bodies_[slave_body_.back()], *targets_.back());
+    if (c.exact) require_massless_points(contacts_.back());
   } catch (const format::InputError& e) {  // a surface the SID does not have: name the scene file
     throw format::InputError(scene.file, "contact " + c.name + "." + e.field(), e.problem());
   }
@@ -67,6 +68,21 @@ void MultibodySystem::warn_of_many_dynamic_modes(const FloatingBody& body, const
   warnings_.push_back("body '" + body.name() + "' integrates " + std::to_string(body.n_dynamic()) +
                       " modes dynamically (up to " + common::number_text(modes.frequencies_hz(body.n_dynamic() - 1)) +
                       " Hz), which makes small steps: " + advice);
+}
+
+void MultibodySystem::require_massless_points(const SurfaceContact& c) {
+  // the static solve sees only the quasistatic coordinates: exact contact needs every contact
+  // point to move with them alone (to round-off of shape functions that vanish on the side)
+  auto moves_with_dynamic = [](const FloatingBody& b, const Eigen::MatrixXd& rows) {
+    const double scale = rows.size() ? rows.cwiseAbs().maxCoeff() : 0.0;
+    return b.n_dynamic() > 0 && rows.size() && rows.leftCols(b.n_dynamic()).cwiseAbs().maxCoeff() > 1e-12 * scale;
+  };
+  const FloatingBody& slave = c.body();
+  if (slave.n_quasistatic() == 0 || moves_with_dynamic(slave, c.surface().Psi))
+    throw format::InputError(c.name(), "enforcement",
+                             "exact contact needs a massless boundary under surface '" + c.surface().name + "' of '" + slave.name() +
+                                 "' (a macneal or craig-bampton-massless SID with boundary_surface = \"" + c.surface().name + "\")");
+  // a target may move with anything: the static solve holds it where the step put it
 }
 
 std::size_t MultibodySystem::body_index(const std::string& name) const {

@@ -61,6 +61,8 @@ public:
 
 private:
   std::size_t body_index(const std::string& name) const;
+  /// Refuses exact contact on a surface whose points move with integrated coordinates.
+  static void require_massless_points(const SurfaceContact& c);
   void warn_of_many_dynamic_modes(const FloatingBody& body, const BodySpec& spec);
   /// Solves every body's quasistatic modes for state y (they depend on the contacts).
   void update_quasistatic(const double* y) const;

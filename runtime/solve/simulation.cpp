@@ -73,7 +73,7 @@ bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
       const auto events = integrator_.advance(tout, t_);
       if (!state().allFinite())
         throw format::ComputationError("the state of body '" + diverged_body(system_, state()) + "' is not finite");
-      for (const auto& e : events) observer.contact_event(e.contact, e.closing, t_);
+      for (const auto& e : events) observer.contact_event(e.contact, e.closing, e.time);
       observer.sample(t_, state().data());
       if (events.empty() && t_ >= double(next_output_) * dt_out * (1 - 1e-12)) ++next_output_;
       if (std::chrono::duration<double>(Clock::now() - last_progress).count() > 1.0) {

@@ -126,6 +126,10 @@ TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSe
     : impl_(std::make_unique<Impl>(system, s.integrator == IntegratorKind::Implicit)), y_(std::move(y0)), max_steps_(s.max_steps) {
   Impl& m = *impl_;
   m.owner = this;
+  if (s.integrator == IntegratorKind::Leapfrog) {
+    leapfrog_ = std::make_unique<Leapfrog>(system, s.step, y_);
+    return;
+  }
   check(SUNContext_Create(nullptr, &m.context), "context");
   m.y = N_VMake_Serial(y_.size(), y_.data(), m.context);  // shares y_'s storage
   m.accepted_y = y_;  // restarts go back to the initial state until a step is accepted (t = 0)
@@ -170,6 +174,19 @@ TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSe
 TimeIntegrator::~TimeIntegrator() = default;
 
 std::vector<TimeIntegrator::GapEvent> TimeIntegrator::advance(double tout, double& t) {
+  if (leapfrog_) {
+    // equal steps of at most the nominal one that end at tout (the output times are sampled)
+    std::vector<GapEvent> changed;
+    while (t < tout * (1 - 1e-12) && changed.empty()) {
+      if (leapfrog_->steps() >= max_steps_)
+        throw format::ComputationError("the step limit max_steps = " + std::to_string(max_steps_) + " was reached");
+      const double left = tout - t, steps = std::ceil(left / leapfrog_->nominal_step() * (1 - 1e-9));
+      leapfrog_->step(t, left / std::max(steps, 1.0));
+      if (step_callback_) step_callback_(t, y_.data());
+      for (const Leapfrog::GapChange& c : leapfrog_->gap_changes()) changed.push_back({c.contact, c.closing, c.time});
+    }
+    return changed;
+  }
   Impl& m = *impl_;
   realtype reached = t;
   int flag = 0;
@@ -227,7 +244,7 @@ std::vector<TimeIntegrator::GapEvent> TimeIntegrator::advance(double tout, doubl
     std::vector<int> info(m.system.contacts().size());  // +1: gap increasing, -1: decreasing
     m.implicit ? ARKStepGetRootInfo(m.memory, info.data()) : ERKStepGetRootInfo(m.memory, info.data());
     for (std::size_t k = 0; k < info.size(); ++k)
-      if (info[k] != 0) changed.push_back({int(k), info[k] < 0});
+      if (info[k] != 0) changed.push_back({int(k), info[k] < 0, reached});
   }
   return changed;
 }
@@ -235,6 +252,11 @@ std::vector<TimeIntegrator::GapEvent> TimeIntegrator::advance(double tout, doubl
 IntegratorStats TimeIntegrator::stats() const {
   const Impl& m = *impl_;
   IntegratorStats s;
+  if (leapfrog_) {
+    s.steps = s.attempts = leapfrog_->steps();
+    s.rhs_evaluations = leapfrog_->rhs_evaluations();
+    return s;
+  }
   long fe = 0, fi = 0;
   if (m.implicit) {
     ARKStepGetNumSteps(m.memory, &s.steps);

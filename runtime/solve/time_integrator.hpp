@@ -1,9 +1,10 @@
-// SUNDIALS ARKODE time integration of a MultibodySystem: explicit Dormand-Prince 5(4)
+// Time integration of a MultibodySystem. SUNDIALS ARKODE: explicit Dormand-Prince 5(4)
 // (ERKStep) or an implicit DIRK method with a dense Newton solver (ARKStep), both adaptive
 // with a maximum step, and with root finding on the contact gaps so that contact onset and
-// release are located.
+// release are located. Or the fixed-step leapfrog of solve/leapfrog (seed 003).
 #pragma once
 #include "scene/scene.hpp"
+#include "solve/leapfrog.hpp"
 #include "solve/multibody_system.hpp"
 
 #include <functional>
@@ -34,6 +35,7 @@ public:
   struct GapEvent {
     int contact;
     bool closing;
+    double time;  ///< s: located by the root finder, or interpolated within a leapfrog step
   };
   /// Advances toward tout. Returns the contacts whose gap changed sign (empty if tout was
   /// reached); t and y() hold the state reached. Throws ComputationError on failure.
@@ -43,8 +45,9 @@ public:
 
 private:
   struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<Impl> impl_;  ///< ARKODE (dopri5, implicit)
   Eigen::VectorXd y_;
+  std::unique_ptr<Leapfrog> leapfrog_;  ///< or the leapfrog
   long max_steps_;  ///< over the whole run (ARKODE counts per advance)
   std::function<void(double, const double*)> step_callback_;
 };
