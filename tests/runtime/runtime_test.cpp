@@ -32,13 +32,7 @@ void check_agree(const json& reference, const json& other, std::initializer_list
   }
 }
 
-
-/// `text` with its first `from` replaced by `to` (which must be there).
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
-}
+using test::replace;
 
 const std::string kImpact = R"(
 [simulation]

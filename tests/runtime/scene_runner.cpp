@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 namespace isosid::test {
 
@@ -32,6 +33,17 @@ nlohmann::json run_seed_scene(const ScratchDir& dir, const std::string& scene, c
   copy_model_file(dir, scene);
   copy_model_file(dir, model);
   return run_file(dir, scene, 0);
+}
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+std::string model_text(const std::string& file) {
+  std::ifstream in(std::string(ISOSID_MODELS_DIR) + "/" + file);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 double rel_error(const nlohmann::json& s, const std::string& key) {

@@ -14,6 +14,10 @@ nlohmann::json run_scene(const ScratchDir& dir, const std::string& text, int exp
 void copy_model_file(const ScratchDir& dir, const std::string& file);
 /// Copies a scene of models/ and its model into dir and runs it.
 nlohmann::json run_seed_scene(const ScratchDir& dir, const std::string& scene, const std::string& model);
+/// `text` with its first `from` replaced by `to` (which must be there).
+std::string replace(std::string text, const std::string& from, const std::string& to);
+/// The text of a file of models/.
+std::string model_text(const std::string& file);
 /// The size of the relative error of a [reference] value in a summary (stored signed).
 double rel_error(const nlohmann::json& summary, const std::string& key);
 
