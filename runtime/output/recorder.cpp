@@ -49,6 +49,7 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
   contact_force_.resize(nc);
   contact_points_.resize(nc);
   contact_penetration_.resize(nc);
+  body_q_.resize(system_.bodies().size());
   intervals_.resize(nc);
   peak_force_.assign(nc, 0);
   points_at_peak_.assign(nc, 0);
@@ -84,7 +85,11 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
 void Recorder::sample(double t, const double* y) {
   time_.push_back(t);
   body_states_.emplace_back(y, y + system_.size());
-  const auto states = system_.contact_states(y);
+  const auto states = system_.contact_states(y);  // also solves the quasistatic coordinates for y
+  for (std::size_t b = 0; b < body_q_.size(); ++b) {
+    const Eigen::VectorXd& q = system_.bodies()[b]->q(y);
+    body_q_[b].insert(body_q_[b].end(), q.data(), q.data() + q.size());
+  }
   for (std::size_t k = 0; k < states.size(); ++k) {
     for (int a = 0; a < 3; ++a) contact_force_[k].push_back(states[k].force(a));
     contact_points_[k].push_back(states[k].active_points);
@@ -159,7 +164,8 @@ void Recorder::write_results(const std::string& path) const {
     format::h5::Writer w(out.temp_path());
     const auto n = Eigen::Index(time_.size());
     w.vector("/time", Eigen::Map<const Eigen::VectorXd>(time_.data(), n), "s");
-    for (const auto& b : system_.bodies()) {
+    for (std::size_t body = 0; body < system_.bodies().size(); ++body) {
+      const FloatingBody* b = system_.bodies()[body].get();
       const std::string g = "/bodies/" + b->name();
       Eigen::MatrixXd r(n, 3), angles(n, 3), quat(n, 4), v(n, 3), w3(n, 3), q(n, b->nq()), qd(n, b->nq());
       for (Eigen::Index i = 0; i < n; ++i) {
@@ -170,7 +176,7 @@ void Recorder::write_results(const std::string& path) const {
         angles.row(i) = tait_bryan_angles(p.toRotationMatrix()).transpose();
         v.row(i) = b->v(y).transpose();
         w3.row(i) = b->omega(y).transpose();
-        q.row(i) = b->q(y).transpose();
+        q.row(i) = Eigen::Map<const Eigen::RowVectorXd>(body_q_[body].data() + i * b->nq(), b->nq());
         qd.row(i) = b->qdot(y).transpose();
       }
       w.group(g);

@@ -47,6 +47,9 @@ private:
   // time series
   std::vector<double> time_;
   std::vector<std::vector<double>> body_states_;  ///< per sample: all states
+  /// per body: its nq elastic coordinates of every sample, the quasistatic ones as solved for
+  /// that sample (they are not part of the state)
+  std::vector<std::vector<double>> body_q_;
   std::vector<std::vector<double>> contact_force_, contact_points_, contact_penetration_;
   std::vector<std::vector<double>> joint_force_, joint_torque_, joint_error_;  ///< per joint: 3, 3, 2 per sample
   std::vector<std::array<double, 6>> energies_;   ///< kinetic, elastic, gravity, penalty, dissipated, total

@@ -65,6 +65,17 @@ TEST_CASE("bar dropped flat on a wall with a massless boundary: duration 2L/c, r
     if (t(i) > 0.15 * duration && t(i) < 0.85 * duration) sum += F(i, 1), ++n;
   REQUIRE(n > 100);
   CHECK(sum / n == Approx(plateau).epsilon(0.03));
+
+  // results.h5 keeps each sample's boundary coordinates: while the wall presses, the bottom
+  // (at y = 0 in the body frame) stays on it, r_y + u_y = minus the penetration (7.5 nm here)
+  const Eigen::MatrixXd r = results.matrix("/bodies/bar/position"), q = results.matrix("/bodies/bar/q");
+  int pressed = 0;
+  for (Eigen::Index i = 0; i < t.size(); ++i) {
+    if (F(i, 1) < 0.01 * plateau) continue;
+    ++pressed;
+    for (const Eigen::Index y_of_point : {n_modes + 1, n_modes + 3}) CHECK(std::abs(r(i, 1) + q(i, y_of_point)) < 2e-8);
+  }
+  CHECK(pressed > 300);
 }
 
 TEST_CASE("the leapfrog keeps a massless-boundary body's free vibration energy bounded over a million steps", "[runtime][massless][leapfrog]") {
