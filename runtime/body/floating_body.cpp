@@ -236,6 +236,12 @@ void FloatingBody::add_quasistatic_loads(const double* y, Eigen::Ref<VectorXd> o
   if (quasistatic_coupling_.size()) out.noalias() -= quasistatic_coupling_ * qv.head(n_dynamic_);
 }
 
+Eigen::VectorXd FloatingBody::modal_energies(const VectorXd& qv, const VectorXd& qd) const {
+  const Index n = nq() - sid_.refmod.n_massless();
+  const Eigen::ArrayXd omega = 2 * M_PI * sid_.refmod.frequencies_hz.head(n).array();
+  return 0.5 * (qd.head(n).array().square() + omega.square() * qv.head(n).array().square()).matrix();
+}
+
 double FloatingBody::kinetic_energy(const double* y) const {
   const VectorXd& qv = q(y);
   const VectorXd& qd = qdot(y);

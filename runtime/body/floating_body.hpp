@@ -99,6 +99,12 @@ public:
   double elastic_energy(const double* y) const;
   double gravity_potential(const double* y, const Eigen::Vector3d& gravity) const;
 
+  /// Energy of each mode that carries mass (all but a massless boundary), J:
+  /// E_k = 1/2 (qdot_k^2 + omega_k^2 q_k^2) with the SID's frequencies (seed 003's modal energy).
+  /// For a SID in normal form they partition the elastic energy exactly; for a massless-boundary
+  /// SID once its boundary is free (it then follows the modes: u_b = Phi_b eta).
+  Eigen::VectorXd modal_energies(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) const;
+
   // --- points of the body ---
   /// World velocity of the body-frame point P as if the body were rigid: v + A (omega x P).
   Eigen::Vector3d rigid_point_velocity(const Eigen::Vector3d& body_point, const double* y) const;

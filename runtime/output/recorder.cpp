@@ -187,6 +187,9 @@ void Recorder::write_results(const std::string& path) const {
       w.matrix(g + "/angular_velocity", w3, "rad/s");
       w.matrix(g + "/q", q, "[q]");
       w.matrix(g + "/qdot", qd, "[q]/s");
+      Eigen::MatrixXd modal(n, b->nq() - b->sid().refmod.n_massless());
+      for (Eigen::Index i = 0; i < n; ++i) modal.row(i) = b->modal_energies(q.row(i).transpose(), qd.row(i).transpose()).transpose();
+      w.matrix(g + "/modal_energy", modal, "J");
     }
     for (std::size_t k = 0; k < system_.contacts().size(); ++k) {
       const std::string g = "/contacts/" + system_.contacts()[k].name();
@@ -301,12 +304,19 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     j["joints"].push_back(jt);
   }
   j["bodies"] = json::array();
-  for (const auto& b : system_.bodies()) {
-    const Eigen::Vector3d v = b->v(y), w = b->omega(y), r = b->r(y);
-    j["bodies"].push_back({{"name", b->name()},
-                           {"final_position", {r.x(), r.y(), r.z()}},
-                           {"final_velocity", {v.x(), v.y(), v.z()}},
-                           {"final_angular_velocity", {w.x(), w.y(), w.z()}}});
+  for (std::size_t body = 0; body < system_.bodies().size(); ++body) {
+    const FloatingBody& b = *system_.bodies()[body];
+    const Eigen::Vector3d v = b.v(y), w = b.omega(y), r = b.r(y);
+    json entry = {{"name", b.name()},
+                  {"final_position", {r.x(), r.y(), r.z()}},
+                  {"final_velocity", {v.x(), v.y(), v.z()}},
+                  {"final_angular_velocity", {w.x(), w.y(), w.z()}}};
+    if (b.nq() > 0 && !body_q_[body].empty()) {  // of the last sample
+      const Eigen::Map<const Eigen::VectorXd> q(body_q_[body].data() + body_q_[body].size() - std::size_t(b.nq()), b.nq());
+      const Eigen::VectorXd E = b.modal_energies(q, b.qdot(y));
+      entry["final_modal_energy_j"] = std::vector<double>(E.data(), E.data() + E.size());
+    }
+    j["bodies"].push_back(entry);
   }
   const double e0 = energies_.empty() ? 0.0 : energies_.front()[5], e1 = energies_.empty() ? 0.0 : energies_.back()[5];
   j["energy"] = {{"initial_j", e0}, {"final_j", e1}, {"max_rel_error", max_relative_energy_error()},
