@@ -36,6 +36,10 @@ QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBod
     dense_stiffness_ = Eigen::MatrixXd::Zero(n, n);
     at = 0;
     for (const Eigen::MatrixXd& K : blocks) dense_stiffness_.block(at, at, K.rows(), K.rows()) = K, at += K.rows();
+    // K_h does not change: factored once, it serves every Woodbury solve (a massless boundary
+    // without contact then costs two triangular solves per Newton step, not a factorization)
+    dense_factor_.compute(dense_stiffness_);
+    dense_factor_ok_ = dense_factor_.info() == Eigen::Success;
   }
   if (n > 0 && stiffness_.minCoeff() <= 0)
     throw format::InputError(names_, "quasistatic modes", "the high modes must have positive stiffness (rigid-body modes cannot be quasistatic)");
@@ -93,10 +97,12 @@ void solve_leading_block(Eigen::MatrixXd& A, Eigen::Index r, Eigen::VectorXd& b)
 void QuasistaticModes::solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   const Eigen::Index r = terms_.rank;
   const auto U = terms_.U.leftCols(r), V = terms_.V.leftCols(r);
-  // the n x n Jacobian itself: always for a dense K_h, and when more contact terms are active
-  // than there are quasistatic modes (forming and factoring it, n^2 r + n^3 / 3, is then cheaper
-  // than Woodbury's r x r capacitance, n r^2 + r^3 / 3)
-  if (dense_stiffness_.size() || r > size()) {
+  // the n x n Jacobian itself (forming and factoring it: n^2 r + n^3 / 3) when that is cheaper
+  // than Woodbury's r x r capacitance: with a diagonal K_h (n r^2 + r^3 / 3) once more contact
+  // terms are active than there are modes; with a dense K_h and its kept Cholesky factor
+  // (2 n^2 r + n r^2) once r passes about n / 4
+  const bool dense = dense_stiffness_.size() > 0;
+  if (dense ? (!dense_factor_ok_ || 4 * r > size()) : r > size()) {
     if (jacobian_.rows() != size()) jacobian_.resize(size(), size()), jacobian_lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(size());
     jacobian_.noalias() = U * V.transpose();
     if (dense_stiffness_.size()) jacobian_ += dense_stiffness_;
@@ -109,9 +115,20 @@ void QuasistaticModes::solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd&
   // sized to the terms' capacity (no allocation once the largest active set has been seen)
   const Eigen::Index capacity = terms_.U.cols();
   if (scaled_U_.cols() != capacity) scaled_U_.resize(size(), capacity), small_.resize(capacity, capacity), coefficients_.resize(capacity);
-  x = b.cwiseQuotient(stiffness_);
+  if (dense) {
+    x = b;
+    dense_factor_.solveInPlace(x);
+  } else {
+    x = b.cwiseQuotient(stiffness_);
+  }
   if (r == 0) return;
-  scaled_U_.leftCols(r) = U.array().colwise() / stiffness_.array();
+  auto scaled_U = scaled_U_.leftCols(r);
+  if (dense) {
+    scaled_U = U;
+    dense_factor_.solveInPlace(scaled_U);
+  } else {
+    scaled_U = U.array().colwise() / stiffness_.array();
+  }
   small_.topLeftCorner(r, r).setIdentity();
   small_.topLeftCorner(r, r).noalias() += V.transpose() * scaled_U_.leftCols(r);
   coefficients_.head(r).noalias() = V.transpose() * x;

@@ -60,7 +60,9 @@ private:
   std::vector<FloatingBody*> bodies_;            ///< bodies with quasistatic modes
   std::vector<const SurfaceContact*> contacts_;  ///< contacts touching one of them
   Eigen::VectorXd stiffness_;                    ///< diagonal of K_h (the SID's normal form)
-  Eigen::MatrixXd dense_stiffness_;              ///< K_h if it is not diagonal (SIDs from elsewhere)
+  Eigen::MatrixXd dense_stiffness_;              ///< K_h if it is not diagonal (massless boundaries, SIDs from elsewhere)
+  Eigen::LLT<Eigen::MatrixXd> dense_factor_;     ///< its Cholesky factor
+  bool dense_factor_ok_ = false;                 ///< K_h is positive definite (else the Jacobian is factored each time)
   bool conservative_ = true;
   bool exact_ = false;                           ///< some contact is exact: Uzawa passes around Newton
   double floor_ = 0;                             ///< unresolvable displacement, modal units
