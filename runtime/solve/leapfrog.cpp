@@ -46,8 +46,9 @@ void Leapfrog::step(double& t, double dt) {
   for (const Eigen::Index i : velocities_) y_(i) += 0.5 * dt * ydot_(i);
   y_(last) += 0.5 * dt * (dissipation_before + ydot_(last));
   ++steps_;
-  // contact onset and release within the step
-  system_.gaps(y_.data(), new_gaps_.data());
+  // contact onset and release within the step, with the static solve of the rhs at these
+  // positions (the kick since changed only velocities)
+  system_.gaps_after_rhs(y_.data(), new_gaps_.data());
   gap_changes_.clear();
   for (std::size_t k = 0; k < gaps_.size(); ++k) {
     const bool was_open = gaps_[k] > 0, is_open = new_gaps_[k] > 0;

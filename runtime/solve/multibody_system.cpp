@@ -136,6 +136,10 @@ void MultibodySystem::gaps(const double* y, double* g) const {
   // zero gap therefore counts as touching: -1e-30 m, far below any physical gap yet far
   // above the denormals that would overflow the root finder's secant step.
   update_quasistatic(y);
+  gaps_after_rhs(y, g);
+}
+
+void MultibodySystem::gaps_after_rhs(const double* y, double* g) const {
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     const double gap = contacts_[k].min_gap(y);
     g[k] = gap != 0.0 ? gap : -1e-30;

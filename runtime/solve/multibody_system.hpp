@@ -32,6 +32,8 @@ public:
   void rhs(double t, const double* y, double* ydot) const;
   /// One gap function per contact (for event location): the smallest signed gap.
   void gaps(const double* y, double* g) const;
+  /// The same right after rhs(y), whose static solve already holds for y (not solved again).
+  void gaps_after_rhs(const double* y, double* g) const;
   /// Contact states at y (for output); also brings the quasistatic modes up to date for y.
   std::vector<ContactState> contact_states(const double* y) const;
   /// Energies at y, given `states` = contact_states(y) (evaluated once for both).
