@@ -70,8 +70,9 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
     }
   }
   q_high_ = VectorXd::Zero(n - n_dynamic_);
+  // in the normal form Ke's off-diagonal entries are round-off, dropped as ModalMatrix drops them
   const MatrixXd coupling = sid_.Ke.M0.bottomLeftCorner(n - n_dynamic_, n_dynamic_);
-  if (!coupling.isZero(0.0)) quasistatic_coupling_ = coupling;
+  if (!stiffness_.is_diagonal() && !coupling.isZero(0.0)) quasistatic_coupling_ = coupling;
   q_full_ = VectorXd::Zero(n);
   qdot_full_ = VectorXd::Zero(n);
   if (spec.q0.size() && spec.q0.size() != n_dynamic_)
