@@ -4,6 +4,7 @@
 #include "isosid/format/error.hpp"
 #include "reduce/modal_analysis.hpp"
 #include "reduce/sparse_cholesky.hpp"
+#include "reduce/sparse_products.hpp"
 
 #include <algorithm>
 #include <memory>
@@ -69,17 +70,16 @@ MasslessBoundaryModel massless_craig_bampton(const Eigen::SparseMatrix<double>& 
   const Eigen::MatrixXd Theta = cb.leftCols(n_modes);
   // constraint modes less their mass coupling to Theta: Theta vanishes on the boundary, so the
   // boundary rows stay [I 0], and Theta^T M Psi = 0 leaves Theta's motion free of u_b's inertia
-  const Eigen::MatrixXd Psi = cb.rightCols(nb) - Theta * (Theta.transpose() * (M * cb.rightCols(nb)));
+  const Eigen::MatrixXd Psi = cb.rightCols(nb) - Theta * (Theta.transpose() * sparse_times(M, cb.rightCols(nb)));
   MasslessBoundaryModel out;
   out.boundary_dofs = boundary_dofs;
   out.T.resize(K.rows(), nb + n_modes);
   out.T << Psi, Theta;
-  out.K = out.T.transpose() * (K * out.T);
-  out.K = 0.5 * (out.K + out.K.transpose());
+  out.K = projected(K, out.T);
   out.M = Eigen::MatrixXd::Zero(nb + n_modes, nb + n_modes);
   out.M.bottomRightCorner(n_modes, n_modes).setIdentity();
   out.Phi = Theta;
-  out.omega2 = (Theta.transpose() * (K * Theta)).diagonal();
+  out.omega2 = projected(K, Theta).diagonal();
   return out;
 }
 

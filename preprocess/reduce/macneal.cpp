@@ -5,6 +5,7 @@
 #include "reduce/modal_analysis.hpp"
 #include "reduce/mode_basis.hpp"
 #include "reduce/sparse_cholesky.hpp"
+#include "reduce/sparse_products.hpp"
 
 #include <Eigen/Cholesky>
 #include <cmath>
@@ -74,8 +75,7 @@ MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, co
   // the boundary rows are [I 0] by construction; the solves leave round-off there (1e-11 on
   // the test strip), which is set exact: u_b are the boundary DOFs themselves
   for (Eigen::Index k = 0; k < nb; ++k) out.T.row(boundary_dofs[std::size_t(k)]) = Eigen::RowVectorXd::Unit(nb + n_modes, k);
-  out.K = out.T.transpose() * (K * out.T);
-  out.K = 0.5 * (out.K + out.K.transpose());
+  out.K = projected(K, out.T);
   out.M = Eigen::MatrixXd::Zero(nb + n_modes, nb + n_modes);
   out.M.bottomRightCorner(n_modes, n_modes).setIdentity();
   out.Phi = Phi;

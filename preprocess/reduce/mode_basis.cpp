@@ -1,6 +1,8 @@
 // Buckens projection and orthonormalization; see mode_basis.hpp.
 #include "reduce/mode_basis.hpp"
 
+#include "reduce/sparse_products.hpp"
+
 #include <Eigen/Eigenvalues>
 
 namespace isosid::prep {
@@ -56,7 +58,7 @@ Eigen::MatrixXd admissible_rigid_fields(const Eigen::MatrixXd& rigid_nodal, cons
 
 void remove_rigid_content(Eigen::MatrixXd& Phi, const Eigen::SparseMatrix<double>& M, const Eigen::MatrixXd& R) {
   if (R.cols() == 0) return;
-  const Eigen::MatrixXd MR = M * R;
+  const Eigen::MatrixXd MR = sparse_times(M, R);
   const Eigen::MatrixXd G = R.transpose() * MR;
   // two passes of the projection: the second removes what round-off left of the first
   for (int pass = 0; pass < 2; ++pass) Phi -= R * G.ldlt().solve(MR.transpose() * Phi);
@@ -67,11 +69,11 @@ Eigen::VectorXd orthonormalize(Eigen::MatrixXd& Phi, const Eigen::SparseMatrix<d
   // 1) M-orthonormal basis of span(Phi), dropping (numerically) dependent directions; columns
   //    are scaled to unit M-norm first so that the rank test compares directions, not scales
   //    (constraint modes and mass-normalized normal modes differ in M-norm by orders of magnitude)
-  const Eigen::VectorXd norms = (Phi.transpose() * (M * Phi)).diagonal().cwiseMax(0.0).cwiseSqrt();
-  for (Eigen::Index c = 0; c < Phi.cols(); ++c)
-    if (norms(c) > 0) Phi.col(c) /= norms(c);
-  Eigen::MatrixXd G = Phi.transpose() * (M * Phi);
-  G = 0.5 * (G + G.transpose()).eval();
+  Eigen::MatrixXd G = projected(M, Phi);
+  const Eigen::VectorXd norms = G.diagonal().cwiseMax(0.0).cwiseSqrt();
+  const Eigen::VectorXd scale = (norms.array() > 0).select(norms.cwiseInverse(), 1.0);
+  Phi *= scale.asDiagonal();
+  G = scale.asDiagonal() * G * scale.asDiagonal();
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> g(G);
   const double largest = g.eigenvalues().maxCoeff();
   Eigen::Index first = 0;
@@ -80,13 +82,10 @@ Eigen::VectorXd orthonormalize(Eigen::MatrixXd& Phi, const Eigen::SparseMatrix<d
   Eigen::MatrixXd B = Phi * g.eigenvectors().rightCols(rank) *
                       g.eigenvalues().tail(rank).cwiseSqrt().cwiseInverse().asDiagonal();
   // 2) diagonalize K in that basis (a standard symmetric eigenproblem now), ascending
-  Eigen::MatrixXd Kr = B.transpose() * (K * B);
-  Kr = 0.5 * (Kr + Kr.transpose()).eval();
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> k(Kr);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> k(projected(K, B));
   Phi = B * k.eigenvectors();
   // 3) one re-orthonormalization pass against round-off growth in the products above
-  Eigen::MatrixXd G2 = Phi.transpose() * (M * Phi);
-  Eigen::LLT<Eigen::MatrixXd> llt(0.5 * (G2 + G2.transpose()));
+  Eigen::LLT<Eigen::MatrixXd> llt(projected(M, Phi));
   Phi = llt.matrixU().solve(Phi.transpose()).transpose();
   return k.eigenvalues();
 }

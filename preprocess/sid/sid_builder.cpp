@@ -4,6 +4,7 @@
 #include "isosid/format/error.hpp"
 #include "isosid/common/sha256.hpp"
 #include "isosid/version.hpp"
+#include "reduce/sparse_products.hpp"
 #include "sid/contact_data.hpp"
 #include "sid/joined_surface.hpp"
 #include "sid/master_patch.hpp"
@@ -65,9 +66,8 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   // the inertia terms from the field that carries the mass (MacNeal: the boundary carries none)
   const Eigen::MatrixXd& inertial = basis.mass_carrying();
   fill_inertia_terms(sid, scalar_mass, body.dofs.node_points(), basis.massless() > 0 ? nodal_modes(body.dofs, inertial) : Phi);
-  auto symmetric = [](const Eigen::MatrixXd& A) { return Eigen::MatrixXd(0.5 * (A + A.transpose())); };
-  sid.Me.M0 = symmetric(inertial.transpose() * (system.M * inertial));
-  sid.Ke.M0 = symmetric(basis.Phi.transpose() * (system.K * basis.Phi));
+  sid.Me.M0 = projected(system.M, inertial);
+  sid.Ke.M0 = projected(system.K, basis.Phi);
 
   format::RefMod& r = sid.refmod;
   r.frequencies_hz = basis.omega2.cwiseMax(0.0).cwiseSqrt() / (2 * M_PI);

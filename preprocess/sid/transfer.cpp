@@ -4,6 +4,7 @@
 #include "space/gauss_quadrature.hpp"
 #include "assemble/point_operator.hpp"
 #include "sid/sid_builder.hpp"
+#include "reduce/sparse_products.hpp"
 
 #include <Eigen/LU>
 
@@ -84,7 +85,7 @@ format::TransferOperator reduced_transfer(const ReducedModel& coarse, const Redu
   // q_to = Phi_to^T M_to u_to (Phi_to is M-orthonormal), u_to = free part of N u_from
   auto project = [](const ReducedModel& from, const ReducedModel& to, const Eigen::SparseMatrix<double>& N) {
     const Eigen::MatrixXd moved = free_rows(to.body.dofs, N * nodal_modes(from.body.dofs, from.basis.Phi));
-    return Eigen::MatrixXd(to.basis.Phi.transpose() * (to.system.M * moved));
+    return Eigen::MatrixXd(to.basis.Phi.transpose() * sparse_times(to.system.M, moved));
   };
   format::TransferOperator t;
   t.coarse_to_fine = project(coarse, fine, nodal.coarse_to_fine);
