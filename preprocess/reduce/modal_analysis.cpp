@@ -27,6 +27,7 @@ public:
     use_single_threaded_blas();
     cholmod_start(&common_);
     common_.supernodal = CHOLMOD_SUPERNODAL;
+    common_.print = 0;  // failures become the exception below, not text on stdout (which may be JSON)
     const Eigen::SparseMatrix<double> A = K - sigma * M;
     cholmod_sparse a = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
     factor_ = cholmod_analyze(&a, &common_);

@@ -83,6 +83,7 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
 }
 
 void Recorder::sample(double t, const double* y) {
+  const OutputClock clock(output_s_);
   time_.push_back(t);
   body_states_.emplace_back(y, y + system_.size());
   const auto states = system_.contact_states(y);  // also solves the quasistatic coordinates for y
@@ -113,6 +114,7 @@ void Recorder::sample(double t, const double* y) {
 }
 
 void Recorder::step(double t, const double* y) {
+  const OutputClock clock(output_s_);
   const auto states = system_.contact_states(y);
   const double dt = t - last_step_t_;
   for (std::size_t k = 0; k < states.size(); ++k) {
@@ -259,6 +261,11 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
   j["newton_iterations"] = stats.newton_iterations + system_.quasistatic_iterations();
   j["jacobian_setups"] = stats.jacobian_setups;
   j["time_per_step_s"] = stats.steps ? wall_time / double(stats.steps) : 0.0;
+  const MultibodySystem::RhsCost& cost = system_.rhs_cost();
+  j["time_split_s"] = {{"static_solve", cost.static_solve_s}, {"contacts", cost.contacts_s}, {"joints", cost.joints_s},
+                       {"floating_frame", cost.floating_frame_s}, {"output", output_s_}};
+  j["rhs_cost"] = {{"evaluations", cost.evaluations},
+                   {"mean_active_points", cost.evaluations ? double(cost.active_points) / double(cost.evaluations) : 0.0}};
   j["contacts"] = json::array();
   for (std::size_t k = 0; k < system_.contacts().size(); ++k) {
     json c;
@@ -308,6 +315,8 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     const FloatingBody& b = *system_.bodies()[body];
     const Eigen::Vector3d v = b.v(y), w = b.omega(y), r = b.r(y);
     json entry = {{"name", b.name()},
+                  {"nq", b.nq()},
+                  {"quasistatic_modes", b.n_quasistatic()},
                   {"final_position", {r.x(), r.y(), r.z()}},
                   {"final_velocity", {v.x(), v.y(), v.z()}},
                   {"final_angular_velocity", {w.x(), w.y(), w.z()}}};

@@ -9,6 +9,7 @@
 #include "solve/time_integrator.hpp"
 
 #include <array>
+#include <chrono>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -68,6 +69,18 @@ private:
   std::vector<format::Node> monitor_nodes_;         ///< SID nodes, or master-patch points as nodes
   std::vector<const FloatingBody*> monitor_bodies_;
   std::vector<StressMonitor> stress_monitors_;
+  double output_s_ = 0;  ///< time spent in sample() and step()
+
+  /// Adds the time of its scope to a total.
+  class OutputClock {
+  public:
+    explicit OutputClock(double& total) : total_(total) {}
+    ~OutputClock() { total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+  private:
+    double& total_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  };
 };
 
 }  // namespace isosid::run

@@ -57,6 +57,14 @@ public:
   const std::vector<std::string>& warnings() const { return warnings_; }
   /// Newton iterations of the quasistatic modes so far.
   long quasistatic_iterations() const { return quasistatic_iterations_; }
+  /// Where the right-hand side's time went so far (bench/cost_model.py sets it against the
+  /// work the evaluations cannot avoid).
+  struct RhsCost {
+    long evaluations = 0;
+    long active_points = 0;  ///< contact points carrying load, summed over the evaluations
+    double static_solve_s = 0, contacts_s = 0, joints_s = 0, floating_frame_s = 0;
+  };
+  const RhsCost& rhs_cost() const { return cost_; }
 
   /// More dynamically integrated modes than this in one body draw a warning.
   static constexpr Eigen::Index kManyDynamicModes = 200;
@@ -80,6 +88,7 @@ private:
   Eigen::Index size_ = 0;
   mutable std::vector<GeneralizedForce> forces_;
   mutable long quasistatic_iterations_ = 0;
+  mutable RhsCost cost_;
   std::vector<std::string> warnings_;
   std::vector<std::optional<ImpactEstimate>> impact_estimates_;
 };

@@ -1,0 +1,78 @@
+#!/usr/bin/python3
+"""Cost model of the runtime (issue 19): for each validation scene, the time per right-hand side
+split into the quasistatic static solve, contact detection and forces, joints, the floating-frame
+equations and output (summary.json `time_split_s`), set against a bound from the work no
+evaluation can avoid:
+  - the dense floating-frame terms: one product with each body's coupled (nq + 6)^2 mass matrix,
+  - mapping displacements to and forces from the loaded contact points: 2 x 3 x nq multiply-adds
+    each way per point (summary.json `rhs_cost.mean_active_points`),
+at this core's dense floating-point rate, measured here with one BLAS thread. The ratio says how
+far an evaluation is from that bound. Writes the 'cost-model' section of bench/RESULTS.md.
+Usage: bench/cost_model.py"""
+import os
+
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # the rate of one core, as isosid-run uses
+import sys  # noqa: E402
+import tempfile  # noqa: E402
+import time  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+from bench_common import BUILD, ROOT, machine, run_json, update_section  # noqa: E402
+
+RUN = os.path.join(BUILD, "runtime", "isosid-run")
+SCENES = [("A", "sphere_hertz"), ("A′", "sphere_pair"), ("B", "rod_impact"), ("C", "cylinder_friction")]
+PARTS = ["static_solve", "contacts", "joints", "floating_frame", "output"]
+
+
+def dense_rate():
+    """Multiply-adds per second of a 600 x 600 matrix-vector product on one core (best of five):
+    the work of an evaluation is matrix-vector work, which a matrix-matrix rate would overstate."""
+    rng = np.random.default_rng(0)
+    a, x = rng.standard_normal((600, 600)), rng.standard_normal(600)
+    best = float("inf")
+    for _ in range(5):
+        t0 = time.perf_counter()
+        for _ in range(200):
+            a @ x
+        best = min(best, (time.perf_counter() - t0) / 200)
+    return 600 ** 2 / best
+
+
+def bound_multiply_adds(summary):
+    nq = [b["nq"] for b in summary["bodies"]]
+    frame = sum((n + 6) ** 2 for n in nq)
+    points = summary["rhs_cost"]["mean_active_points"]
+    # a loaded point maps through the rows of the body it belongs to (the larger one, to bound from below)
+    mapping = 2 * 3 * max(nq, default=0) * points
+    return frame + mapping
+
+
+def main():
+    rate = dense_rate()
+    info = machine()
+    lines = ["## Runtime: cost per right-hand side against its bound",
+             f"{info['date']}, {info['machine']}, commit {info['commit']}; `bench/cost_model.py`. "
+             f"Time per right-hand side (RHS) from summary.json `time_split_s` (output: per RHS as well, though it runs per step); "
+             f"bound: the unavoidable multiply-adds (one product with each body's (nq + 6)^2 mass matrix, and 2 x 3 x nq per loaded "
+             f"contact point) at this core's dense rate, {rate / 1e9:.1f} G multiply-adds/s (600 x 600 matrix-vector product, one thread).",
+             "", "| scene | nq (quasistatic) | RHS | mean loaded points | µs per RHS | " + " | ".join(PARTS) +
+             " | bound [µs] | ratio |", "|---|---|---|---|---|" + "---|" * len(PARTS) + "---|---|"]
+    with tempfile.TemporaryDirectory() as scratch:
+        for label, name in SCENES:
+            s = run_json([RUN, "-q", "--json", os.path.join(ROOT, "models", name + ".scene.toml"), "-o", scratch])
+            n = s["rhs_cost"]["evaluations"]
+            split = s["time_split_s"]
+            per = {p: 1e6 * split[p] / n for p in PARTS}
+            total = sum(per.values())
+            bound = 1e6 * bound_multiply_adds(s) / rate
+            nq = " + ".join(f"{b['nq']} ({b['quasistatic_modes']})" for b in s["bodies"] if b["nq"] > 0)
+            lines.append(f"| {label} `{name}` | {nq} | {n} | {s['rhs_cost']['mean_active_points']:.1f} | {total:.1f} | " +
+                         " | ".join(f"{per[p]:.2f}" for p in PARTS) + f" | {bound:.2f} | {total / bound:.0f} |")
+            print(lines[-1], file=sys.stderr)
+    update_section("cost-model", "\n".join(lines))
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
