@@ -41,10 +41,24 @@ TEST_CASE("bar dropped flat on a wall with a massless boundary: duration 2L/c, r
   const double c = std::sqrt(2.1e11 / 7800.0), L = 0.1;
   CHECK(s["monitors"][0]["reversal_s"].get<double>() == Approx(L / c).epsilon(0.01));
 
+  // the cost split (bench/cost_model.py): every right-hand side is timed, its parts add up to
+  // less than the run, and the massless boundary is solved statically in each one
+  CHECK(s["rhs_cost"]["evaluations"].get<long>() == s["rhs_evaluations"].get<long>());
+  CHECK(s["rhs_cost"]["mean_active_points"].get<double>() > 0);
+  double parts = 0;
+  for (const auto& [part, seconds] : s["time_split_s"].items()) {
+    CHECK(seconds.get<double>() >= 0);
+    parts += seconds.get<double>();
+  }
+  CHECK(parts <= s["wall_time_s"].get<double>());
+  CHECK(s["time_split_s"]["static_solve"].get<double>() > 0);
+
   // the SID: the boundary carries no mass, and the contact points move with it alone
   const format::Sid sid = format::read_sid(dir.path("bar_drop_macneal.sid.h5"));
   REQUIRE(sid.refmod.n_massless() == 4);  // two control points, x and y
   const Eigen::Index n_modes = sid.nq() - 4;
+  CHECK(s["bodies"][0]["nq"].get<Eigen::Index>() == sid.nq());
+  CHECK(s["bodies"][0]["quasistatic_modes"].get<Eigen::Index>() >= 4);  // massless coordinates are always static
   CHECK(sid.Me.M0.bottomRows(4).isZero(0.0));
   CHECK(sid.Me.M0.topLeftCorner(n_modes, n_modes).isIdentity(1e-10));
   // (to the round-off of shape functions that vanish on the side: 1e-17 where a mode is O(1))
