@@ -79,7 +79,7 @@ MasslessBoundaryModel massless_craig_bampton(const Eigen::SparseMatrix<double>& 
   out.M = Eigen::MatrixXd::Zero(nb + n_modes, nb + n_modes);
   out.M.bottomRightCorner(n_modes, n_modes).setIdentity();
   out.Phi = Theta;
-  out.omega2 = projected(K, Theta).diagonal();
+  out.omega2 = out.K.bottomRightCorner(n_modes, n_modes).diagonal();  // Theta^T K Theta, Theta being T's last columns
   return out;
 }
 
