@@ -268,6 +268,12 @@ void compare_parts(const Sid& a, const Sid& b, const MatrixXd& Q, const Scales& 
     cmp.values(p + "/position", sa.position, sb.position, L);
     cmp.values(p + "/S", sa.S, cols_modal(sb.S, Q), s.E * inv_sm / L);
   }
+  if (a.visual && b.visual && a.visual->points() == b.visual->points()) {
+    const VisualMesh &va = *a.visual, &vb = *b.visual;
+    cmp.values("/visual/position", va.position, vb.position, L);
+    cmp.values("/visual/Phi", va.Phi, cols_modal(vb.Phi, Q), inv_sm);
+    if (va.S.size() > 0 && va.S.rows() == vb.S.rows()) cmp.values("/visual/S", va.S, cols_modal(vb.S, Q), s.E * inv_sm / L);
+  }
   if (a.transfer.has_value() != b.transfer.has_value()) {
     cmp.same("/transfer", a.transfer ? "present" : "absent", b.transfer ? "present" : "absent");
   } else if (a.transfer) {
@@ -303,6 +309,12 @@ bool compare_structure(const Sid& a, const Sid& b, Comparer& cmp, const Comparis
   for (std::size_t i = 0; i < a.stress_recovery.size(); ++i)
     cmp.same(layout::stress::group.at(a.stress_recovery[i].name) + " points", a.stress_recovery[i].position.rows(),
              b.stress_recovery[i].position.rows());
+  cmp.same("/visual", a.visual ? "present" : "absent", b.visual ? "present" : "absent");
+  if (a.visual && b.visual) {
+    cmp.same("/visual points", a.visual->points(), b.visual->points());
+    cmp.same("/visual cells", a.visual->cell_count(), b.visual->cell_count());
+    cmp.same("/visual/stress_components", a.visual->stress_components.size(), b.visual->stress_components.size());
+  }
   return out.differences.size() == before;
 }
 

@@ -21,6 +21,8 @@ std::string_view size_name(Size s) {
     case Size::Levels: return "levels";
     case Size::Timings: return "ntimings";
     case Size::Interfaces: return "ninterfaces";
+    case Size::Cells: return "ncells";
+    case Size::Corners: return "ncorners";
     case Size::Count: break;
   }
   return "?";
@@ -132,6 +134,8 @@ const std::vector<const Item*>& items() {
         &transfer::group, &transfer::coarse_model_sha256, &transfer::coarse_to_fine, &transfer::fine_to_coarse,
         &discretization::group, &discretization::elements_per_level, &discretization::functions_per_level,
         &discretization::free_dofs, &discretization::contact_radius,
+        &visual::group, &visual::corners_per_cell, &visual::position, &visual::cells, &visual::Phi,
+        &visual::stress_components, &visual::S,
         &provenance::group, &provenance::model_file, &provenance::model_sha256, &provenance::program_version,
         &provenance::created_utc, &provenance::timing_names, &provenance::timings_s});
     return v;

@@ -156,6 +156,20 @@ void read_provenance(const h5::Reader& r, Sid& sid) {
   for (std::size_t i = 0; i < names.size(); ++i) p.timings_s.emplace_back(names[i], seconds(Eigen::Index(i)));
 }
 
+void read_visual(const h5::Reader& r, Sid& sid) {
+  if (!r.exists(visual::group.at())) return;
+  VisualMesh v;
+  v.corners_per_cell = int(r.integer(visual::corners_per_cell.at()));
+  v.position = r.matrix(visual::position.at());
+  v.cells = r.integers(visual::cells.at());
+  v.Phi = r.matrix(visual::Phi.at());
+  if (r.exists(visual::stress_components.at())) {
+    v.stress_components = r.strings(visual::stress_components.at());
+    v.S = r.matrix(visual::S.at());
+  }
+  sid.visual = std::move(v);
+}
+
 Sid read_sid_unprobed(const std::string& path) {
   const h5::Reader r(path);
   const std::string version_path = header::version.at();
@@ -175,6 +189,7 @@ Sid read_sid_unprobed(const std::string& path) {
   read_transfer(r, sid);
   read_patches(r, sid);
   read_discretization(r, sid);
+  read_visual(r, sid);
   read_provenance(r, sid);
   validate_sid(sid, path);
   return sid;

@@ -316,6 +316,25 @@ void check_transfer(const Checker& c, const Sid& sid) {
   c.shape(transfer::fine_to_coarse, {}, t.fine_to_coarse, sizes);
 }
 
+/// The viewing mesh: cells of 4 or 8 corners naming existing points, rows of the right shapes.
+void check_visual(const Checker& c, const Sid& sid) {
+  if (!sid.visual) return;
+  const VisualMesh& v = *sid.visual;
+  const int k = v.corners_per_cell;
+  c.require(k == 4 || (k == 8 && sid.dim() == 3), visual::corners_per_cell.at(),
+            "must be 4 (quadrilaterals) or, for a 3D body, 8 (hexahedra)");
+  c.require(v.position.cols() == sid.dim(), visual::position.at(), "expected " + std::to_string(sid.dim()) + " columns");
+  c.finite(visual::position.at(), v.position);
+  c.require(v.cells.size() % k == 0, visual::cells.at(), "length is not a multiple of corners_per_cell");
+  for (Index i = 0; i < v.cells.size(); ++i)
+    c.require(v.cells(i) >= 0 && v.cells(i) < v.points(), visual::cells.at(),
+              "entry " + std::to_string(i) + " names point " + std::to_string(v.cells(i)) + " of " + std::to_string(v.points()));
+  Sizes sizes(sid.nq(), sid.dim());
+  sizes.set(Size::Points, v.points()).set(Size::Components, Index(v.stress_components.size()));
+  c.shape(visual::Phi, {}, v.Phi, sizes);
+  if (!v.stress_components.empty() || v.S.size() > 0) c.shape(visual::S, {}, v.S, sizes);
+}
+
 }  // namespace
 
 void validate_sid(const Sid& sid, const std::string& file) {
@@ -330,6 +349,7 @@ void validate_sid(const Sid& sid, const std::string& file) {
   check_patches(c, sid);
   check_transfer(c, sid);
   check_discretization(c, sid);
+  check_visual(c, sid);
 }
 
 }  // namespace isosid::format

@@ -154,6 +154,19 @@ void write_discretization(h5::Writer& w, const Sid& sid) {
   if (sid.discretization->contact_radius > 0) put(w, discretization::contact_radius, sid.discretization->contact_radius);
 }
 
+void write_visual(h5::Writer& w, const Sid& sid) {
+  if (!sid.visual) return;
+  const VisualMesh& v = *sid.visual;
+  put_group(w, visual::group);
+  put_integer(w, visual::corners_per_cell, v.corners_per_cell);
+  put(w, visual::position, {}, v.position);
+  put(w, visual::cells, {}, v.cells);
+  put(w, visual::Phi, {}, v.Phi);
+  if (v.stress_components.empty()) return;
+  put(w, visual::stress_components, {}, v.stress_components);
+  put(w, visual::S, {}, v.S);
+}
+
 void write_provenance(h5::Writer& w, const Sid& sid) {
   const Provenance& p = sid.provenance;
   put_group(w, provenance::group);
@@ -200,6 +213,7 @@ void write_sid(const Sid& sid, const std::string& path, const WriteOptions& opti
     part("patches", [&] { write_patches(w, sid); });
     part("transfer", [&] { write_transfer(w, sid); });
     part("discretization", [&] { write_discretization(w, sid); });
+    part("visual", [&] { write_visual(w, sid); });
     part("provenance", [&] { write_provenance(w, sid); });
     w.close();
   }

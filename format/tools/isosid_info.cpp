@@ -5,10 +5,12 @@
 #include "isosid/format/rigid_invariants.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "isosid/format/sid_layout.hpp"
+#include "isosid/format/visual_grid.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -76,6 +78,10 @@ json describe(const Sid& sid) {
   j["transfer"] = sid.transfer ? json{{"coarse_nq", sid.transfer->coarse_to_fine.cols()},
                                       {"coarse_model_sha256", sid.transfer->coarse_model_sha256}}
                                : json(nullptr);
+  j["visual"] = sid.visual ? json{{"points", sid.visual->points()}, {"cells", sid.visual->cell_count()},
+                                  {"corners_per_cell", sid.visual->corners_per_cell},
+                                  {"stress_components", sid.visual->stress_components}}
+                           : json(nullptr);
   json timings = json::object();
   for (const auto& [name, s] : sid.provenance.timings_s) timings[name] = s;
   j["provenance"] = {{"model_file", sid.provenance.model_file}, {"model_sha256", sid.provenance.model_sha256},
@@ -132,6 +138,9 @@ void print_text(const Sid& sid, std::ostream& out) {
         out << "\n  level " << l << "     " << d->elements_per_level(l) << " elements, " << d->functions_per_level(l) << " functions";
     out << "\n";
   }
+  if (const auto& v = sid.visual)
+    out << "visual        " << v->points() << " points, " << v->cell_count() << (v->corners_per_cell == 8 ? " hexahedra" : " quadrilaterals")
+        << (v->stress_components.empty() ? ", no stress rows" : ", stress rows") << "\n";
   out << "provenance    " << sid.provenance.model_file << " (sha256 " << sid.provenance.model_sha256.substr(0, 12)
       << "...), isosid " << sid.provenance.program_version << ", " << sid.provenance.created_utc << "\n";
   for (const auto& [name, s] : sid.provenance.timings_s) out << "  time        " << name << ": " << number_text(s) << " s\n";
@@ -143,18 +152,28 @@ int main(int argc, char** argv) {
   return isosid::common::run_guarded("isosid-info", [&] {
     CLI::App app{"Shows what a SID file holds: body, mass, centre of mass, inertia, modes, contact data.", "isosid-info"};
     std::string file;
+    std::string paraview_dir;
     bool as_json = false, print_layout = false;
     auto* what = app.add_option_group("what", "a SID file, or --layout");
     what->add_option("file", file, "SID file (.sid.h5)");
     what->add_flag("--layout", print_layout, "print the SID file layout as a markdown table (as in format/README.md)");
     what->require_option(1);
     app.add_flag("--json", as_json, "print JSON instead of text");
+    app.add_option("--paraview", paraview_dir,
+                   "also write the mode shapes on the SID's viewing mesh to DIR/<body>_modes.vtu (needs [visual] in the model)");
     if (auto status = isosid::common::parse_command_line(app, argc, argv)) return *status;
     if (print_layout) {
       std::cout << layout::markdown_table();
       return 0;
     }
     const Sid sid = read_sid(file);
+    if (!paraview_dir.empty()) {
+      if (!sid.visual) throw InputError(file, "/visual", "the SID has no viewing mesh: add [visual] to its model file and rebuild it");
+      if (!std::filesystem::is_directory(paraview_dir)) throw InputError(paraview_dir, "--paraview", "not a folder");
+      const std::string path = (std::filesystem::path(paraview_dir) / (sid.body_name + "_modes.vtu")).string();
+      vtk::write_vtu(path, mode_shape_grid(sid));
+      std::cerr << "isosid-info: mode shapes of " << sid.nq() << " coordinates -> " << path << "\n";
+    }
     if (as_json)
       std::cout << describe(sid).dump(2) << "\n";
     else

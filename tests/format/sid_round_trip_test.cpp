@@ -74,6 +74,13 @@ TEST_CASE("SID write/read round trip is bit-exact", "[format][io]") {
   REQUIRE(b.transfer.has_value());
   CHECK(b.transfer->coarse_to_fine == a.transfer->coarse_to_fine);
   CHECK(b.transfer->fine_to_coarse == a.transfer->fine_to_coarse);
+  REQUIRE(b.visual.has_value());
+  CHECK(b.visual->corners_per_cell == a.visual->corners_per_cell);
+  CHECK(b.visual->position == a.visual->position);
+  CHECK(b.visual->cells == a.visual->cells);
+  CHECK(b.visual->Phi == a.visual->Phi);
+  CHECK(b.visual->stress_components == a.visual->stress_components);
+  CHECK(b.visual->S == a.visual->S);
   CHECK(b.provenance.timings_s == a.provenance.timings_s);
   CHECK(b.provenance.model_sha256 == a.provenance.model_sha256);
 }
@@ -102,11 +109,13 @@ TEST_CASE("an order-0 SID without optional parts round-trips", "[format][io]") {
   a.master_patches.clear();
   a.stress_recovery.clear();
   a.transfer.reset();
+  a.visual.reset();
   a.J.M1.clear();
   format::write_sid(a, dir.path("m.sid.h5"));
   const Sid b = format::read_sid(dir.path("m.sid.h5"));
   CHECK(b.nodes.empty());
   CHECK_FALSE(b.transfer.has_value());
+  CHECK_FALSE(b.visual.has_value());
   CHECK(b.J.order() == 0);
   CHECK(b.J.M0 == a.J.M0);
 }

@@ -57,6 +57,20 @@ TEST_CASE("reader refuses each kind of bad SID with a message naming the dataset
     const auto m = message_after(dir, [&](const std::string& f) { test::replace_dataset(f, "/terms/Ct/M0", bad); });
     CHECK_THAT(m, Contains("/terms/Ct/M0") && Contains("non-finite"));
   }
+  SECTION("a viewing-mesh cell naming a point that does not exist") {
+    const auto m = message_after(dir, [](const std::string& f) {
+      test::replace_integers(f, "/visual/cells", Eigen::VectorXi::Constant(4, 99));
+    });
+    CHECK_THAT(m, Contains("/visual/cells") && Contains("names point 99 of"));
+  }
+  SECTION("viewing-mesh cells of 5 corners") {
+    const auto m = message_after(dir, [](const std::string& f) { test::replace_integer(f, "/visual/corners_per_cell", 5); });
+    CHECK_THAT(m, Contains("/visual/corners_per_cell") && Contains("must be 4"));
+  }
+  SECTION("viewing-mesh rows of the wrong shape") {
+    const auto m = message_after(dir, [](const std::string& f) { test::replace_dataset(f, "/visual/Phi", Eigen::MatrixXd::Zero(3, 4)); });
+    CHECK_THAT(m, Contains("/visual/Phi") && Contains("wrong shape (3, 4)"));
+  }
   SECTION("non-symmetric mass matrix") {
     Eigen::MatrixXd me = Eigen::MatrixXd::Identity(4, 4);
     me(0, 3) = 0.5;

@@ -38,7 +38,11 @@ TEST_CASE("isosid-info --json reports mass, centre of mass, inertia, nq and freq
 TEST_CASE("the tools exit 2 with one line on bad input", "[format][tools]") {
   const test::ScratchDir dir("bad");
   std::ofstream(dir.path("junk.sid.h5")) << "junk";
+  format::write_sid(test::lumped_sid(test::random_lumped_body(8, 3, 1)), dir.path("viewable.sid.h5"));
+  const std::string golden = std::string(ISOSID_SOURCE_DIR) + "/tests/golden/sphere_small.sid.h5";  // no viewing mesh
   for (const std::string& cmd : {std::string(ISOSID_INFO_EXE) + " " + dir.path("junk.sid.h5"),
+                                 std::string(ISOSID_INFO_EXE) + " " + golden + " --paraview " + dir.path(""),
+                                 std::string(ISOSID_INFO_EXE) + " " + dir.path("viewable.sid.h5") + " --paraview " + dir.path("no/such/folder"),
                                  std::string(ISOSID_INFO_EXE) + " " + dir.path("missing.sid.h5"),
                                  std::string(ISOSID_INFO_EXE) + " --no-such-flag x",
                                  std::string(ISOSID_DIFF_EXE) + " " + dir.path("junk.sid.h5") + " " + dir.path("junk.sid.h5"),

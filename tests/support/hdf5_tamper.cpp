@@ -36,6 +36,18 @@ void replace_dataset(const std::string& file, const std::string& dataset, const 
   H5Fclose(f);
 }
 
+void replace_integers(const std::string& file, const std::string& dataset, const Eigen::VectorXi& value) {
+  remove_object(file, dataset);
+  const hid_t f = open_rw(file);
+  const hsize_t dims[1] = {hsize_t(value.size())};
+  const hid_t space = H5Screate_simple(1, dims, nullptr);
+  const hid_t ds = H5Dcreate2(f, dataset.c_str(), H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  H5Dwrite(ds, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.data());
+  H5Dclose(ds);
+  H5Sclose(space);
+  H5Fclose(f);
+}
+
 namespace {
 void replace_with_scalar(const std::string& file, const std::string& dataset, hid_t file_type, hid_t mem_type,
                          const void* value) {

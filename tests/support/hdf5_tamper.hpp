@@ -11,6 +11,8 @@ void replace_dataset(const std::string& file, const std::string& dataset, const 
 void replace_scalar(const std::string& file, const std::string& dataset, double value);
 /// Replaces a dataset by a scalar 64-bit integer.
 void replace_integer(const std::string& file, const std::string& dataset, long long value);
+/// Replaces a dataset by a vector of 32-bit integers.
+void replace_integers(const std::string& file, const std::string& dataset, const Eigen::VectorXi& value);
 /// Removes a dataset or group.
 void remove_object(const std::string& file, const std::string& object);
 /// Sets a numeric attribute (replacing one of that name).

@@ -185,6 +185,20 @@ format::Sid lumped_sid(const LumpedBody& body) {
     }
   s.transfer = t;
 
+  // the points as a viewing mesh: quadrilaterals of four consecutive points
+  format::VisualMesh v;
+  v.corners_per_cell = 4;
+  v.position = body.points;
+  v.cells.resize(4 * (body.points.rows() / 4));
+  for (Eigen::Index i = 0; i < v.cells.size(); ++i) v.cells(i) = int(i);
+  v.Phi = body.Phi;
+  v.stress_components = {"xx", "yy", "zz", "xy", "yz", "xz"};
+  v.S.resize(6 * body.points.rows(), nq);
+  for (Eigen::Index p = 0; p < body.points.rows(); ++p)
+    v.S.middleRows(6 * p, 6) << body.Phi.middleRows(3 * p, 3), -body.Phi.middleRows(3 * p, 3);
+  v.S *= 2e11 / 0.05;
+  s.visual = v;
+
   s.provenance = {"lumped.model.toml", "feedbeef", "test", "2026-11-22T00:00:00Z", {{"assembly", 0.5}, {"eigen", 1.25}}};
   return s;
 }

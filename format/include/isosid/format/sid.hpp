@@ -102,6 +102,20 @@ struct TransferOperator {
   Eigen::MatrixXd fine_to_coarse;        ///< nq_coarse x nq
 };
 
+/// A tessellation of the whole body for viewing (isosid-run's ParaView output): the corners
+/// of every element's parametric grid, cells between them, and the rows that displace and
+/// stress them, so a viewer draws the deformed body and its stress field from q alone.
+struct VisualMesh {
+  int corners_per_cell = 4;            ///< 4: quadrilaterals, 8: hexahedra (VTK corner order)
+  Eigen::MatrixXd position;            ///< npts x dim, reference positions in the body frame, m
+  Eigen::VectorXi cells;               ///< ncells * corners_per_cell point indices (0-based)
+  Eigen::MatrixXd Phi;                 ///< (npts*dim) x nq displacement rows, row p*dim + a
+  std::vector<std::string> stress_components;  ///< as StressRecovery's; empty: no stress rows
+  Eigen::MatrixXd S;                   ///< (npts*ncomp) x nq stress rows, Pa per unit q (empty: none)
+  Eigen::Index points() const { return position.rows(); }
+  Eigen::Index cell_count() const { return corners_per_cell > 0 ? cells.size() / corners_per_cell : 0; }
+};
+
 /// The isogeometric mesh the body was reduced from (informational; isosid-info reports it).
 struct Discretization {
   Eigen::VectorXi elements_per_level;    ///< one entry per hierarchical level (one for a tensor mesh)
@@ -143,6 +157,7 @@ struct Sid {
   std::vector<PatchInfo> patches;  ///< bodies of several patches only; `material` is then one of theirs
   std::optional<TransferOperator> transfer;
   std::optional<Discretization> discretization;
+  std::optional<VisualMesh> visual;
   Provenance provenance;
 
   Eigen::Index nq() const { return refmod.nq(); }

@@ -13,7 +13,7 @@
 namespace isosid::format::layout {
 
 /// The sizes shape rules are written in.
-enum class Size { One, Nq, Dim, Points, ControlPoints, Components, CoarseNq, ParamDim, Knots, Levels, Timings, Interfaces, Count };
+enum class Size { One, Nq, Dim, Points, ControlPoints, Components, CoarseNq, ParamDim, Knots, Levels, Timings, Interfaces, Cells, Corners, Count };
 
 /// factor * a * b, e.g. 3nq = {3, Nq}, npts·dim = {1, Points, Dim}.
 struct Extent {
@@ -242,6 +242,24 @@ inline constexpr Item free_dofs{"/discretization/free_dofs", {}, Kind::Int64, kS
 inline constexpr Item contact_radius{"/discretization/contact_radius_m", {}, Kind::Float64, kScalar, "m", Presence::Optional,
                                      "the expected contact radius the contact elements were sized for ([contact_resolution]); absent: sized by hand"};
 }  // namespace discretization
+
+namespace visual {
+inline constexpr Item group{"/visual", {}, Kind::Group, kScalar, "", Presence::Optional,
+                            "a tessellation of the whole body for viewing (ParaView output of isosid-run and isosid-info): "
+                            "the corners of every element's parametric grid; present when the model file has [visual]"};
+inline constexpr Item corners_per_cell{"/visual/corners_per_cell", {}, Kind::Int64, kScalar, "", Presence::Optional,
+                                       "4: quadrilaterals, 8: hexahedra (3D only), corners in VTK's order"};
+inline constexpr Item position{"/visual/position", {}, Kind::Float64, matrix({1, Size::Points}, {1, Size::Dim}), "m",
+                               Presence::Optional, "reference positions of the points in the body frame"};
+inline constexpr Item cells{"/visual/cells", {}, Kind::Int32, vector_of({1, Size::Cells, Size::Corners}), "",
+                            Presence::Optional, "the points of each cell (0-based), cell after cell"};
+inline constexpr Item Phi{"/visual/Phi", {}, Kind::Float64, matrix({1, Size::Points, Size::Dim}, kNq), "m/[q]",
+                          Presence::Optional, "displacement rows, row p·dim + a"};
+inline constexpr Item stress_components{"/visual/stress_components", {}, Kind::String, vector_of({1, Size::Components}), "",
+                                        Presence::Optional, "as /stress/<name>/components; absent: no stress rows"};
+inline constexpr Item S{"/visual/S", {}, Kind::Float64, matrix({1, Size::Points, Size::Components}, kNq), "Pa/[q]",
+                        Presence::Optional, "stress rows, row p·ncomp + c"};
+}  // namespace visual
 
 namespace provenance {
 inline constexpr Item group{"/provenance", {}, Kind::Group, kScalar, "", Presence::Required, "how the file was made"};
