@@ -441,6 +441,14 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
         if (r->has(key)) r->fail(key, "only used by method = \"craig-bampton\"");
     }
   }
+  if (auto v = top.optional_table("visual")) {
+    v->allow_only({"subdivisions", "stress"});
+    VisualSpec& visual = m.visual.emplace();
+    const long long n = v->integer("subdivisions", visual.subdivisions);
+    if (n < 1 || n > 8) v->fail("subdivisions", "must lie in 1..8 (cells per element and direction)");
+    visual.subdivisions = int(n);
+    visual.stress = v->boolean("stress", visual.stress);
+  }
   if (auto d = top.optional_table("damping")) {
     d->allow_only({"kappa", "f1", "f2"});
     m.damping.kappa = d->number("kappa", m.damping.kappa);
@@ -461,7 +469,7 @@ ModelSpec read_model_file(const std::string& path) {
   const toml::table root = common::parse_toml_file(path);
   const TomlView top(root, path);
   top.allow_only({"body", "material", "geometry", "patch", "contact_resolution", "refinement", "boundary", "quadrature",
-                  "reduction", "damping", "contact_surface", "node", "stress_line"});
+                  "reduction", "damping", "contact_surface", "node", "stress_line", "visual"});
   ModelSpec m;
   m.file = path;
 

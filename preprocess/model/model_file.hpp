@@ -73,6 +73,13 @@ struct StressLineSpec {
   int patch = 0;                         ///< the patch it runs in (index in ModelSpec::patches)
 };
 
+/// [visual]: a viewing mesh in the SID (ParaView output): each element cut into
+/// `subdivisions` cells per direction, with stress rows unless `stress = false`.
+struct VisualSpec {
+  int subdivisions = 1;
+  bool stress = true;
+};
+
 /// [contact_resolution]: contact elements sized from the expected contact radius a (Hertz),
 /// for refinements that say smallest = "contact". isosid-run passes its estimate for the
 /// scene (isosid-prep --contact-radius), so a changed body or speed gets elements of a/8.
@@ -107,6 +114,7 @@ struct ModelSpec {
   std::vector<ContactSurfaceSpec> contact_surfaces;
   std::vector<NodeSpec> nodes;
   std::vector<StressLineSpec> stress_lines;
+  std::optional<VisualSpec> visual;
 };
 
 /// The material of the highest wave speed sqrt(E / rho): it sets the body's eigenvalue scale.

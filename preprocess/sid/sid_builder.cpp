@@ -11,6 +11,7 @@
 #include "sid/node_data.hpp"
 #include "sid/sid_terms.hpp"
 #include "sid/stress_rows.hpp"
+#include "sid/visual_mesh.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -110,6 +111,8 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
     for (std::size_t k = 0; k < spec.stress_lines.size(); ++k)
       sid.stress_recovery[k].patch = spec.patches[std::size_t(spec.stress_lines[k].patch)].name;
   }
+
+  if (spec.visual) sid.visual = visual_mesh(body, *spec.visual, Phi);
 
   format::Discretization& mesh = sid.discretization.emplace();
   auto as_vector = [](const std::vector<int>& v) { return Eigen::VectorXi(Eigen::Map<const Eigen::VectorXi>(v.data(), Eigen::Index(v.size()))); };

@@ -400,6 +400,9 @@ TEST_CASE("reduction settings are validated", "[model][sid]") {
            {"[reduction]\nmethod = \"modal\"\nboundary_surface = \"contact\"\n", "reduction.boundary_surface: only used by the massless-boundary methods"},
            {"[damping]\nkappa = -1\n", "damping.kappa: is a damping ratio: must lie in [0, 1]"},
            {"[damping]\nf1 = 100.0\n", "damping.f2: give both f1 and f2"},
+           {"[visual]\nsubdivisions = 0\n", "visual.subdivisions: must lie in 1..8"},
+           {"[visual]\nstress = 1\n", "visual.stress:"},
+           {"[visual]\ncells = 4\n", "visual.cells: unknown key"},
            {"[[node]]\nname = \"n\"\nparameter = [2.0, 0.5]\n", "node[0].parameter: outside"},
            {"[[contact_surface]]\nname = \"contact\"\nside = \"left\"\n", "contact_surface[1].name: duplicate name"},
            // nodes and stress lines in metres (the block is 0.1 x 0.02 m)
