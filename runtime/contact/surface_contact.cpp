@@ -77,6 +77,27 @@ Eigen::Vector3d SurfaceContact::sliding_velocity(const Eigen::Vector3d& P, const
   return v - t.normal.dot(v) * t.normal;
 }
 
+Eigen::Vector3d SurfaceContact::point_force(Eigen::Index g, double p, const Eigen::Ref<const Eigen::MatrixXd>& Psi,
+                                            const Eigen::Vector3d& P, const double* y, const TargetPoint& t, Eigen::Vector3d& vt) const {
+  const double fn = p * surface_.weight(g);
+  vt.setZero();
+  if (spec_.friction == 0) return fn * t.normal;
+  vt = sliding_velocity(P, Psi, y, t);
+  return fn * t.normal + fn * friction_per_normal_force(vt);
+}
+
+std::vector<PointLoad> SurfaceContact::point_loads(const double* y) const {
+  std::vector<PointLoad> loads;
+  const Eigen::Vector3d r = body_.r(y);
+  for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
+    const double p = pressure(g, t.gap);
+    if (p <= 0) return;
+    Eigen::Vector3d vt;
+    loads.push_back({r + A * P, point_force(g, p, Psi, P, y, t, vt), p, t.gap});
+  });
+  return loads;
+}
+
 ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_force, GeneralizedForce* target_force) const {
   ContactState s;
   const FloatingBody* master = target_.body();
@@ -85,14 +106,9 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
     const double p = pressure(g, t.gap);
     if (p <= 0) return;
     const double w = surface_.weight(g);
-    const double fn = p * w;
-    Eigen::Vector3d F = fn * t.normal;
-    if (spec_.friction > 0) {
-      const Eigen::Vector3d vt = sliding_velocity(P, Psi, y, t);
-      const Eigen::Vector3d Ft = fn * friction_per_normal_force(vt);
-      F += Ft;
-      s.friction_power -= Ft.dot(vt);
-    }
+    Eigen::Vector3d vt;
+    const Eigen::Vector3d F = point_force(g, p, Psi, P, y, t, vt);
+    s.friction_power -= (F - p * w * t.normal).dot(vt);
     body_.apply_force(F, P, Psi, A, slave_force);
     if (master && target_force) master->apply_force(-F, t.body_point, t.Psi, A_master, *target_force);
     s.force += F;

@@ -27,6 +27,14 @@ struct ContactState {
   int edge_points = 0;          ///< active points in the surface's edge elements (surface_edge.hpp)
 };
 
+/// One loaded contact point (for viewing): where it is and what it carries, world frame.
+struct PointLoad {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< the deformed slave point, m
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();     ///< on the slave, N (normal and friction)
+  double pressure = 0;                                 ///< Pa
+  double gap = 0;                                      ///< m (negative: penetration)
+};
+
 class SurfaceContact {
 public:
   SurfaceContact(const ContactSpec& spec, const FloatingBody& body, const ContactTarget& target);
@@ -42,6 +50,8 @@ public:
   /// bodies to `terms`, with one rank-one Jacobian term per active point; returns the
   /// penalty energy (0 if neither body has quasistatic modes).
   double add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const;
+  /// The points that carry load at y, as apply() loads them.
+  std::vector<PointLoad> point_loads(const double* y) const;
   bool frictionless() const { return spec_.friction == 0; }
   /// Penalty factor, N/m^3: the scene's, or derived by default_penalty() where it gave none.
   double penalty() const { return spec_.penalty; }
@@ -75,6 +85,10 @@ private:
   /// broad-phase clearance (> 0: no point was visited).
   template <class F>
   double for_each_point(const double* y, F&& f) const;
+  /// The world force on slave point g at pressure p: normal, plus friction against the
+  /// sliding velocity `vt` it returns (zero without friction).
+  Eigen::Vector3d point_force(Eigen::Index g, double p, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Vector3d& P,
+                              const double* y, const TargetPoint& t, Eigen::Vector3d& vt) const;
   /// Regularized Coulomb friction force per unit normal force: -mu vt / sqrt(|vt|^2 + eps^2).
   Eigen::Vector3d friction_per_normal_force(const Eigen::Vector3d& vt) const;
   /// World velocity of a slave point relative to the target, along the target's surface; with

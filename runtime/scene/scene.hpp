@@ -110,9 +110,18 @@ struct StressMonitorSpec {
   std::string body, line;  ///< a flexible body and a stress recovery line of its SID
 };
 
+/// [output]: what the run writes besides results.h5 and summary.json.
+struct OutputSettings {
+  /// A ParaView collection (paraview/scene.pvd) of the deformed flexible bodies and the
+  /// loaded contact points, one frame per `paraview_interval`.
+  bool paraview = false;
+  double paraview_interval = 0;  ///< s; 0: the output interval, but at most 200 frames
+};
+
 struct Scene {
   std::string file;
   SimulationSettings simulation;
+  OutputSettings output;
   std::vector<BodySpec> bodies;        ///< flexible bodies first, then rigid ones
   std::vector<ShapeSpec> fixed_surfaces;
   std::vector<ContactSpec> contacts;

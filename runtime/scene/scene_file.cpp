@@ -187,10 +187,21 @@ Scene read_scene_file(const std::string& path) {
   const toml::table root = common::parse_toml_file(path);
   const TomlView top(root, path);
   top.allow_only({"simulation", "flexible_body", "rigid_body", "fixed_plane", "fixed_sphere", "fixed_cylinder", "contact",
-                  "joint", "monitor", "reference"});
+                  "joint", "monitor", "reference", "output"});
   Scene scene;
   scene.file = path;
   scene.simulation = read_simulation(top.table("simulation"));
+  if (auto o = top.optional_table("output")) {
+    o->allow_only({"paraview", "paraview_interval"});
+    scene.output.paraview = o->boolean("paraview", false);
+    if (o->has("paraview_interval") && !scene.output.paraview) o->fail("paraview_interval", "only used with paraview = true");
+    if (o->has("paraview_interval")) {
+      scene.output.paraview_interval = o->positive("paraview_interval");
+      if (scene.output.paraview_interval < scene.simulation.output_interval)
+        o->fail("paraview_interval", "is shorter than the output interval (frames are written at output samples)");
+      if (scene.output.paraview_interval > scene.simulation.end_time) o->fail("paraview_interval", "exceeds end_time");
+    }
+  }
   std::set<std::string> names;
   auto unique = [&](const TomlView& t) {
     const std::string name = t.string("name");

@@ -1,6 +1,7 @@
 // isosid-run: simulates a scene of reduced flexible bodies (SIDs) with Gauss-point penalty
 // contact and writes results.h5 and summary.json (the work is run::Simulation's).
 #include "isosid/common/cli_parse.hpp"
+#include "output/paraview_series.hpp"
 #include "output/recorder.hpp"
 #include "output/run_report.hpp"
 #include "scene/sid_provider.hpp"
@@ -12,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace {
 using namespace isosid;
@@ -21,11 +23,16 @@ volatile std::sig_atomic_t g_stop_signal = 0;
 
 void request_stop(int signal) { g_stop_signal = signal; }
 
-/// The recorder, with a progress line on stderr about once a second unless quiet.
+/// The recorder, with a progress line on stderr about once a second unless quiet, and the
+/// ParaView frames if the scene asks for them.
 class ReportingRecorder : public run::Recorder {
 public:
-  ReportingRecorder(const run::Simulation& simulation, bool quiet)
-      : Recorder(simulation.system(), simulation.scene()), quiet_(quiet) {}
+  ReportingRecorder(const run::Simulation& simulation, bool quiet, run::ParaviewSeries* paraview)
+      : Recorder(simulation.system(), simulation.scene()), quiet_(quiet), paraview_(paraview) {}
+  void sample(double t, const double* y) override {
+    Recorder::sample(t, y);  // solves the quasistatic coordinates for y first
+    if (paraview_) paraview_->sample(t, y);
+  }
   void progress(double t, double end_time, long steps) override {
     if (!quiet_) std::fprintf(stderr, "isosid-run: t = %.4g s (%.0f %%), %ld steps\n", t, 100 * t / end_time, steps);
   }
@@ -33,6 +40,7 @@ public:
 
 private:
   bool quiet_;
+  run::ParaviewSeries* paraview_;
 };
 
 /// out/<scene name> for scene files named <name>.scene.toml.
@@ -47,21 +55,25 @@ int main(int argc, char** argv) {
   return common::run_guarded("isosid-run", [&] {
     CLI::App app{"Simulates impacts of reduced flexible bodies (SIDs) described by a scene file.", "isosid-run"};
     std::string scene_file, out_dir;
-    bool as_json = false, quiet = false;
+    bool as_json = false, quiet = false, paraview_flag = false;
     app.add_option("scene", scene_file, "scene file (*.scene.toml)")->required();
     app.add_option("-o,--output", out_dir, "results folder (default: out/<scene name>)");
     app.add_flag("--json", as_json, "print summary.json to stdout");
     app.add_flag("-q,--quiet", quiet, "no progress on stderr");
+    app.add_flag("--paraview", paraview_flag, "write ParaView frames as with [output] paraview = true");
     if (auto status = common::parse_command_line(app, argc, argv)) return *status;
     for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, request_stop);  // stop at a sample, keep results
 
     run::Scene scene = run::read_scene_file(scene_file);
+    if (paraview_flag) scene.output.paraview = true;
     if (out_dir.empty()) out_dir = default_output(scene_file);
     std::vector<format::Sid> sids = run::load_sids(scene, quiet);
     run::fit_contact_resolution(scene, sids, quiet);
     run::Simulation simulation(std::move(scene), std::move(sids));
 
-    ReportingRecorder recorder(simulation, quiet);
+    std::optional<run::ParaviewSeries> paraview;
+    if (simulation.scene().output.paraview) paraview.emplace(simulation.system(), simulation.scene(), out_dir);
+    ReportingRecorder recorder(simulation, quiet, paraview ? &*paraview : nullptr);
     if (g_stop_signal) {
       std::cerr << "isosid-run: interrupted by " << strsignal(g_stop_signal) << " before the run started\n";
       return 128 + int(g_stop_signal);
@@ -69,6 +81,10 @@ int main(int argc, char** argv) {
     run::mark_run_started(out_dir, scene_file);  // only once the scene, its SIDs and monitors are accepted
     const run::RunOutcome outcome = simulation.run(recorder);
     const nlohmann::json summary = run::write_run_report(out_dir, recorder, simulation, outcome);
+    if (paraview) {
+      const std::string collection = paraview->write_collection();
+      if (!quiet) std::fprintf(stderr, "isosid-run: %d ParaView frames -> %s\n", paraview->frames(), collection.c_str());
+    }
 
     if (as_json) std::cout << summary.dump(2) << "\n";
     // after the run: a refusal or a failure stays the one line; summary.json always holds them

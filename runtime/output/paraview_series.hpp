@@ -1,0 +1,52 @@
+// ParaView output of a run ([output] paraview = true): at every frame time, each flexible
+// body's viewing mesh (the SID's /visual) moved to its deformed world position, with the
+// displacement, velocity and von Mises stress of every point, and each contact's loaded
+// points with their forces; paraview/scene.pvd lists the frames as one time series with one
+// part per body and contact. Rigid bodies and fixed surfaces are not drawn.
+#pragma once
+#include "scene/scene.hpp"
+#include "solve/multibody_system.hpp"
+
+#include "isosid/format/vtk_xml.hpp"
+
+#include <string>
+#include <vector>
+
+namespace isosid::run {
+
+class ParaviewSeries {
+public:
+  /// Refuses (InputError on the scene's [output].paraview) a flexible body whose SID has no
+  /// viewing mesh. Writes nothing yet.
+  ParaviewSeries(const MultibodySystem& system, const Scene& scene, std::string results_dir);
+
+  /// Writes a frame at the first sample at or after each frame time (the system's
+  /// quasistatic coordinates must be those of y, as after MultibodySystem::contact_states).
+  void sample(double t, const double* y);
+  /// Writes paraview/scene.pvd listing the frames written so far (also after a failed or
+  /// interrupted run) and returns its path.
+  std::string write_collection() const;
+  int frames() const { return frames_; }
+
+private:
+  struct BodyView {
+    const FloatingBody* body;
+    const format::VisualMesh* mesh;
+    format::vtk::UnstructuredGrid grid;  ///< cells and point arrays, rewritten each frame
+    std::string file_stem;
+    double poisson_ratio;                ///< for the out-of-plane stress of plane strain
+  };
+  void write_body(BodyView& view, const double* y, const std::string& file) const;
+  void write_contact(const SurfaceContact& contact, const double* y, const std::string& file) const;
+
+  const MultibodySystem& system_;
+  std::string dir_;       ///< results_dir/paraview
+  double interval_;
+  double next_time_ = 0;  ///< the next frame's time
+  int frames_ = 0;
+  std::vector<BodyView> bodies_;
+  std::vector<std::string> contact_stems_;
+  std::vector<format::vtk::CollectionEntry> entries_;
+};
+
+}  // namespace isosid::run
