@@ -2,6 +2,9 @@
 #include "assemble/element_loop.hpp"
 
 #include "space/reference_rule.hpp"
+#include "isosid/common/progress_line.hpp"
+
+#include <atomic>
 
 #include <omp.h>
 
@@ -46,6 +49,7 @@ std::vector<SparseMatrix> assemble_matrices(const AnalysisSpace& space, const Bo
   // per thread, per term: the summed values of the term's pattern
   const int threads = omp_get_max_threads();
   std::vector<std::vector<PatternAccumulator>> sums(static_cast<std::size_t>(threads));
+  std::atomic<int> done{0};  // elements assembled, for progress
 #pragma omp parallel
   {
     std::vector<PatternAccumulator>& mine = sums[std::size_t(omp_get_thread_num())];
@@ -55,6 +59,7 @@ std::vector<SparseMatrix> assemble_matrices(const AnalysisSpace& space, const Bo
     Eigen::MatrixXd local, spread;
 #pragma omp for schedule(dynamic, 8)
     for (int e = 0; e < n_elements; ++e) {
+      if (const int d = done.fetch_add(1, std::memory_order_relaxed); d % 256 == 0) common::set_work_fraction(double(d) / n_elements);
       const Element& el = space.elements[e];
       evaluator.evaluate(el, rule.basis, points.values);
       points.patch = el.patch;

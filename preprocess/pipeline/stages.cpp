@@ -10,12 +10,51 @@ StageObserver& no_progress() {
   return silent;
 }
 
+StderrProgress::StderrProgress(std::string program) : line_(std::move(program)) {}
+
+StderrProgress::~StderrProgress() { stop_ticker(); }
+
 void StderrProgress::started(const std::string& /*stage*/, const std::string& what) {
-  std::fprintf(stderr, "%s: %s ...\n", program_.c_str(), what.c_str());
+  stop_ticker();
+  if (!line_.terminal()) {
+    line_.show(what + " ...");
+    return;
+  }
+  running_ = true;
+  ticker_ = std::thread([this, what] {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::unique_lock<std::mutex> lock(mutex_);
+    do {
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double fraction = common::work_fraction();
+      char text[96];
+      if (fraction >= 0) {
+        const std::string left = common::ProgressLine::time_left(fraction, elapsed);
+        std::snprintf(text, sizeof text, " %.0f %%, %.1f s%s%s", 100 * fraction, elapsed, left.empty() ? "" : ", ", left.c_str());
+      } else {
+        std::snprintf(text, sizeof text, " %.1f s", elapsed);
+      }
+      line_.show(what + " ..." + text);
+    } while (!wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return !running_; }));
+  });
 }
 
 void StderrProgress::finished(const std::string& stage, double seconds) {
-  std::fprintf(stderr, "%s: %s done in %.3f s\n", program_.c_str(), stage.c_str(), seconds);
+  stop_ticker();
+  char text[64];
+  std::snprintf(text, sizeof text, " done in %.3f s", seconds);
+  line_.show(stage + text);
+  line_.finish();
+}
+
+void StderrProgress::stop_ticker() {
+  if (!ticker_.joinable()) return;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    running_ = false;
+  }
+  wake_.notify_all();
+  ticker_.join();
 }
 
 }  // namespace isosid::prep

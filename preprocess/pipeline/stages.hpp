@@ -1,8 +1,13 @@
 // The preprocessing pipeline's named stages: an observer told when each starts and ends
 // (progress), and the clock that runs them and keeps their times (SID provenance, reports).
 #pragma once
+#include "isosid/common/progress_line.hpp"
+
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -22,15 +27,24 @@ public:
 /// An observer that says nothing.
 StageObserver& no_progress();
 
-/// Progress lines on stderr: "PROGRAM: what ..." and "PROGRAM: stage done in 1.234 s".
+/// Progress on stderr: "PROGRAM: what ..." and "PROGRAM: stage done in 1.234 s". On a
+/// terminal the first is one line updated a few times a second with the stage's elapsed time,
+/// and its percentage and time left where the stage reports them (common::work_fraction).
 class StderrProgress : public StageObserver {
 public:
-  explicit StderrProgress(std::string program) : program_(std::move(program)) {}
+  explicit StderrProgress(std::string program);
+  ~StderrProgress() override;
   void started(const std::string& stage, const std::string& what) override;
   void finished(const std::string& stage, double seconds) override;
 
 private:
-  std::string program_;
+  void stop_ticker();
+
+  common::ProgressLine line_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool running_ = false;
+  std::thread ticker_;
 };
 
 /// Runs stages, tells the observer and records their times in order.
@@ -40,6 +54,7 @@ public:
 
   template <class F>
   auto run(const std::string& stage, const std::string& what, F&& f) {
+    common::set_work_fraction(-1);  // unknown until the stage reports it
     observer_.started(stage, what);
     const auto t0 = std::chrono::steady_clock::now();
     auto finish = [&] {

@@ -1,6 +1,7 @@
 // isosid-run: simulates a scene of reduced flexible bodies (SIDs) with Gauss-point penalty
 // contact and writes results.h5 and summary.json (the work is run::Simulation's).
 #include "isosid/common/cli_parse.hpp"
+#include "isosid/common/progress_line.hpp"
 #include "output/paraview_series.hpp"
 #include "output/recorder.hpp"
 #include "output/run_report.hpp"
@@ -8,6 +9,7 @@
 #include "solve/contact_resolution.hpp"
 #include "solve/simulation.hpp"
 
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -23,24 +25,34 @@ volatile std::sig_atomic_t g_stop_signal = 0;
 
 void request_stop(int signal) { g_stop_signal = signal; }
 
-/// The recorder, with a progress line on stderr about once a second unless quiet, and the
-/// ParaView frames if the scene asks for them.
+/// The recorder, with its progress on stderr about once a second unless quiet (one updating
+/// line on a terminal), and the ParaView frames if the scene asks for them.
 class ReportingRecorder : public run::Recorder {
 public:
   ReportingRecorder(const run::Simulation& simulation, bool quiet, run::ParaviewSeries* paraview)
       : Recorder(simulation.system(), simulation.scene()), quiet_(quiet), paraview_(paraview) {}
+  /// Ends the progress line before the run's report.
+  void end_progress() { line_.finish(); }
   void sample(double t, const double* y) override {
     Recorder::sample(t, y);  // solves the quasistatic coordinates for y first
     if (paraview_) paraview_->sample(t, y);
   }
   void progress(double t, double end_time, long steps) override {
-    if (!quiet_) std::fprintf(stderr, "isosid-run: t = %.4g s (%.0f %%), %ld steps\n", t, 100 * t / end_time, steps);
+    if (quiet_) return;
+    const double fraction = t / end_time;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    char text[160];
+    std::snprintf(text, sizeof text, "%3.0f %%, t = %.4g s, %ld steps", 100 * fraction, t, steps);
+    const std::string left = common::ProgressLine::time_left(fraction, elapsed);
+    line_.show(left.empty() ? text : std::string(text) + ", " + left);
   }
   bool stop_requested() const override { return g_stop_signal != 0; }
 
 private:
   bool quiet_;
   run::ParaviewSeries* paraview_;
+  common::ProgressLine line_{"isosid-run"};
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 };
 
 /// out/<scene name> for scene files named <name>.scene.toml.
@@ -80,6 +92,7 @@ int main(int argc, char** argv) {
     }
     run::mark_run_started(out_dir, scene_file);  // only once the scene, its SIDs and monitors are accepted
     const run::RunOutcome outcome = simulation.run(recorder);
+    recorder.end_progress();
     const nlohmann::json summary = run::write_run_report(out_dir, recorder, simulation, outcome);
     if (paraview) {
       const std::string collection = paraview->write_collection();
