@@ -124,6 +124,8 @@ Writer::Writer(const std::string& path) : path_(path) {
   // nodes keep that from doubling a small SID (the default, 32, costs 1.6 KB per dataset)
   Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
   H5Pset_istore_k(fcpl.get(), 2);
+  // the root group keeps its links in creation order too (MBSim iterates it by creation order)
+  H5Pset_link_creation_order(fcpl.get(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED);
   hid_t f = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
   if (f < 0) throw InputError(path, "", "cannot create HDF5 file");
   file_ = Handle(f, H5Fclose);

@@ -46,7 +46,10 @@ TEST_CASE("the tools exit 2 with one line on bad input", "[format][tools]") {
                                  std::string(ISOSID_INFO_EXE) + " " + dir.path("missing.sid.h5"),
                                  std::string(ISOSID_INFO_EXE) + " --no-such-flag x",
                                  std::string(ISOSID_DIFF_EXE) + " " + dir.path("junk.sid.h5") + " " + dir.path("junk.sid.h5"),
-                                 std::string(ISOSID_DIFF_EXE) + " a --rtol -1"}) {
+                                 std::string(ISOSID_DIFF_EXE) + " a --rtol -1",
+                                 std::string(ISOSID_EXPORT_EXE) + " " + dir.path("viewable.sid.h5") + " --format adams-mnf",
+                                 std::string(ISOSID_EXPORT_EXE) + " " + dir.path("viewable.sid.h5") + " --format sid-fem -o " + dir.path("no/such/x"),
+                                 std::string(ISOSID_EXPORT_EXE) + " " + dir.path("junk.sid.h5") + " --format mbsim-h5"}) {
     INFO(cmd);
     const auto r = test::run_program(cmd);
     CHECK(r.exit_status == 2);
