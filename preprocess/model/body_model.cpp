@@ -129,7 +129,8 @@ ModelSpec coarse_model_spec(const ModelSpec& spec) {
 }
 
 BodyModel build_body(const ModelSpec& spec) {
-  std::vector<PatchInterface> interfaces = find_interfaces(spec.patches, spec.file);
+  // a mesher's elements conform by construction and are too many for the pairwise search
+  std::vector<PatchInterface> interfaces = spec.mesh ? find_mesh_interfaces(spec.patches) : find_interfaces(spec.patches, spec.file);
   std::vector<NurbsPatch> refined;
   for (const PatchSpec& p : spec.patches) refined.push_back(refine_patch(p.patch, p.refinement, spec.file));
   make_conforming(refined, interfaces);

@@ -2,7 +2,8 @@
 #include "model/model_file.hpp"
 
 #include "geometry/mapping_check.hpp"
-
+#include "model/mesh_model.hpp"
+#include "model/model_tables.hpp"
 #include "geometry/primitives.hpp"
 #include "isosid/common/toml_fields.hpp"
 
@@ -41,17 +42,6 @@ NurbsPatch read_explicit_patch(const TomlView& g) {
   if (p.knots.size() != p.degrees.size()) g.fail("knots", "one knot vector per degree required");
   validate_patch(p, g.file(), g.field("patch"));
   return p;
-}
-
-format::Material read_material(const TomlView& mat) {
-  mat.allow_only({"youngs_modulus", "poisson_ratio", "density"});
-  format::Material m;
-  m.youngs_modulus = mat.positive("youngs_modulus");
-  m.poisson_ratio = mat.number("poisson_ratio");
-  if (m.poisson_ratio <= -1 || m.poisson_ratio >= 0.5)
-    mat.fail("poisson_ratio", "must lie in (-1, 0.5), is " + std::to_string(m.poisson_ratio));
-  m.density = mat.positive("density");
-  return m;
 }
 
 NurbsPatch read_geometry(const TomlView& g, format::AnalysisType analysis) {
@@ -441,6 +431,24 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
         if (r->has(key)) r->fail(key, "only used by method = \"craig-bampton\"");
     }
   }
+  read_visual(top, m);
+  read_damping(top, m);
+}
+
+}  // namespace
+
+format::Material read_material(const TomlView& mat) {
+  mat.allow_only({"youngs_modulus", "poisson_ratio", "density"});
+  format::Material m;
+  m.youngs_modulus = mat.positive("youngs_modulus");
+  m.poisson_ratio = mat.number("poisson_ratio");
+  if (m.poisson_ratio <= -1 || m.poisson_ratio >= 0.5)
+    mat.fail("poisson_ratio", "must lie in (-1, 0.5), is " + std::to_string(m.poisson_ratio));
+  m.density = mat.positive("density");
+  return m;
+}
+
+void read_visual(const TomlView& top, ModelSpec& m) {
   if (auto v = top.optional_table("visual")) {
     v->allow_only({"subdivisions", "stress"});
     VisualSpec& visual = m.visual.emplace();
@@ -449,6 +457,9 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     visual.subdivisions = int(n);
     visual.stress = v->boolean("stress", visual.stress);
   }
+}
+
+void read_damping(const TomlView& top, ModelSpec& m) {
   if (auto d = top.optional_table("damping")) {
     d->allow_only({"kappa", "f1", "f2"});
     m.damping.kappa = d->number("kappa", m.damping.kappa);
@@ -463,13 +474,11 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
   }
 }
 
-}  // namespace
-
 ModelSpec read_model_file(const std::string& path) {
   const toml::table root = common::parse_toml_file(path);
   const TomlView top(root, path);
   top.allow_only({"body", "material", "geometry", "patch", "contact_resolution", "refinement", "boundary", "quadrature",
-                  "reduction", "damping", "contact_surface", "node", "stress_line", "visual"});
+                  "reduction", "damping", "contact_surface", "node", "stress_line", "visual", "mesh"});
   ModelSpec m;
   m.file = path;
 
@@ -488,6 +497,11 @@ ModelSpec read_model_file(const std::string& path) {
   // [material] is the body's, or the default of patches without their own
   const std::optional<format::Material> body_material =
       top.has("material") ? std::optional<format::Material>(read_material(top.table("material"))) : std::nullopt;
+  if (top.has("mesh")) {  // an isoparametric body meshed by gmsh: model/mesh_model.cpp
+    if (!body_material) top.table("material");
+    read_mesh_model(top, m, *body_material);
+    return m;
+  }
   const std::vector<TomlView> patch_tables = top.tables("patch");
   if (patch_tables.empty()) {
     if (!body_material) top.table("material");  // the one-line "missing" message

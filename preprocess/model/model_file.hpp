@@ -42,6 +42,7 @@ struct ReductionSpec {
   std::string boundary_surface;          ///< massless-boundary methods: the contact surface whose control points are the boundary
   int interface_points = 0;              ///< that many side nodes nearest to the point at interface_center
   Eigen::VectorXd interface_center;      ///< tangential parameter(s) on that side
+  std::optional<Eigen::VectorXd> interface_point;  ///< or the centre in metres (meshed bodies)
 };
 
 struct DampingSpec {
@@ -92,6 +93,19 @@ struct ContactResolutionSpec {
   double element_size() const { return contact_radius / elements_per_radius; }
 };
 
+/// [mesh]: an isoparametric comparison body meshed by gmsh (OpenCASCADE geometry of a
+/// primitive, quadratic quadrilaterals graded toward the contact point). Its elements become
+/// the body's patches, each its 9-node Lagrange element written in Bezier form (the same
+/// space), so the one element loop assembles it and the one pipeline reduces it.
+struct MeshSpec {
+  std::string primitive;              ///< half_disk | rod_with_spherical_end (2D sections)
+  double radius = 0, length = 0;      ///< m
+  double element_size = 0;            ///< m, far from the contact point
+  double contact_element_size = 0;    ///< m, at the contact point
+  double growth = 1.3;                ///< size ratio of neighbouring elements away from it
+  Eigen::Vector2d contact_point = Eigen::Vector2d::Zero();  ///< m: the primitive's pole
+};
+
 /// One patch of a body: its exact geometry, material and refinement.
 struct PatchSpec {
   std::string name;                 ///< empty for a body of one patch ([geometry] form)
@@ -115,6 +129,7 @@ struct ModelSpec {
   std::vector<NodeSpec> nodes;
   std::vector<StressLineSpec> stress_lines;
   std::optional<VisualSpec> visual;
+  std::optional<MeshSpec> mesh;     ///< a meshed (isoparametric) body: patches are its elements
 };
 
 /// The material of the highest wave speed sqrt(E / rho): it sets the body's eigenvalue scale.

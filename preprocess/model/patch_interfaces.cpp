@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace isosid::prep {
 namespace {
@@ -186,6 +187,40 @@ std::vector<PatchInterface> find_interfaces(const std::vector<PatchSpec>& patche
           }
         }
     }
+  return out;
+}
+
+std::vector<PatchInterface> find_mesh_interfaces(const std::vector<PatchSpec>& patches) {
+  std::vector<PatchInterface> out;
+  if (patches.empty()) return out;
+  double size = 0;
+  for (const PatchSpec& p : patches) size = std::max(size, patch_size(p.patch));
+  const double tol = 1e-10 * size;
+  // a side's key: its first and last control points, rounded to a grid coarser than tol and
+  // sorted (neighbours run their common side either way)
+  auto rounded = [&](const Eigen::VectorXd& x) {
+    std::vector<long long> k;
+    for (Eigen::Index i = 0; i < x.size(); ++i) k.push_back(std::llround(x(i) / (1e3 * tol)));
+    return k;
+  };
+  std::map<std::pair<std::vector<long long>, std::vector<long long>>, std::vector<std::pair<int, Face>>> sides;
+  for (int a = 0; a < int(patches.size()); ++a)
+    for (const Face& f : faces_of(patches[std::size_t(a)].patch)) {
+      const Eigen::MatrixXd& P = patches[std::size_t(a)].patch.points;
+      auto first = rounded(P.row(f.index.front()).transpose()), last = rounded(P.row(f.index.back()).transpose());
+      if (last < first) std::swap(first, last);
+      sides[{first, last}].push_back({a, f});
+    }
+  for (const auto& [key, list] : sides)
+    for (std::size_t i = 0; i < list.size(); ++i)
+      for (std::size_t j = i + 1; j < list.size(); ++j) {
+        auto [a, fa] = list[i];
+        auto [b, fb] = list[j];
+        if (a > b) std::swap(a, b), std::swap(fa, fb);
+        PatchInterface interface{a, b, fa.side, fb.side, {}, {}};
+        if (a != b && faces_match(patches[std::size_t(a)].patch, fa, patches[std::size_t(b)].patch, fb, tol, interface))
+          out.push_back(interface);
+      }
   return out;
 }
 

@@ -24,6 +24,12 @@ struct PatchInterface {
 /// patches and sides of a non-matching interface, or the patches that overlap.
 std::vector<PatchInterface> find_interfaces(const std::vector<PatchSpec>& patches, const std::string& file);
 
+/// The conforming interfaces of the patches of a generated mesh (one patch per element, the
+/// mesher's elements conforming by construction): sides are paired through a hash of their
+/// end points, then matched as find_interfaces does, in time linear in the elements. No
+/// overlap check: the mesher guarantees none.
+std::vector<PatchInterface> find_mesh_interfaces(const std::vector<PatchSpec>& patches);
+
 /// Makes the refined patches conform again on every interface: a knot in a tangential
 /// direction of one side goes into the matching direction of the other, and the lower degree
 /// is raised to the higher; repeated until nothing changes (chains of patches). Finally every

@@ -19,12 +19,21 @@ std::vector<int> interface_dofs(const BodyModel& body, std::string& description)
   const PatchSide side = *patch.side(surface->side);
   // the centre as a physical point of the side; nodes are ranked by their physical distance
   // to it (parameter distances mislead where the parametrization collapses, e.g. at a pole)
-  Eigen::VectorXd xi(body.space.param_dim());
-  for (int d = 0, k = 0; d < body.space.param_dim(); ++d)
-    xi(d) = d == side.direction ? (side.end ? patch.upper(d) : patch.lower(d)) : r.interface_center(k++);
-  const Eigen::VectorXd centre = patch.point(xi);
+  Eigen::VectorXd centre;
+  if (r.interface_point) {
+    centre = *r.interface_point;
+  } else {
+    Eigen::VectorXd xi(body.space.param_dim());
+    for (int d = 0, k = 0; d < body.space.param_dim(); ++d)
+      xi(d) = d == side.direction ? (side.end ? patch.upper(d) : patch.lower(d)) : r.interface_center(k++);
+    centre = patch.point(xi);
+  }
   std::map<int, double> distance;
-  for (int node : side_nodes(body, surface->patch, side)) distance[node] = (body.dofs.node_points().row(node).transpose() - centre).norm();
+  std::vector<std::pair<int, std::string>> parts{{surface->patch, surface->side}};
+  parts.insert(parts.end(), surface->continued.begin(), surface->continued.end());
+  for (const auto& [part, name] : parts)
+    for (int node : side_nodes(body, part, *body.refined[std::size_t(part)].side(name)))
+      distance[node] = (body.dofs.node_points().row(node).transpose() - centre).norm();
   std::vector<std::pair<double, int>> ranked;
   for (auto [node, d] : distance) ranked.emplace_back(d, node);
   std::sort(ranked.begin(), ranked.end());

@@ -97,7 +97,7 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   }
   for (const NodeSpec& n : spec.nodes) sid.nodes.push_back(node_at(body, n, Phi));
   for (const StressLineSpec& l : spec.stress_lines) sid.stress_recovery.push_back(stress_rows(body, l, Phi));
-  if (spec.patches.size() > 1) {  // the patches, their materials and interfaces; what lies on which
+  if (spec.patches.size() > 1 && !spec.mesh) {  // the patches, their materials and interfaces; what lies on which (a meshed body: one material, elements)
     for (const PatchSpec& p : spec.patches) sid.patches.push_back({p.name, p.material, {}});
     for (const PatchInterface& i : body.interfaces) {
       sid.patches[std::size_t(i.a)].interfaces.push_back(side_name(i.side_a) + " " + spec.patches[std::size_t(i.b)].name + "." + side_name(i.side_b));

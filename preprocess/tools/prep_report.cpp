@@ -33,7 +33,13 @@ nlohmann::json body_json(const BodyModel& body, double mass, std::string& levels
   j["nodes"] = body.dofs.node_count();
   j["dofs"] = body.dofs.free_count();
   j["mass_kg"] = mass;
-  if (body.spec.patches.size() > 1) {  // the patches, their materials and where they meet
+  if (const auto& m = body.spec.mesh) {  // a meshed body: gmsh's elements, not patches to list
+    j["mesh"] = {{"generator", "gmsh"}, {"primitive", m->primitive}, {"element_size_m", m->element_size},
+                 {"contact_element_size_m", m->contact_element_size}, {"growth", m->growth}, {"elements", body.space.elements.size()}};
+    levels_text += "  gmsh mesh of " + m->primitive + ": " + std::to_string(body.space.elements.size()) +
+                   " quadratic quadrilaterals, " + number_text(m->contact_element_size) + " m at the contact point to " +
+                   number_text(m->element_size) + " m\n";
+  } else if (body.spec.patches.size() > 1) {  // the patches, their materials and where they meet
     for (std::size_t k = 0; k < body.spec.patches.size(); ++k) {
       const PatchSpec& p = body.spec.patches[k];
       j["patches"].push_back({{"name", p.name}, {"youngs_modulus_pa", p.material.youngs_modulus},

@@ -1,0 +1,154 @@
+// Meshed-body model files; see mesh_model.hpp.
+#include "model/mesh_model.hpp"
+
+#include "mesh/gmsh_mesh.hpp"
+#include "mesh/mesh_patches.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace isosid::prep {
+namespace {
+
+MeshSpec read_mesh(const TomlView& t, format::AnalysisType analysis) {
+  t.allow_only({"generator", "primitive", "radius", "length", "element_size", "contact_element_size", "growth", "contact_point"});
+  if (t.string("generator", "gmsh") != "gmsh") t.fail("generator", "only \"gmsh\" meshes bodies");
+  if (analysis != format::AnalysisType::Axisymmetric && analysis != format::AnalysisType::PlaneStrain &&
+      analysis != format::AnalysisType::PlaneStress)
+    t.fail("primitive", "meshed bodies are 2D sections (axisymmetric, plane_strain, plane_stress)");
+  MeshSpec s;
+  s.primitive = t.string("primitive");
+  s.radius = t.positive("radius");
+  if (s.primitive == "rod_with_spherical_end") {
+    s.length = t.positive("length");
+    if (s.length <= s.radius) t.fail("length", "must exceed the radius (the spherical end)");
+  } else if (s.primitive != "half_disk") {
+    t.fail("primitive", "unknown primitive '" + s.primitive + "' (half_disk, rod_with_spherical_end)");
+  }
+  s.element_size = t.positive("element_size");
+  s.contact_element_size = t.positive("contact_element_size", s.element_size);
+  if (s.contact_element_size > s.element_size) t.fail("contact_element_size", "exceeds element_size");
+  const double size = s.primitive == "half_disk" ? 2 * s.radius : s.length;
+  if (s.element_size > size) t.fail("element_size", "exceeds the body");
+  // gmsh meshes at twice these sizes (then splits): 1e-5 of the body keeps it in the millions
+  if (s.contact_element_size < 1e-5 * size) t.fail("contact_element_size", "below 1e-5 of the body's size");
+  s.growth = t.positive("growth", s.growth);
+  if (s.growth <= 1.05 || s.growth > 3) t.fail("growth", "must lie in (1.05, 3]");
+  s.contact_point = s.primitive == "half_disk" ? Eigen::Vector2d(0, -s.radius) : Eigen::Vector2d(0, 0);  // the pole
+  if (t.has("contact_point")) {
+    const std::vector<double> p = t.numbers("contact_point");
+    if (p.size() != 2) t.fail("contact_point", "needs 2 coordinates (m)");
+    s.contact_point << p[0], p[1];
+  }
+  return s;
+}
+
+/// The index of the mesh node nearest to x and an element that has it.
+std::pair<int, int> nearest_node(const QuadMesh& mesh, const Eigen::Vector2d& x) {
+  Eigen::Index node = 0;
+  (mesh.nodes.rowwise() - x.transpose()).rowwise().squaredNorm().minCoeff(&node);
+  for (int e = 0; e < int(mesh.quads.size()); ++e)
+    if (std::find(mesh.quads[std::size_t(e)].begin(), mesh.quads[std::size_t(e)].end(), int(node)) != mesh.quads[std::size_t(e)].end())
+      return {int(node), e};
+  return {int(node), 0};
+}
+
+}  // namespace
+
+void read_mesh_model(const TomlView& top, ModelSpec& m, const format::Material& material) {
+  for (const char* key : {"geometry", "patch", "refinement", "boundary", "stress_line", "contact_resolution"})
+    if (top.has(key)) top.fail(key, "not used by a meshed body ([mesh]): its geometry, size and contact resolution are in [mesh]");
+  MeshSpec& spec = m.mesh.emplace(read_mesh(top.table("mesh"), m.analysis));
+  const QuadMesh mesh = gmsh_quad_mesh(spec, m.file);
+
+  // contact surfaces: boundary chains along a primitive side near the contact point; their
+  // elements are turned so that the chain runs along their eta0 sides
+  std::map<int, int> turn;  // element -> quarter turns
+  struct Surface {
+    ContactSurfaceSpec spec;
+    std::vector<ElementEdge> chain;
+  };
+  std::vector<Surface> surfaces;
+  for (const TomlView& c : top.tables("contact_surface")) {
+    c.allow_only({"name", "side", "within"});
+    Surface s;
+    s.spec.name = c.string("name");
+    if (s.spec.name.empty() || s.spec.name.find('/') != std::string::npos) c.fail("name", "must be a non-empty name without '/'");
+    const std::string side = c.string("side");
+    const auto edges = mesh.sides.find(side);
+    if (edges == mesh.sides.end()) c.fail("side", "the primitive has no side '" + side + "'");
+    const double within = c.positive("within");
+    std::vector<std::array<int, 3>> near;
+    for (const auto& line : edges->second)
+      if ((mesh.nodes.row(line[0]).transpose() - spec.contact_point).norm() <= within &&
+          (mesh.nodes.row(line[1]).transpose() - spec.contact_point).norm() <= within)
+        near.push_back(line);
+    if (near.empty()) c.fail("within", "no edge of side '" + side + "' lies that close to the contact point");
+    s.chain = boundary_chain(mesh, near, m.file, c.field("within"));
+    for (const ElementEdge& ee : s.chain) {
+      const auto [it, added] = turn.emplace(ee.element, ee.edge);
+      if (!added && it->second != ee.edge) c.fail("side", "an element has two edges on contact surfaces (refine the mesh)");
+    }
+    surfaces.push_back(std::move(s));
+  }
+  for (int e = 0; e < int(mesh.quads.size()); ++e) {
+    PatchSpec& p = m.patches.emplace_back();
+    p.name = "element" + std::to_string(e);
+    p.material = material;
+    const auto t = turn.find(e);
+    p.patch = bezier_patch(mesh, e, t == turn.end() ? 0 : t->second);
+  }
+  for (Surface& s : surfaces) {
+    s.spec.side = "eta0";
+    s.spec.patch = s.chain.front().element;
+    for (std::size_t k = 1; k < s.chain.size(); ++k) s.spec.continued.push_back({s.chain[k].element, "eta0"});
+    m.contact_surfaces.push_back(s.spec);
+  }
+
+  for (const TomlView& t : top.tables("node")) {
+    t.allow_only({"name", "point"});
+    NodeSpec n;
+    n.name = t.string("name");
+    const std::vector<double> p = t.numbers("point");
+    if (p.size() != 2) t.fail("point", "needs 2 coordinates (m)");
+    const Eigen::Vector2d x(p[0], p[1]);
+    n.patch = nearest_node(mesh, x).second;
+    n.at = {x, true};
+    m.nodes.push_back(n);
+  }
+
+  if (auto r = top.optional_table("reduction")) {
+    r->allow_only({"method", "normal_modes", "interface_surface", "interface_points", "interface_point"});
+    ReductionSpec& red = m.reduction;
+    red.method = r->string("method");
+    if (red.method != "modal" && red.method != "craig-bampton")
+      r->fail("method", "a meshed body is reduced by modal or craig-bampton reduction");
+    const long long n = r->integer("normal_modes", 10);
+    if (n < 1 || n > 100000) r->fail("normal_modes", "must be a positive count");
+    red.normal_modes = int(n);
+    if (red.method == "craig-bampton") {
+      red.interface_surface = r->string("interface_surface");
+      if (std::none_of(m.contact_surfaces.begin(), m.contact_surfaces.end(), [&](const ContactSurfaceSpec& c) { return c.name == red.interface_surface; }))
+        r->fail("interface_surface", "no contact_surface named '" + red.interface_surface + "'");
+      const long long k = r->integer("interface_points");
+      if (k < 1) r->fail("interface_points", "must be at least 1");
+      red.interface_points = int(k);
+      red.interface_point = spec.contact_point;
+      if (r->has("interface_point")) {
+        const std::vector<double> p = r->numbers("interface_point");
+        if (p.size() != 2) r->fail("interface_point", "needs 2 coordinates (m)");
+        red.interface_point = Eigen::Vector2d(p[0], p[1]);
+      }
+    }
+  }
+  if (auto q = top.optional_table("quadrature")) {
+    q->allow_only({"extra_points"});
+    const long long extra = q->integer("extra_points", 0);
+    if (extra < 0 || extra > 10) q->fail("extra_points", "must lie in 0..10");
+    m.extra_quadrature_points = int(extra);
+  }
+  read_visual(top, m);
+  read_damping(top, m);
+}
+
+}  // namespace isosid::prep
