@@ -130,7 +130,9 @@ QuadMesh gmsh_quad_mesh(const MeshSpec& spec, const std::string& file) {
     return mesh;
   } catch (const format::InputError&) {
     throw;
-  } catch (const std::exception& e) {  // gmsh reports failures as exceptions with its last error
+  } catch (const std::string& error) {  // gmsh 4.8 throws its last error as a string
+    throw format::InputError(file, "mesh", "gmsh could not mesh the section: " + error);
+  } catch (const std::exception& e) {
     throw format::InputError(file, "mesh", std::string("gmsh could not mesh the section: ") + e.what());
   }
 }

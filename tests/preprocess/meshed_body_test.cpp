@@ -1,0 +1,95 @@
+// Meshed (isoparametric) bodies from gmsh against what they must be: the mesh's nodes become
+// the body's nodes (elements joined, one rigid-body mode), the volume is the sphere's up to
+// the quadratic edges' chord error, an affine field stores exactly the strain energy of its
+// constant stress, and the lowest frequencies agree with the IGA sphere's (both converged
+// there). Bad [mesh] input ends with exit 2 and one line.
+#include "mesh/gmsh_mesh.hpp"
+#include "model/model_file.hpp"
+#include "pipeline/prepare.hpp"
+#include "preprocess/body_fixtures.hpp"
+#include "support/run_program.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <set>
+
+using namespace isosid;
+using Catch::Matchers::Contains;
+
+namespace {
+const std::string kModels = ISOSID_MODELS_DIR;
+}
+
+TEST_CASE("meshed sphere: gmsh's nodes are the body's nodes, one rigid mode, the sphere's mass and frequencies", "[mesh]") {
+  const prep::ModelSpec spec = prep::read_model_file(kModels + "/sphere_axisym_gmsh.model.toml");
+  REQUIRE(spec.mesh);
+  const prep::QuadMesh mesh = prep::gmsh_quad_mesh(*spec.mesh, spec.file);
+  std::set<int> used;
+  for (const auto& q : mesh.quads) used.insert(q.begin(), q.end());
+  const prep::ModalAnalysis meshed = prep::analyse_modes(spec, 8);
+  // every Bezier control point merged with its neighbours': one node per gmsh node
+  CHECK(meshed.body.dofs.node_count() == int(used.size()));
+  CHECK(meshed.modes.rigid_body_modes == 1);  // the axial translation; separate elements would add theirs
+  // the quadratic edges approximate the circle (1 mm on R = 10 mm): measured 2.7e-7 of the volume
+  const double R = 0.01, rho = 2789;
+  CHECK(meshed.mass == Approx(4.0 / 3.0 * M_PI * R * R * R * rho).epsilon(1e-6));
+
+  // the IGA sphere of the same scene (graded to the same pole): their lowest modes have
+  // wavelengths of the sphere's size, which 1 mm quadratic elements and the IGA's splines
+  // both resolve (measured: 2e-6 to 1.1e-5 apart); 1e-4 leaves room for another gmsh mesh
+  const prep::ModalAnalysis iga = prep::analyse_modes(prep::read_model_file(kModels + "/sphere_axisym.model.toml"), 8);
+  const Eigen::VectorXd fm = meshed.modes.frequencies_hz(), fi = iga.modes.frequencies_hz();
+  for (int k = 1; k < 8; ++k) {
+    INFO("mode " << k << ": meshed " << fm(k) << " Hz, IGA " << fi(k) << " Hz");
+    CHECK(std::abs(fm(k) - fi(k)) < 1e-4 * fi(k));
+  }
+}
+
+TEST_CASE("meshed sphere: an affine field stores the strain energy of its constant stress", "[mesh]") {
+  const prep::ModelSpec spec = prep::read_model_file(kModels + "/sphere_axisym_gmsh.model.toml");
+  const test::AssembledBody a = test::assembled(spec);
+  // u_r = e r, u_z = f z: strains rr = tt = e, zz = f; admissible (u_r = 0 on the axis)
+  const double e = 1e-4, f = -3e-4, E = 7.28e10, nu = 0.33;
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(a.sys.K.rows());
+  for (int n = 0; n < a.body.dofs.node_count(); ++n)
+    for (int c = 0; c < 2; ++c)
+      if (const int i = a.body.dofs.free_index(n, c); i >= 0) u(i) = (c == 0 ? e : f) * a.body.dofs.node_points()(n, c);
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  const double s_rr = lambda * (2 * e + f) + 2 * mu * e, s_zz = lambda * (2 * e + f) + 2 * mu * f;
+  // the revolved volume of the mesh itself: its mass over the density
+  const double mass_volume = prep::analyse_modes(spec, 2).mass / 2789.0;
+  const double energy = 0.5 * u.dot(a.sys.K * u);
+  // exact for the element space (affine fields lie in it): round-off of the assembled sums
+  CHECK(energy == Approx(0.5 * (2 * s_rr * e + s_zz * f) * mass_volume).epsilon(1e-10));
+}
+
+TEST_CASE("bad meshed models: exit 2 with one line naming the field", "[mesh]") {
+  const test::ScratchDir dir("bad-mesh");
+  std::ifstream in(kModels + "/rod_axisym_gmsh.model.toml");
+  const std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  struct Case {
+    std::string from, to, expected;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"length = 1.0", "length = 0.0100000001", "mesh: gmsh could not mesh the section"},
+           {"side = \"cap\"", "side = \"rim\"", "contact_surface[0].side: the primitive has no side 'rim'"},
+           {"within = 4e-3", "within = 1e-9", "contact_surface[0].within: no edge of side 'cap' lies that close"},
+           {"primitive = \"rod_with_spherical_end\"", "primitive = \"torus\"", "mesh.primitive: unknown primitive 'torus'"},
+           {"growth = 1.35", "growth = 1.0", "mesh.growth: must lie in (1.05, 3]"},
+           {"contact_element_size = 35e-6", "contact_element_size = 1e-9", "mesh.contact_element_size: below 1e-5 of the body's size"},
+           {"[damping]", "[[stress_line]]\nname = \"s\"\n[damping]", "stress_line: not used by a meshed body"},
+           {"method = \"craig-bampton\"", "method = \"macneal\"", "reduction.method: a meshed body is reduced by modal or craig-bampton"},
+       }) {
+    std::string text = base;
+    const std::size_t at = text.find(c.from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, c.from.size(), c.to);
+    std::ofstream(dir.path("m.model.toml")) << text;
+    const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("m.model.toml") + " -o " + dir.path("m.sid.h5"));
+    INFO(c.expected << "\n" << r.err);
+    CHECK(r.exit_status == 2);
+    CHECK_THAT(r.err, Contains(c.expected));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+}
