@@ -15,12 +15,6 @@
 namespace isosid::format {
 namespace {
 
-void refuse_massless(const Sid& sid, const std::string& path) {
-  if (sid.refmod.massless_boundary())
-    throw InputError(path, "--format", "a massless-boundary SID (" + sid.refmod.reduction_method +
-                                           ") has coordinates without mass, which SID_FEM and MBSim readers integrate dynamically");
-}
-
 /// A value as EMBS reads it: mantissa and D exponent, 15 significant digits (its buffers
 /// hold 19 characters; round trip 5e-15).
 std::string fortran(double v) {
@@ -91,13 +85,25 @@ Eigen::MatrixXd symmetrized(const Eigen::MatrixXd& m) { return 0.5 * (m + m.tran
 
 }  // namespace
 
+void check_exportable(const Sid& sid, const std::string& sid_file, ExportFormat format) {
+  if (sid.refmod.massless_boundary())
+    throw InputError(sid_file, "/refmod/reduction_method",
+                     sid.refmod.reduction_method + " leaves coordinates without mass, which SID_FEM and MBSim readers integrate dynamically");
+  if (format != ExportFormat::MbsimH5) return;
+  const BodyIntegrals b = body_integrals(sid);
+  const Eigen::MatrixXd trace = b.PPdm[0][0] + b.PPdm[1][1] + b.PPdm[2][2];
+  const double scale = sid.Me.M0.cwiseAbs().maxCoeff();
+  if ((trace - sid.Me.M0).cwiseAbs().maxCoeff() > 1e-8 * scale)
+    throw InputError(sid_file, "/terms/Oe", "its order-1 part does not give back the integrals of Phi^T Phi (their trace is not Me): "
+                                            "MBSim's input cannot be recovered from this SID");
+}
+
 void write_sid_fem(const Sid& sid, const std::string& path) {
-  refuse_massless(sid, path);
   const Eigen::Index nq = sid.nq();
   SidFemText out(nq);
   char header[160];
   // the reader takes the first two runs of digits: the node and mode counts
-  std::snprintf(header, sizeof header, "%5zu%5ld    :No. nodes, No. modes: written by isosid-export from the SID of '%s'",
+  std::snprintf(header, sizeof header, "%5zu %5ld    :No. nodes, No. modes: written by isosid-export from the SID of '%s'",
                 sid.nodes.size(), long(nq), sid.body_name.c_str());
   out.text += header;
   out.text += "\n";
@@ -137,7 +143,6 @@ void write_sid_fem(const Sid& sid, const std::string& path) {
 }
 
 void write_mbsim_h5(const Sid& sid, const std::string& path) {
-  refuse_massless(sid, path);
   const BodyIntegrals b = body_integrals(sid);
   const Eigen::Index nq = sid.nq();
   AtomicOutput out(path);

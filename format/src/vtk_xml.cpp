@@ -6,6 +6,7 @@
 #include "isosid/format/atomic_output.hpp"
 #include "isosid/format/error.hpp"
 
+#include <cctype>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -110,6 +111,14 @@ void write_vtu(const std::string& path, const UnstructuredGrid& grid) {
   xml += data_array("UInt8", "types", 1, grid.types.data(), grid.types.size());
   xml += "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   write_text_atomically(path, xml);
+}
+
+std::string file_safe(const std::string& name) {
+  std::string out = name;
+  for (char& c : out)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+  if (out.empty() || out.find_first_not_of('.') == std::string::npos) out = "_" + out;
+  return out;
 }
 
 void write_pvd(const std::string& path, const std::vector<CollectionEntry>& entries) {

@@ -1,10 +1,11 @@
 // isosid-export: writes a SID in another tool's format (the classic ASCII SID_FEM, MBSim's
 // flexible FFR body HDF5). Exit 0 written, 2 bad input (unknown format, unwritable path,
-// a SID the format cannot hold).
+// the SID itself as output, a SID the format cannot hold).
 #include "isosid/common/cli_parse.hpp"
 #include "isosid/format/sid_export.hpp"
 #include "isosid/format/sid_io.hpp"
 
+#include <filesystem>
 #include <iostream>
 #include <map>
 
@@ -25,7 +26,11 @@ int main(int argc, char** argv) {
       const std::size_t dot = file.rfind(".sid.h5");
       output = (dot == std::string::npos ? file : file.substr(0, dot)) + extension.at(format);
     }
-    if (format == "sid-fem")
+    if (std::filesystem::exists(output) && std::filesystem::equivalent(output, file))
+      throw InputError(output, "--output", "is the SID itself: choose another file");
+    const ExportFormat kind = format == "sid-fem" ? ExportFormat::SidFem : ExportFormat::MbsimH5;
+    check_exportable(sid, file, kind);
+    if (kind == ExportFormat::SidFem)
       write_sid_fem(sid, output);
     else
       write_mbsim_h5(sid, output);

@@ -170,7 +170,7 @@ int main(int argc, char** argv) {
     if (!paraview_dir.empty()) {
       if (!sid.visual) throw InputError(file, "/visual", "the SID has no viewing mesh: add [visual] to its model file and rebuild it");
       if (!std::filesystem::is_directory(paraview_dir)) throw InputError(paraview_dir, "--paraview", "not a folder");
-      const std::string path = (std::filesystem::path(paraview_dir) / (sid.body_name + "_modes.vtu")).string();
+      const std::string path = (std::filesystem::path(paraview_dir) / (vtk::file_safe(sid.body_name) + "_modes.vtu")).string();
       vtk::write_vtu(path, mode_shape_grid(sid));
       std::cerr << "isosid-info: mode shapes of " << sid.nq() << " coordinates -> " << path << "\n";
     }

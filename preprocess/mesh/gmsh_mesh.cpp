@@ -12,18 +12,31 @@
 namespace isosid::prep {
 namespace {
 
-/// gmsh is one global model: initialized for one mesh, finalized however the meshing ends.
+/// gmsh is one global model: initialized for one mesh (without the user's configuration
+/// files, so the mesh depends on the model file alone), finalized however the meshing ends.
 class GmshSession {
 public:
   GmshSession() {
-    gmsh::initialize();
+    gmsh::initialize(0, nullptr, false);
     gmsh::option::setNumber("General.Terminal", 0);
     gmsh::option::setNumber("General.NumThreads", 1);
   }
-  ~GmshSession() { gmsh::finalize(); }
+  ~GmshSession() {
+    try {
+      gmsh::finalize();
+    } catch (...) {  // nothing to report: the mesh is taken or the error already thrown
+    }
+  }
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
 };
+
+/// gmsh's message on one line.
+std::string one_line(std::string message) {
+  for (char& c : message)
+    if (c == '\n' || c == '\r') c = ' ';
+  return message;
+}
 
 namespace occ = gmsh::model::occ;
 
@@ -61,8 +74,8 @@ Section rod_with_spherical_end(double r, double l) {
 }  // namespace
 
 QuadMesh gmsh_quad_mesh(const MeshSpec& spec, const std::string& file) {
-  const GmshSession session;
   try {
+    const GmshSession session;
     gmsh::model::add("isosid");
     Section section;
     if (spec.primitive == "half_disk")
@@ -131,9 +144,13 @@ QuadMesh gmsh_quad_mesh(const MeshSpec& spec, const std::string& file) {
   } catch (const format::InputError&) {
     throw;
   } catch (const std::string& error) {  // gmsh 4.8 throws its last error as a string
-    throw format::InputError(file, "mesh", "gmsh could not mesh the section: " + error);
+    throw format::InputError(file, "mesh", "gmsh could not mesh the section: " + one_line(error));
+  } catch (const std::bad_alloc&) {
+    throw;
   } catch (const std::exception& e) {
-    throw format::InputError(file, "mesh", std::string("gmsh could not mesh the section: ") + e.what());
+    throw format::InputError(file, "mesh", "gmsh could not mesh the section: " + one_line(e.what()));
+  } catch (...) {
+    throw format::InputError(file, "mesh", "gmsh could not mesh the section (it reported no reason)");
   }
 }
 

@@ -4,18 +4,33 @@
 #include "mesh/gmsh_mesh.hpp"
 #include "mesh/mesh_patches.hpp"
 
+#include "model/body_model.hpp"
+
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace isosid::prep {
 namespace {
 
-MeshSpec read_mesh(const TomlView& t, format::AnalysisType analysis) {
+/// About how many elements the size field asks for: the section's area at element_size, plus
+/// the graded zone as a half-disk around the contact point with the threshold's sizes.
+double estimated_elements(const MeshSpec& s) {
+  const double area = s.primitive == "half_disk" ? M_PI * s.radius * s.radius / 2 : s.radius * s.length;
+  const double h0 = s.contact_element_size, h1 = s.element_size, d0 = 2 * h0, d1 = d0 + (h1 - h0) / (s.growth - 1);
+  double graded = 0;
+  const int n = 2000;
+  for (int i = 0; i < n; ++i) {
+    const double d = (i + 0.5) * d1 / n, h = d < d0 ? h0 : h0 + (d - d0) * (s.growth - 1);
+    graded += M_PI * d * (d1 / n) / (h * h);
+  }
+  return graded + area / (h1 * h1);
+}
+
+MeshSpec read_mesh(const TomlView& t) {
   t.allow_only({"generator", "primitive", "radius", "length", "element_size", "contact_element_size", "growth", "contact_point"});
   if (t.string("generator", "gmsh") != "gmsh") t.fail("generator", "only \"gmsh\" meshes bodies");
-  if (analysis != format::AnalysisType::Axisymmetric && analysis != format::AnalysisType::PlaneStrain &&
-      analysis != format::AnalysisType::PlaneStress)
-    t.fail("primitive", "meshed bodies are 2D sections (axisymmetric, plane_strain, plane_stress)");
   MeshSpec s;
   s.primitive = t.string("primitive");
   s.radius = t.positive("radius");
@@ -30,10 +45,16 @@ MeshSpec read_mesh(const TomlView& t, format::AnalysisType analysis) {
   if (s.contact_element_size > s.element_size) t.fail("contact_element_size", "exceeds element_size");
   const double size = s.primitive == "half_disk" ? 2 * s.radius : s.length;
   if (s.element_size > size) t.fail("element_size", "exceeds the body");
-  // gmsh meshes at twice these sizes (then splits): 1e-5 of the body keeps it in the millions
   if (s.contact_element_size < 1e-5 * size) t.fail("contact_element_size", "below 1e-5 of the body's size");
   s.growth = t.positive("growth", s.growth);
   if (s.growth <= 1.05 || s.growth > 3) t.fail("growth", "must lie in (1.05, 3]");
+  // refused before gmsh runs: a mesh beyond what isosid-prep assembles would take minutes and gigabytes
+  if (const double nodes = 4 * estimated_elements(s); nodes > kMaxControlPoints) {
+    char text[200];
+    std::snprintf(text, sizeof text, "asks for about %.2g nodes, more than the %.0f isosid-prep reduces: give larger element sizes", nodes,
+                  kMaxControlPoints);
+    t.fail("element_size", text);
+  }
   s.contact_point = s.primitive == "half_disk" ? Eigen::Vector2d(0, -s.radius) : Eigen::Vector2d(0, 0);  // the pole
   if (t.has("contact_point")) {
     const std::vector<double> p = t.numbers("contact_point");
@@ -43,14 +64,22 @@ MeshSpec read_mesh(const TomlView& t, format::AnalysisType analysis) {
   return s;
 }
 
-/// The index of the mesh node nearest to x and an element that has it.
-std::pair<int, int> nearest_node(const QuadMesh& mesh, const Eigen::Vector2d& x) {
-  Eigen::Index node = 0;
-  (mesh.nodes.rowwise() - x.transpose()).rowwise().squaredNorm().minCoeff(&node);
-  for (int e = 0; e < int(mesh.quads.size()); ++e)
-    if (std::find(mesh.quads[std::size_t(e)].begin(), mesh.quads[std::size_t(e)].end(), int(node)) != mesh.quads[std::size_t(e)].end())
-      return {int(node), e};
-  return {int(node), 0};
+/// The element that holds the physical point `at` (to the placement tolerance of its
+/// patch), the nearest of those whose control net's box contains it; t.fail if none does.
+int element_holding(const std::vector<PatchSpec>& elements, const GivenPoint& at, const TomlView& t) {
+  int best = -1;
+  double nearest = INFINITY;
+  for (int e = 0; e < int(elements.size()); ++e) {
+    const NurbsPatch& p = elements[std::size_t(e)].patch;
+    const double margin = placement_tolerance(p);
+    const Eigen::ArrayXd lo = p.points.colwise().minCoeff().transpose().array() - margin,
+                         hi = p.points.colwise().maxCoeff().transpose().array() + margin;
+    if ((at.value.array() < lo).any() || (at.value.array() > hi).any()) continue;
+    const BodyPoint placed = place(p, at);
+    if (placed.distance <= margin && placed.distance < nearest) nearest = placed.distance, best = e;
+  }
+  if (best < 0) t.fail("point", "lies outside the body");
+  return best;
 }
 
 }  // namespace
@@ -58,7 +87,10 @@ std::pair<int, int> nearest_node(const QuadMesh& mesh, const Eigen::Vector2d& x)
 void read_mesh_model(const TomlView& top, ModelSpec& m, const format::Material& material) {
   for (const char* key : {"geometry", "patch", "refinement", "boundary", "stress_line", "contact_resolution"})
     if (top.has(key)) top.fail(key, "not used by a meshed body ([mesh]): its geometry, size and contact resolution are in [mesh]");
-  MeshSpec& spec = m.mesh.emplace(read_mesh(top.table("mesh"), m.analysis));
+  if (m.analysis != format::AnalysisType::Axisymmetric && m.analysis != format::AnalysisType::PlaneStrain &&
+      m.analysis != format::AnalysisType::PlaneStress)
+    top.table("body").fail("analysis", "meshed bodies are 2D sections (axisymmetric, plane_strain, plane_stress)");
+  MeshSpec& spec = m.mesh.emplace(read_mesh(top.table("mesh")));
   const QuadMesh mesh = gmsh_quad_mesh(spec, m.file);
 
   // contact surfaces: boundary chains along a primitive side near the contact point; their
@@ -105,15 +137,18 @@ void read_mesh_model(const TomlView& top, ModelSpec& m, const format::Material& 
     m.contact_surfaces.push_back(s.spec);
   }
 
+  std::vector<std::string> node_names;
   for (const TomlView& t : top.tables("node")) {
     t.allow_only({"name", "point"});
     NodeSpec n;
     n.name = t.string("name");
+    if (n.name.empty() || n.name.find('/') != std::string::npos) t.fail("name", "must be a non-empty name without '/'");
+    if (std::find(node_names.begin(), node_names.end(), n.name) != node_names.end()) t.fail("name", "duplicate name '" + n.name + "'");
+    node_names.push_back(n.name);
     const std::vector<double> p = t.numbers("point");
     if (p.size() != 2) t.fail("point", "needs 2 coordinates (m)");
-    const Eigen::Vector2d x(p[0], p[1]);
-    n.patch = nearest_node(mesh, x).second;
-    n.at = {x, true};
+    n.at = {Eigen::Vector2d(p[0], p[1]), true};
+    n.patch = element_holding(m.patches, n.at, t);
     m.nodes.push_back(n);
   }
 
@@ -126,6 +161,9 @@ void read_mesh_model(const TomlView& top, ModelSpec& m, const format::Material& 
     const long long n = r->integer("normal_modes", 10);
     if (n < 1 || n > 100000) r->fail("normal_modes", "must be a positive count");
     red.normal_modes = int(n);
+    if (red.method != "craig-bampton")
+      for (const char* key : {"interface_surface", "interface_points", "interface_point"})
+        if (r->has(key)) r->fail(key, "only used by method = \"craig-bampton\"");
     if (red.method == "craig-bampton") {
       red.interface_surface = r->string("interface_surface");
       if (std::none_of(m.contact_surfaces.begin(), m.contact_surfaces.end(), [&](const ContactSurfaceSpec& c) { return c.name == red.interface_surface; }))

@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
                  "[refinement.hierarchical], reduced to its normal modes (what the refined SID's transfer maps from)");
     if (auto status = common::parse_command_line(app, argc, argv)) return *status;
 
-    prep::ModelSpec spec = prep::read_model_file(model_file);  // instant; progress starts on valid input
+    prep::ModelSpec spec = prep::read_model_file(model_file);  // progress starts on valid input (a meshed body is meshed here: gmsh takes well under a second)
     if (app.count("--contact-radius")) prep::set_contact_radius(spec, contact_radius, "--contact-radius");
     if (coarse) spec = prep::coarse_model_spec(std::move(spec));
     prep::StderrProgress progress("isosid-prep");

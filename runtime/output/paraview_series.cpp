@@ -19,13 +19,6 @@ namespace vtk = format::vtk;
 /// contact, few enough to stay in the tens of megabytes.
 constexpr double kDefaultFrames = 200;
 
-/// A name usable in a file name: letters, digits, '-', '_' and '.' kept, the rest '_'.
-std::string file_safe(const std::string& name) {
-  std::string out = name;
-  for (char& c : out)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
-  return out;
-}
 }  // namespace
 
 ParaviewSeries::ParaviewSeries(const MultibodySystem& system, const Scene& scene, std::string results_dir)
@@ -40,30 +33,36 @@ ParaviewSeries::ParaviewSeries(const MultibodySystem& system, const Scene& scene
     if (!b->sid().visual)
       throw format::InputError(scene.file, "output.paraview",
                                "the SID of '" + b->name() + "' has no viewing mesh: add [visual] to its model file");
-    bodies_.push_back({b.get(), &*b->sid().visual, format::visual_grid(*b->sid().visual), file_safe(b->name()),
+    bodies_.push_back({b.get(), &*b->sid().visual, format::visual_grid(*b->sid().visual), "body_" + vtk::file_safe(b->name()),
                        b->sid().material.poisson_ratio});
   }
-  for (const SurfaceContact& c : system.contacts()) contact_stems_.push_back("contact_" + file_safe(c.name()));
+  for (const SurfaceContact& c : system.contacts()) contact_stems_.push_back("contact_" + vtk::file_safe(c.name()));
 }
 
 void ParaviewSeries::sample(double t, const double* y) {
   if (t < next_time_ * (1 - 1e-9)) return;
-  if (frames_ == 0) {  // a folder of this run only: frames of an earlier run would mix in
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  char suffix[32];
-  std::snprintf(suffix, sizeof suffix, "_%05d.vtu", frames_);
-  int part = 0;
-  for (BodyView& view : bodies_) {
-    const std::string file = view.file_stem + suffix;
-    write_body(view, y, (std::filesystem::path(dir_) / file).string());
-    entries_.push_back({t, part++, view.body->name(), file});
-  }
-  for (std::size_t k = 0; k < contact_stems_.size(); ++k) {
-    const std::string file = contact_stems_[k] + suffix;
-    write_contact(system_.contacts()[k], y, (std::filesystem::path(dir_) / file).string());
-    entries_.push_back({t, part++, system_.contacts()[k].name(), file});
+  try {
+    if (frames_ == 0) {  // a folder of this run only: frames of an earlier run would mix in
+      std::filesystem::remove_all(dir_);
+      std::filesystem::create_directories(dir_);
+    }
+    char suffix[32];
+    std::snprintf(suffix, sizeof suffix, "_%05d.vtu", frames_);
+    int part = 0;
+    for (BodyView& view : bodies_) {
+      const std::string file = view.file_stem + suffix;
+      write_body(view, y, (std::filesystem::path(dir_) / file).string());
+      entries_.push_back({t, part++, view.body->name(), file});
+    }
+    for (std::size_t k = 0; k < contact_stems_.size(); ++k) {
+      const std::string file = contact_stems_[k] + suffix;
+      write_contact(system_.contacts()[k], y, (std::filesystem::path(dir_) / file).string());
+      entries_.push_back({t, part++, system_.contacts()[k].name(), file});
+    }
+  } catch (const format::ComputationError&) {
+    throw;
+  } catch (const std::exception& e) {  // a full disk, a folder gone: the run fails here and keeps its results
+    throw format::ComputationError("ParaView frame at t = " + std::to_string(t) + " s: " + e.what());
   }
   ++frames_;
   next_time_ = (std::floor(t / interval_ + 1e-9) + 1) * interval_;  // the next multiple of the interval
@@ -75,17 +74,16 @@ void ParaviewSeries::write_body(BodyView& view, const double* y, const std::stri
   const int dim = body.sid().dim();
   const Eigen::Index n = mesh.points();
   const Eigen::Matrix3d A = body.orientation(y).toRotationMatrix();
-  const Eigen::Vector3d r = body.r(y), v = body.v(y), omega = body.omega(y);
-  const Eigen::VectorXd u = mesh.Phi * body.q(y), udot = mesh.Phi * body.qdot(y);
+  const Eigen::Vector3d r = body.r(y);
+  const Eigen::VectorXd u = mesh.Phi * body.q(y);
   std::vector<double> displacement(std::size_t(3 * n)), velocity(std::size_t(3 * n));
-  Eigen::Vector3d X = Eigen::Vector3d::Zero(), du = Eigen::Vector3d::Zero(), dudt = Eigen::Vector3d::Zero();
+  Eigen::Vector3d X = Eigen::Vector3d::Zero(), du = Eigen::Vector3d::Zero();
   for (Eigen::Index p = 0; p < n; ++p) {
     X.head(dim) = mesh.position.row(p).transpose();
     du.head(dim) = u.segment(p * dim, dim);
-    dudt.head(dim) = udot.segment(p * dim, dim);
     const Eigen::Vector3d x = X + du;
     view.grid.points.row(p) = (r + A * x).transpose();
-    const Eigen::Vector3d world_u = A * du, world_v = v + A * (omega.cross(x) + dudt);  // omega in the body frame
+    const Eigen::Vector3d world_u = A * du, world_v = body.point_velocity(x, mesh.Phi.middleRows(p * dim, dim), y);
     for (int a = 0; a < 3; ++a) displacement[std::size_t(3 * p + a)] = world_u(a), velocity[std::size_t(3 * p + a)] = world_v(a);
   }
   view.grid.point_data = {{"displacement", 3, std::move(displacement)}, {"velocity", 3, std::move(velocity)}};
@@ -119,9 +117,13 @@ void ParaviewSeries::write_contact(const SurfaceContact& contact, const double* 
 }
 
 std::string ParaviewSeries::write_collection() const {
-  std::filesystem::create_directories(dir_);
   const std::string path = (std::filesystem::path(dir_) / "scene.pvd").string();
-  vtk::write_pvd(path, entries_);
+  try {
+    std::filesystem::create_directories(dir_);
+    vtk::write_pvd(path, entries_);
+  } catch (const std::exception& e) {
+    throw format::ComputationError("ParaView collection " + path + ": " + e.what());
+  }
   return path;
 }
 

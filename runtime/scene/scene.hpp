@@ -115,7 +115,7 @@ struct OutputSettings {
   /// A ParaView collection (paraview/scene.pvd) of the deformed flexible bodies and the
   /// loaded contact points, one frame per `paraview_interval`.
   bool paraview = false;
-  double paraview_interval = 0;  ///< s; 0: the output interval, but at most 200 frames
+  double paraview_interval = 0;  ///< s; 0: the output interval, but at most 200 frames (also for --paraview)
 };
 
 struct Scene {

@@ -194,7 +194,6 @@ Scene read_scene_file(const std::string& path) {
   if (auto o = top.optional_table("output")) {
     o->allow_only({"paraview", "paraview_interval"});
     scene.output.paraview = o->boolean("paraview", false);
-    if (o->has("paraview_interval") && !scene.output.paraview) o->fail("paraview_interval", "only used with paraview = true");
     if (o->has("paraview_interval")) {
       scene.output.paraview_interval = o->positive("paraview_interval");
       if (scene.output.paraview_interval < scene.simulation.output_interval)

@@ -14,10 +14,3 @@ TEST_CASE("time left: extrapolated from the fraction done, in seconds, minutes o
   CHECK(ProgressLine::time_left(1.0, 10.0).empty());    // done
   CHECK(ProgressLine::time_left(-1.0, 10.0).empty());   // unknown
 }
-
-TEST_CASE("work fraction: set by a loop, read by the progress line", "[common][progress]") {
-  isosid::common::set_work_fraction(0.25);
-  CHECK(isosid::common::work_fraction() == 0.25);
-  isosid::common::set_work_fraction(-1);
-  CHECK(isosid::common::work_fraction() < 0);
-}

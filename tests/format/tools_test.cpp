@@ -49,7 +49,8 @@ TEST_CASE("the tools exit 2 with one line on bad input", "[format][tools]") {
                                  std::string(ISOSID_DIFF_EXE) + " a --rtol -1",
                                  std::string(ISOSID_EXPORT_EXE) + " " + dir.path("viewable.sid.h5") + " --format adams-mnf",
                                  std::string(ISOSID_EXPORT_EXE) + " " + dir.path("viewable.sid.h5") + " --format sid-fem -o " + dir.path("no/such/x"),
-                                 std::string(ISOSID_EXPORT_EXE) + " " + dir.path("junk.sid.h5") + " --format mbsim-h5"}) {
+                                 std::string(ISOSID_EXPORT_EXE) + " " + dir.path("junk.sid.h5") + " --format mbsim-h5",
+                                 std::string(ISOSID_EXPORT_EXE) + " " + dir.path("viewable.sid.h5") + " --format sid-fem -o " + dir.path("viewable.sid.h5")}) {
     INFO(cmd);
     const auto r = test::run_program(cmd);
     CHECK(r.exit_status == 2);

@@ -6,11 +6,13 @@
 #include "mesh/gmsh_mesh.hpp"
 #include "model/model_file.hpp"
 #include "pipeline/prepare.hpp"
+#include "sid/node_data.hpp"
 #include "preprocess/body_fixtures.hpp"
 #include "support/run_program.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <algorithm>
 #include <fstream>
 #include <set>
 
@@ -43,6 +45,24 @@ TEST_CASE("meshed sphere: gmsh's nodes are the body's nodes, one rigid mode, the
   for (int k = 1; k < 8; ++k) {
     INFO("mode " << k << ": meshed " << fm(k) << " Hz, IGA " << fi(k) << " Hz");
     CHECK(std::abs(fm(k) - fi(k)) < 1e-4 * fi(k));
+  }
+}
+
+TEST_CASE("a node of a meshed body lands on its point, inside an element as at a mesh vertex", "[mesh]") {
+  const test::ScratchDir dir("mesh-node");
+  std::ifstream in(kModels + "/sphere_axisym_gmsh.model.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text += "\n[[node]]\nname = \"inside\"\npoint = [0.0071, 0.0012]\n";
+  std::ofstream(dir.path("m.model.toml")) << text;
+  const prep::ModelSpec spec = prep::read_model_file(dir.path("m.model.toml"));
+  const prep::BodyModel body = prep::build_body(spec);
+  const Eigen::MatrixXd Phi = Eigen::MatrixXd::Zero(body.dofs.total_dofs(), 1);
+  for (const auto& [name, x] : {std::pair{"centre", Eigen::Vector2d(0.0, 0.0)}, {"inside", Eigen::Vector2d(0.0071, 0.0012)}}) {
+    const auto it = std::find_if(spec.nodes.begin(), spec.nodes.end(), [&](const prep::NodeSpec& n) { return n.name == name; });
+    REQUIRE(it != spec.nodes.end());
+    const format::Node node = prep::node_at(body, *it, Phi);
+    INFO(name);
+    CHECK((node.origin.M0.col(0).head(2) - x).norm() < 1e-12);  // placed exactly (1e-12 m: Newton's round-off)
   }
 }
 
@@ -80,6 +100,10 @@ TEST_CASE("bad meshed models: exit 2 with one line naming the field", "[mesh]") 
            {"contact_element_size = 35e-6", "contact_element_size = 1e-9", "mesh.contact_element_size: below 1e-5 of the body's size"},
            {"[damping]", "[[stress_line]]\nname = \"s\"\n[damping]", "stress_line: not used by a meshed body"},
            {"method = \"craig-bampton\"", "method = \"macneal\"", "reduction.method: a meshed body is reduced by modal or craig-bampton"},
+           {"method = \"craig-bampton\"", "method = \"modal\"", "reduction.interface_surface: only used by method = \"craig-bampton\""},
+           {"point = [0.0, 1.0]", "point = [0.0, 1.5]", "node[0].point: lies outside the body"},
+           {"element_size = 2e-3\ncontact_element_size = 35e-6", "element_size = 1e-5\ncontact_element_size = 1e-5", "mesh.element_size: asks for about"},
+           {"analysis = \"axisymmetric\"", "analysis = \"solid\"", "body.analysis: meshed bodies are 2D sections"},
        }) {
     std::string text = base;
     const std::size_t at = text.find(c.from);

@@ -2,7 +2,7 @@
 // sid-and-ffrf.md section 0), recovered from a SID's terms: what an exporter to a tool that
 // assembles its own terms (MBSim's flexible FFR body) needs. Exact for SIDs whose terms come
 // from a consistent mass (isosid-prep's): the symmetric parts are in Oe, the antisymmetric
-// ones in Cr.
+// ones in Cr (check_exportable compares the recovered trace with Me before MBSim export).
 #pragma once
 #include "isosid/format/sid.hpp"
 

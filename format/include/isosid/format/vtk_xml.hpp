@@ -43,6 +43,10 @@ struct CollectionEntry {
   std::string file;
 };
 
+/// A name usable in a file name: letters, digits, '-', '_' and '.' kept, every other
+/// character (a '/', a space) becomes '_'; never empty, never "." or "..".
+std::string file_safe(const std::string& name);
+
 /// Writes a .pvd collection listing `entries`.
 void write_pvd(const std::string& path, const std::vector<CollectionEntry>& entries);
 
