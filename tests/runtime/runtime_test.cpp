@@ -208,6 +208,25 @@ TEST_CASE("a full disk ends both programs with one line and exit 1, and the run 
     CHECK(entry.path().filename().string().rfind(".results.h5.tmp", 0) != 0);  // no temporary left
 }
 
+TEST_CASE("ParaView frames that cannot be written fail the run with exit 1 and keep its results", "[runtime][faults]") {
+  const test::ScratchDir dir("paraview-full");
+  test::copy_model_file(dir, "sphere_axisym.model.toml");
+  test::copy_model_file(dir, "sphere_hertz.scene.toml");
+  REQUIRE(test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("sphere_axisym.model.toml")).exit_status == 0);
+  // 300 KiB: summary.json and a short results.h5 fit, one frame of the sphere (0.37 MB) does not
+  const auto run = test::run_program("ulimit -f 300; trap '' XFSZ; ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_RUN_EXE +
+                                     " -q --paraview " + dir.path("sphere_hertz.scene.toml") + " -o " + dir.path("out"));
+  INFO(run.err);
+  CHECK(run.exit_status == 1);
+  CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+  CHECK(run.err.find("body_sphere_00000.vtu: cannot write") != std::string::npos);
+  std::ifstream in(dir.path("out/summary.json"));
+  const json summary = json::parse(in);
+  CHECK(summary["status"] == "failed");
+  CHECK(std::filesystem::exists(dir.path("out/results.h5")));
+  CHECK(std::filesystem::exists(dir.path("out/paraview/scene.pvd")));  // the frames so far: none
+}
+
 TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run at a sample and keep its results so far", "[runtime][signals]") {
   const test::ScratchDir dir("signals");
   // the impact at 1 ns steps: about a second per 100 us simulated, far longer than the test waits
