@@ -2,6 +2,11 @@
 # (third-party headers are included as SYSTEM so their warnings stay out).
 add_library(isosid_options INTERFACE)
 target_compile_options(isosid_options INTERFACE -Wall -Wextra -Wpedantic)
+# Our code exports nothing: its Eigen template instances would otherwise be exported from the
+# programs and bind libgmsh's calls of the same instances, compiled with another Eigen
+# configuration (measured under ASan: gmsh's matrix inverse freed memory our instance had not
+# allocated). Everything links statically into executables, so hidden visibility costs nothing.
+target_compile_options(isosid_options INTERFACE -fvisibility=hidden -fvisibility-inlines-hidden)
 # GCC 12 reports -Wrestrict inside libstdc++'s std::string concatenation at -O2, a known false
 # positive (GCC bug 105329, fixed in GCC 13); it says nothing about project code.
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)

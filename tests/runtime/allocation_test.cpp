@@ -22,15 +22,16 @@ namespace {
 std::atomic<long> g_allocations{0};
 }  // namespace
 
-extern "C" void* malloc(std::size_t size) {
+// exported (the project builds with hidden visibility): libc and libstdc++ must call these
+extern "C" __attribute__((visibility("default"))) void* malloc(std::size_t size) {
   ++g_allocations;
   return __libc_malloc(size);
 }
-extern "C" void* calloc(std::size_t n, std::size_t size) {
+extern "C" __attribute__((visibility("default"))) void* calloc(std::size_t n, std::size_t size) {
   ++g_allocations;
   return __libc_calloc(n, size);
 }
-extern "C" void* realloc(void* p, std::size_t size) {
+extern "C" __attribute__((visibility("default"))) void* realloc(void* p, std::size_t size) {
   ++g_allocations;
   return __libc_realloc(p, size);
 }
