@@ -6,7 +6,6 @@
 #include "isosid/format/visual_grid.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
