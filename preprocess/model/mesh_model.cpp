@@ -106,6 +106,8 @@ void read_mesh_model(const TomlView& top, ModelSpec& m, const format::Material& 
     Surface s;
     s.spec.name = c.string("name");
     if (s.spec.name.empty() || s.spec.name.find('/') != std::string::npos) c.fail("name", "must be a non-empty name without '/'");
+    for (const Surface& other : surfaces)
+      if (other.spec.name == s.spec.name) c.fail("name", "duplicate name '" + s.spec.name + "'");
     const std::string side = c.string("side");
     const auto edges = mesh.sides.find(side);
     if (edges == mesh.sides.end()) c.fail("side", "the primitive has no side '" + side + "'");

@@ -102,6 +102,8 @@ TEST_CASE("bad meshed models: exit 2 with one line naming the field", "[mesh]") 
            {"method = \"craig-bampton\"", "method = \"macneal\"", "reduction.method: a meshed body is reduced by modal or craig-bampton"},
            {"method = \"craig-bampton\"", "method = \"modal\"", "reduction.interface_surface: only used by method = \"craig-bampton\""},
            {"point = [0.0, 1.0]", "point = [0.0, 1.5]", "node[0].point: lies outside the body"},
+           {"[reduction]", "[[contact_surface]]\nname = \"contact\"\nside = \"top\"\nwithin = 2.0\n[reduction]",
+            "contact_surface[1].name: duplicate name 'contact'"},
            {"element_size = 2e-3\ncontact_element_size = 35e-6", "element_size = 1e-5\ncontact_element_size = 1e-5", "mesh.element_size: asks for about"},
            {"analysis = \"axisymmetric\"", "analysis = \"solid\"", "body.analysis: meshed bodies are 2D sections"},
        }) {
