@@ -5,6 +5,7 @@
 #include "isosid/format/error.hpp"
 #include "isosid/format/hdf5_file.hpp"
 #include "contact/deformed_patch.hpp"
+#include "output/force_spectrum.hpp"
 #include "isosid/common/number_text.hpp"
 
 #include <cmath>
@@ -199,6 +200,11 @@ void Recorder::write_results(const std::string& path) const {
       w.matrix(g + "/force", Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(contact_force_[k].data(), n, 3), "N");
       w.vector(g + "/active_points", Eigen::Map<const Eigen::VectorXd>(contact_points_[k].data(), n), "1");
       w.vector(g + "/max_penetration", Eigen::Map<const Eigen::VectorXd>(contact_penetration_[k].data(), n), "m");
+      std::vector<double> magnitude(static_cast<std::size_t>(n));
+      for (Eigen::Index i = 0; i < n; ++i) magnitude[std::size_t(i)] = Eigen::Vector3d(&contact_force_[k][std::size_t(3 * i)]).norm();
+      const Spectrum spectrum = force_spectrum(time_, magnitude, scene_.simulation.output_interval);
+      w.vector(g + "/spectrum_frequency", spectrum.frequency_hz, "Hz");
+      w.vector(g + "/spectrum_amplitude", spectrum.amplitude_ns, "N s");
     }
     for (std::size_t k = 0; k < joint_force_.size(); ++k) {
       using Rows3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;

@@ -1,5 +1,5 @@
-// Everything a run reports: time series at the output interval (states, contact forces,
-// energies, monitors), per-step contact statistics (onset, release, peak force, impulse),
+// Everything a run reports: time series at the output interval (states, contact forces and
+// their spectra, energies, monitors), per-step contact statistics (onset, release, peak force, impulse),
 // monitor reversals, and the comparison with the scene's reference values.
 #pragma once
 #include "scene/scene.hpp"

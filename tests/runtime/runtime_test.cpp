@@ -118,11 +118,19 @@ TEST_CASE("an elastic sphere impact conserves energy and rebounds", "[runtime]")
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-4);
   CHECK(std::ifstream(dir.path("out-s.scene.toml/results.h5")).good());
   CHECK(std::ifstream(dir.path("out-s.scene.toml/summary.json")).good());
+  // the force spectrum at 0 Hz is the impulse: here of the sampled force, in the summary of the
+  // accepted steps' force (1 us samples against ~0.2 us steps: 1e-3)
+  const format::h5::Reader results(dir.path("out-s.scene.toml/results.h5"));
+  const Eigen::VectorXd nu = results.vector("/contacts/impact/spectrum_frequency"), F = results.vector("/contacts/impact/spectrum_amplitude");
+  REQUIRE(nu.size() > 10);
+  CHECK(nu(0) == 0);
+  CHECK(F(0) == Approx(c["impulse_ns"].get<double>()).epsilon(1e-3));
+  CHECK(F.maxCoeff() == F(0));  // a pulse of one sign: |F(nu)| <= F(0)
   // the plot script draws force (with Hertz) and energies from these files
   const auto plot = test::run_program(std::string(ISOSID_SCRIPTS_DIR) + "/plot-results " + dir.path("out-s.scene.toml"));
   INFO(plot.err);
   CHECK(plot.exit_status == 0);
-  for (const char* png : {"contact_force.png", "energy.png"}) {
+  for (const char* png : {"contact_force.png", "energy.png", "force_spectrum.png"}) {
     std::ifstream f(dir.path("out-s.scene.toml/") + png, std::ios::binary);
     char magic[4] = {};
     f.read(magic, 4);
