@@ -101,13 +101,11 @@ void read_mesh_model(const TomlView& top, ModelSpec& m, const format::Material& 
     std::vector<ElementEdge> chain;
   };
   std::vector<Surface> surfaces;
+  std::vector<std::string> surface_names, node_names;
   for (const TomlView& c : top.tables("contact_surface")) {
     c.allow_only({"name", "side", "within"});
     Surface s;
-    s.spec.name = c.string("name");
-    if (s.spec.name.empty() || s.spec.name.find('/') != std::string::npos) c.fail("name", "must be a non-empty name without '/'");
-    for (const Surface& other : surfaces)
-      if (other.spec.name == s.spec.name) c.fail("name", "duplicate name '" + s.spec.name + "'");
+    s.spec.name = unique_name(c, surface_names);
     const std::string side = c.string("side");
     const auto edges = mesh.sides.find(side);
     if (edges == mesh.sides.end()) c.fail("side", "the primitive has no side '" + side + "'");
@@ -139,14 +137,10 @@ void read_mesh_model(const TomlView& top, ModelSpec& m, const format::Material& 
     m.contact_surfaces.push_back(s.spec);
   }
 
-  std::vector<std::string> node_names;
   for (const TomlView& t : top.tables("node")) {
     t.allow_only({"name", "point"});
     NodeSpec n;
-    n.name = t.string("name");
-    if (n.name.empty() || n.name.find('/') != std::string::npos) t.fail("name", "must be a non-empty name without '/'");
-    if (std::find(node_names.begin(), node_names.end(), n.name) != node_names.end()) t.fail("name", "duplicate name '" + n.name + "'");
-    node_names.push_back(n.name);
+    n.name = unique_name(t, node_names);
     const std::vector<double> p = t.numbers("point");
     if (p.size() != 2) t.fail("point", "needs 2 coordinates (m)");
     n.at = {Eigen::Vector2d(p[0], p[1]), true};
@@ -181,12 +175,7 @@ void read_mesh_model(const TomlView& top, ModelSpec& m, const format::Material& 
       }
     }
   }
-  if (auto q = top.optional_table("quadrature")) {
-    q->allow_only({"extra_points"});
-    const long long extra = q->integer("extra_points", 0);
-    if (extra < 0 || extra > 10) q->fail("extra_points", "must lie in 0..10");
-    m.extra_quadrature_points = int(extra);
-  }
+  read_quadrature(top, m);
   read_visual(top, m);
   read_damping(top, m);
 }

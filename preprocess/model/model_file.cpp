@@ -293,13 +293,6 @@ void require_on_body(const TomlView& t, const std::string& key, const NurbsPatch
 
 void read_sid_content(const TomlView& top, ModelSpec& m) {
   const bool several = m.patches.size() > 1;
-  auto unique_name = [](const TomlView& t, std::vector<std::string>& seen) {
-    const std::string name = t.string("name");
-    if (name.empty() || name.find('/') != std::string::npos) t.fail("name", "must be a non-empty name without '/'");
-    if (std::find(seen.begin(), seen.end(), name) != seen.end()) t.fail("name", "duplicate name '" + name + "'");
-    seen.push_back(name);
-    return name;
-  };
   std::vector<std::string> surfaces, nodes, lines;
   for (const TomlView& c : top.tables("contact_surface")) {
     c.allow_only({"name", "side", "interval", "points_per_direction"});
@@ -448,6 +441,23 @@ format::Material read_material(const TomlView& mat) {
   return m;
 }
 
+std::string unique_name(const TomlView& t, std::vector<std::string>& seen) {
+  const std::string name = t.string("name");
+  if (name.empty() || name.find('/') != std::string::npos) t.fail("name", "must be a non-empty name without '/'");
+  if (std::find(seen.begin(), seen.end(), name) != seen.end()) t.fail("name", "duplicate name '" + name + "'");
+  seen.push_back(name);
+  return name;
+}
+
+void read_quadrature(const TomlView& top, ModelSpec& m) {
+  if (auto q = top.optional_table("quadrature")) {
+    q->allow_only({"extra_points"});
+    const long long extra = q->integer("extra_points", 0);
+    if (extra < 0 || extra > 10) q->fail("extra_points", "must lie in 0..10");
+    m.extra_quadrature_points = int(extra);
+  }
+}
+
 void read_visual(const TomlView& top, ModelSpec& m) {
   if (auto v = top.optional_table("visual")) {
     v->allow_only({"subdivisions", "stress"});
@@ -554,12 +564,7 @@ ModelSpec read_model_file(const std::string& path) {
   if (m.contact_resolution && m.contact_resolution->graded.empty() && !m.contact_resolution->hierarchical)
     top.table("contact_resolution").fail("contact_radius", "no refinement uses it (give a refinement smallest = \"contact\")");
   if (auto b = top.optional_table("boundary")) m.fixed = read_boundary(*b, m.patches, format::spatial_dim(m.analysis));
-  if (auto q = top.optional_table("quadrature")) {
-    q->allow_only({"extra_points"});
-    const long long extra = q->integer("extra_points", 0);
-    if (extra < 0 || extra > 10) q->fail("extra_points", "must lie in 0..10");
-    m.extra_quadrature_points = int(extra);
-  }
+  read_quadrature(top, m);
   read_sid_content(top, m);
   return m;
 }
