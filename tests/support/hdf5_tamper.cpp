@@ -23,51 +23,37 @@ void remove_object(const std::string& file, const std::string& object) {
   if (rc < 0) throw std::runtime_error("cannot delete " + object);
 }
 
-void replace_dataset(const std::string& file, const std::string& dataset, const Eigen::MatrixXd& value) {
-  remove_object(file, dataset);
-  const hid_t f = open_rw(file);
-  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rm = value;
-  const hsize_t dims[2] = {hsize_t(value.rows()), hsize_t(value.cols())};
-  const hid_t space = H5Screate_simple(2, dims, nullptr);
-  const hid_t ds = H5Dcreate2(f, dataset.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, rm.data());
-  H5Dclose(ds);
-  H5Sclose(space);
-  H5Fclose(f);
-}
-
-void replace_integers(const std::string& file, const std::string& dataset, const Eigen::VectorXi& value) {
-  remove_object(file, dataset);
-  const hid_t f = open_rw(file);
-  const hsize_t dims[1] = {hsize_t(value.size())};
-  const hid_t space = H5Screate_simple(1, dims, nullptr);
-  const hid_t ds = H5Dcreate2(f, dataset.c_str(), H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  H5Dwrite(ds, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.data());
-  H5Dclose(ds);
-  H5Sclose(space);
-  H5Fclose(f);
-}
-
 namespace {
-void replace_with_scalar(const std::string& file, const std::string& dataset, hid_t file_type, hid_t mem_type,
-                         const void* value) {
+/// Replaces `dataset` by one of dataspace `space` (closed here) holding `data`.
+void replace_with(const std::string& file, const std::string& dataset, hid_t space, hid_t file_type, hid_t mem_type,
+                  const void* data) {
   remove_object(file, dataset);
   const hid_t f = open_rw(file);
-  const hid_t space = H5Screate(H5S_SCALAR);
   const hid_t ds = H5Dcreate2(f, dataset.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  H5Dwrite(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, value);
+  H5Dwrite(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
   H5Dclose(ds);
   H5Sclose(space);
   H5Fclose(f);
 }
 }  // namespace
 
+void replace_dataset(const std::string& file, const std::string& dataset, const Eigen::MatrixXd& value) {
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rm = value;
+  const hsize_t dims[2] = {hsize_t(value.rows()), hsize_t(value.cols())};
+  replace_with(file, dataset, H5Screate_simple(2, dims, nullptr), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, rm.data());
+}
+
+void replace_integers(const std::string& file, const std::string& dataset, const Eigen::VectorXi& value) {
+  const hsize_t dims[1] = {hsize_t(value.size())};
+  replace_with(file, dataset, H5Screate_simple(1, dims, nullptr), H5T_STD_I32LE, H5T_NATIVE_INT, value.data());
+}
+
 void replace_integer(const std::string& file, const std::string& dataset, long long value) {
-  replace_with_scalar(file, dataset, H5T_STD_I64LE, H5T_NATIVE_LLONG, &value);
+  replace_with(file, dataset, H5Screate(H5S_SCALAR), H5T_STD_I64LE, H5T_NATIVE_LLONG, &value);
 }
 
 void replace_scalar(const std::string& file, const std::string& dataset, double value) {
-  replace_with_scalar(file, dataset, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
+  replace_with(file, dataset, H5Screate(H5S_SCALAR), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
 }
 
 namespace {
