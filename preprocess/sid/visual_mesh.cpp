@@ -15,14 +15,13 @@ namespace {
 constexpr int kQuad[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
 constexpr int kHex[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
 
-/// The point operator at reference coordinates t of element e. Where the mapping degenerates
+/// The point operator at reference coordinates t of element e, whose Jacobian determinant at
+/// its centre is `regular`. Where the mapping degenerates
 /// (a patch side collapsed to a point: the pole of a ball, the centre of a disk; the axis of
 /// an axisymmetric body), strains there are not defined: the stress is taken a thousandth of
 /// the element inside, where its Jacobian is regular.
-PointOperator operator_at(const BodyModel& body, const Element& e, double t[3]) {
+PointOperator operator_at(const BodyModel& body, const Element& e, double regular, double t[3]) {
   PointOperator op = point_operator(body.space, body.dofs, body.elasticity, e, t);
-  double centre[3] = {0.5, 0.5, 0.5};
-  const double regular = std::abs(point_operator(body.space, body.dofs, body.elasticity, e, centre).det_J);
   if (std::abs(op.det_J) > 1e-6 * regular && op.B.allFinite()) return op;
   double inside[3];
   for (int d = 0; d < 3; ++d) inside[d] = t[d] + 1e-3 * (0.5 - t[d]);
@@ -47,6 +46,7 @@ format::VisualMesh visual_mesh(const BodyModel& body, const VisualSpec& spec, co
   std::map<std::array<long long, 4>, int> index_of;
   std::vector<Eigen::VectorXd> position;
   std::vector<Eigen::MatrixXd> displacement_rows, stress_rows;
+  double regular = 0;  // |det J| at the centre of the element being cut
   auto point = [&](const Element& e, const std::array<int, 3>& ijk) {
     double t[3] = {0, 0, 0};
     std::array<long long, 4> key{e.patch, 0, 0, 0};
@@ -58,7 +58,7 @@ format::VisualMesh visual_mesh(const BodyModel& body, const VisualSpec& spec, co
     }
     const auto [it, added] = index_of.emplace(key, int(position.size()));
     if (!added) return it->second;
-    const PointOperator op = operator_at(body, e, t);
+    const PointOperator op = operator_at(body, e, regular, t);
     const Eigen::MatrixXd local = op.gather(Phi_nodal);
     position.push_back(op.x);
     displacement_rows.push_back(op.N * local);
@@ -68,7 +68,9 @@ format::VisualMesh visual_mesh(const BodyModel& body, const VisualSpec& spec, co
 
   std::vector<int> cells;
   const int nk = pd == 3 ? s : 1;
-  for (const Element& e : space.elements)
+  for (const Element& e : space.elements) {
+    double centre[3] = {0.5, 0.5, 0.5};
+    regular = std::abs(point_operator(body.space, body.dofs, body.elasticity, e, centre).det_J);
     for (int k = 0; k < nk; ++k)
       for (int j = 0; j < s; ++j)
         for (int i = 0; i < s; ++i)
@@ -76,6 +78,7 @@ format::VisualMesh visual_mesh(const BodyModel& body, const VisualSpec& spec, co
             const int* corner = pd == 3 ? kHex[c] : kQuad[c];
             cells.push_back(point(e, {i + corner[0], j + corner[1], pd == 3 ? k + corner[2] : 0}));
           }
+  }
 
   const auto n = Eigen::Index(position.size()), nq = Phi_nodal.cols();
   v.position.resize(n, dim);
