@@ -170,7 +170,7 @@ void read_visual(const h5::Reader& r, Sid& sid) {
   sid.visual = std::move(v);
 }
 
-Sid read_sid_unprobed(const std::string& path) {
+Sid read_sid_unprobed(const std::string& path, const ReadOptions& options) {
   const h5::Reader r(path);
   const std::string version_path = header::version.at();
   if (!r.exists(version_path)) r.fail(version_path, "missing: not an isosid SID file");
@@ -189,7 +189,7 @@ Sid read_sid_unprobed(const std::string& path) {
   read_transfer(r, sid);
   read_patches(r, sid);
   read_discretization(r, sid);
-  read_visual(r, sid);
+  if (options.visual) read_visual(r, sid);
   read_provenance(r, sid);
   validate_sid(sid, path);
   return sid;
@@ -197,11 +197,11 @@ Sid read_sid_unprobed(const std::string& path) {
 
 }  // namespace
 
-Sid read_sid(const std::string& path) {
+Sid read_sid(const std::string& path, const ReadOptions& options) {
   // a corrupt file may crash libhdf5 or make it allocate without bound: a child reads it first,
   // and its verdict on bad input is final
-  probe_in_child(path, [&] { read_sid_unprobed(path); });
-  return read_sid_unprobed(path);
+  probe_in_child(path, [&] { read_sid_unprobed(path, options); });
+  return read_sid_unprobed(path, options);
 }
 
 }  // namespace isosid::format

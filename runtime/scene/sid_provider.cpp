@@ -86,6 +86,12 @@ void run_prep(const std::string& model, const std::string& sid, bool quiet, doub
 
 }  // namespace
 
+format::ReadOptions sid_read_options(const Scene& scene) {
+  format::ReadOptions options;
+  options.visual = scene.output.paraview;
+  return options;
+}
+
 std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
   std::vector<format::Sid> sids;
   for (const BodySpec& b : scene.bodies) {
@@ -95,14 +101,14 @@ std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
       const bool stale = !fs::exists(b.sid_file, ec) || fs::last_write_time(b.sid_file, ec) < fs::last_write_time(b.model_file, ec);
       if (stale) run_prep(b.model_file, b.sid_file, quiet);
     }
-    sids.push_back(format::read_sid(b.sid_file));
+    sids.push_back(format::read_sid(b.sid_file, sid_read_options(scene)));
   }
   return sids;
 }
 
-format::Sid rebuild_sid(const BodySpec& body, double contact_radius, bool quiet) {
+format::Sid rebuild_sid(const Scene& scene, const BodySpec& body, double contact_radius, bool quiet) {
   run_prep(body.model_file, body.sid_file, quiet, contact_radius);
-  return format::read_sid(body.sid_file);
+  return format::read_sid(body.sid_file, sid_read_options(scene));
 }
 
 }  // namespace isosid::run

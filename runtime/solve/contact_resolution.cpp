@@ -32,7 +32,7 @@ std::vector<std::string> fit_contact_resolution(const Scene& scene, std::vector<
     const double built_for = sid.discretization->contact_radius;
     // round-off of the estimate (its mass and curvatures come from the SID) must not rebuild
     if (radius->second >= (1 - 1e-6) * built_for && radius->second <= 1.25 * built_for) continue;
-    sid = rebuild_sid(body, radius->second, quiet);
+    sid = rebuild_sid(scene, body, radius->second, quiet);
     rebuilt.push_back(body.name);
   }
   return rebuilt;

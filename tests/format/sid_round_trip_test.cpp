@@ -83,6 +83,14 @@ TEST_CASE("SID write/read round trip is bit-exact", "[format][io]") {
   CHECK(b.visual->S == a.visual->S);
   CHECK(b.provenance.timings_s == a.provenance.timings_s);
   CHECK(b.provenance.model_sha256 == a.provenance.model_sha256);
+
+  // a reader that needs no viewing mesh (a run without ParaView output) skips it, and only it
+  format::ReadOptions without_visual;
+  without_visual.visual = false;
+  const Sid c = format::read_sid(dir.path("body.sid.h5"), without_visual);
+  CHECK_FALSE(c.visual.has_value());
+  CHECK(c.Ke.M0 == b.Ke.M0);
+  CHECK(c.contact_surfaces.size() == b.contact_surfaces.size());
 }
 
 TEST_CASE("lists keep the order in which they were written", "[format][io]") {

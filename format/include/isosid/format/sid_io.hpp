@@ -20,7 +20,13 @@ struct WriteOptions {
 /// write never leaves a half-written file at `path`. Throws InputError on invalid data.
 void write_sid(const Sid& sid, const std::string& path, const WriteOptions& options = {});
 
+struct ReadOptions {
+  /// Read the viewing mesh (/visual) if there is one: the largest part of a SID built with
+  /// [visual], needed only for ParaView output.
+  bool visual = true;
+};
+
 /// Reads and validates a SID. Throws InputError naming the file, dataset and problem.
-Sid read_sid(const std::string& path);
+Sid read_sid(const std::string& path, const ReadOptions& options = {});
 
 }  // namespace isosid::format
