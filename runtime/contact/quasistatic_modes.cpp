@@ -29,19 +29,8 @@ QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBod
     // a gap between positions of that size, far below any elastic displacement
     gap_tolerance_ = std::max(gap_tolerance_, 1e-12 * std::sqrt(b->sid().J.M0.trace() / m));
   }
-  stiffness_.resize(n);
-  Eigen::Index at = 0;
-  for (const Eigen::MatrixXd& K : blocks) stiffness_.segment(at, K.rows()) = K.diagonal(), at += K.rows();
-  if (!diagonal) {
-    dense_stiffness_ = Eigen::MatrixXd::Zero(n, n);
-    at = 0;
-    for (const Eigen::MatrixXd& K : blocks) dense_stiffness_.block(at, at, K.rows(), K.rows()) = K, at += K.rows();
-    // K_h does not change: factored once, it serves every Woodbury solve (a massless boundary
-    // without contact then costs two triangular solves per Newton step, not a factorization)
-    dense_factor_.compute(dense_stiffness_);
-    dense_factor_ok_ = dense_factor_.info() == Eigen::Success;
-  }
-  if (n > 0 && stiffness_.minCoeff() <= 0)
+  jacobian_ = QuasistaticJacobian(blocks, diagonal);
+  if (n > 0 && jacobian_.smallest_diagonal() <= 0)
     throw format::InputError(names_, "quasistatic modes", "the high modes must have positive stiffness (rigid-body modes cannot be quasistatic)");
   for (const SurfaceContact& c : contacts) {
     const bool touches = c.body().n_quasistatic() > 0 || (c.target().body() && c.target().body()->n_quasistatic() > 0);
@@ -60,80 +49,16 @@ void QuasistaticModes::scatter(const Eigen::VectorXd& z) const {
 void QuasistaticModes::residual(const double* y, Eigen::VectorXd& R) const {
   scatter(z_);
   terms_.reset(size());
-  penalty_energy_ = 0;
-  for (const SurfaceContact* c : contacts_) penalty_energy_ += c->add_quasistatic_terms(y, terms_);
-  if (dense_stiffness_.size())
-    R.noalias() = dense_stiffness_ * z_;
-  else
-    R = stiffness_.cwiseProduct(z_);
-  R -= terms_.force;
+  // the model knows the free points that its step could close: within twice the deepest
+  // penetration of the last solution (where new points enter as the contact grows), or within
+  // reach of a change of z by twice its size (where the model releases the deformation)
+  terms_.window = window_;
+  terms_.reach = 2 * z_.norm();
+  for (const SurfaceContact* c : contacts_) c->add_quasistatic_terms(y, terms_);
+  penalty_energy_ = model_.forces(terms_, terms_.gap, force_, friction_force_);
+  jacobian_.multiply(z_, R);
+  R -= force_;
   R -= held_loads_;
-}
-
-namespace {
-/// Solves A x = b in place for the leading r x r block of A (overwritten by its LU factors,
-/// partial pivoting) and the first r entries of b (overwritten by x). Eigen's decompositions
-/// would allocate per call for a size that changes with the active set; this runs in the
-/// right-hand side, which must not.
-void solve_leading_block(Eigen::MatrixXd& A, Eigen::Index r, Eigen::VectorXd& b) {
-  for (Eigen::Index k = 0; k < r; ++k) {
-    Eigen::Index pivot = k;
-    A.col(k).segment(k, r - k).cwiseAbs().maxCoeff(&pivot);
-    pivot += k;
-    if (pivot != k) {
-      A.row(k).head(r).swap(A.row(pivot).head(r));
-      std::swap(b(k), b(pivot));
-    }
-    for (Eigen::Index i = k + 1; i < r; ++i) {
-      const double f = A(i, k) / A(k, k);
-      A.row(i).segment(k + 1, r - k - 1) -= f * A.row(k).segment(k + 1, r - k - 1);
-      b(i) -= f * b(k);
-    }
-  }
-  for (Eigen::Index k = r - 1; k >= 0; --k) b(k) = (b(k) - A.row(k).segment(k + 1, r - k - 1).dot(b.segment(k + 1, r - k - 1))) / A(k, k);
-}
-}  // namespace
-
-void QuasistaticModes::solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
-  const Eigen::Index r = terms_.rank;
-  const auto U = terms_.U.leftCols(r), V = terms_.V.leftCols(r);
-  // the n x n Jacobian itself (forming and factoring it: n^2 r + n^3 / 3) when that is cheaper
-  // than Woodbury's r x r capacitance: with a diagonal K_h (n r^2 + r^3 / 3) once more contact
-  // terms are active than there are modes; with a dense K_h and its kept Cholesky factor
-  // (2 n^2 r + n r^2) once r passes about n / 4
-  const bool dense = dense_stiffness_.size() > 0;
-  if (dense ? (!dense_factor_ok_ || 4 * r > size()) : r > size()) {
-    if (jacobian_.rows() != size()) jacobian_.resize(size(), size()), jacobian_lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(size());
-    jacobian_.noalias() = U * V.transpose();
-    if (dense_stiffness_.size()) jacobian_ += dense_stiffness_;
-    else jacobian_.diagonal() += stiffness_;
-    jacobian_lu_.compute(jacobian_);
-    x = jacobian_lu_.solve(b);
-    return;
-  }
-  // Woodbury: (K + U V^T)^-1 b = K^-1 b - K^-1 U (I + V^T K^-1 U)^-1 V^T K^-1 b, in buffers
-  // sized to the terms' capacity (no allocation once the largest active set has been seen)
-  const Eigen::Index capacity = terms_.U.cols();
-  if (scaled_U_.cols() != capacity) scaled_U_.resize(size(), capacity), small_.resize(capacity, capacity), coefficients_.resize(capacity);
-  if (dense) {
-    x = b;
-    dense_factor_.solveInPlace(x);
-  } else {
-    x = b.cwiseQuotient(stiffness_);
-  }
-  if (r == 0) return;
-  auto scaled_U = scaled_U_.leftCols(r);
-  if (dense) {
-    scaled_U = U;
-    dense_factor_.solveInPlace(scaled_U);
-  } else {
-    scaled_U = U.array().colwise() / stiffness_.array();
-  }
-  small_.topLeftCorner(r, r).setIdentity();
-  small_.topLeftCorner(r, r).noalias() += V.transpose() * scaled_U_.leftCols(r);
-  coefficients_.head(r).noalias() = V.transpose() * x;
-  solve_leading_block(small_, r, coefficients_);
-  x.noalias() -= scaled_U_.leftCols(r) * coefficients_.head(r);
 }
 
 double QuasistaticModes::potential_change(double penalty_before) const {
@@ -141,11 +66,9 @@ double QuasistaticModes::potential_change(double penalty_before) const {
   // difference d = z - z_old: Pi itself can be 1e6 times larger than its change (the
   // centrifugal deformation of a spinning body), and subtracting two values of it would
   // leave round-off where the line search needs the change
-  double change = penalty_energy_ - penalty_before;
-  if (dense_stiffness_.size()) return change + (z_ - z_old_).dot(0.5 * dense_stiffness_ * (z_ + z_old_) - held_loads_);
-  for (Eigen::Index i = 0; i < z_.size(); ++i)
-    change += (z_(i) - z_old_(i)) * (0.5 * stiffness_(i) * (z_(i) + z_old_(i)) - held_loads_(i));
-  return change;
+  step_ = z_ - z_old_;
+  z_sum_ = z_ + z_old_;
+  return penalty_energy_ - penalty_before + 0.5 * jacobian_.product(step_, z_sum_) - step_.dot(held_loads_);
 }
 
 void QuasistaticModes::update_held_loads(const double* y) const {
@@ -177,48 +100,59 @@ int QuasistaticModes::solve(const double* y) const {
 
 int QuasistaticModes::newton(const double* y) const {
   // Without friction the equilibrium minimizes the convex energy
-  // Pi(z) = 1/2 z^T K z - z . loads + sum 1/2 c_p g^2 w, whose gradient is the residual R: Newton steps
-  // with an Armijo line search on Pi converge across active-set changes, where a line search
-  // on |R| stalls. With friction (not a potential) the search falls back to |R|.
+  // Pi(z) = 1/2 z^T K z - z . loads + sum 1/2 c_p g^2 w, whose gradient is the residual R: each
+  // step solves the contact problem with linearized gaps (exact for a plane) and an Armijo
+  // search on Pi guards it where the gaps curve. With friction (not a potential) the search
+  // falls back to |R|.
   residual(y, R_);
   for (int iteration = 1; iteration <= 60; ++iteration) {
-    solve_jacobian(R_, step_);
-    z_old_ = z_;
-    const double penalty_before = penalty_energy_, residual_before = R_.norm(), slope = -R_.dot(step_);
-    if (step_.norm() <= 1e-11 * z_.norm() + floor_) {
-      // converged: an update below the resolution of the gaps, whose energy change is
-      // round-off that the line search would halve against thirty times (scene A: a third of
-      // all residual evaluations)
-      z_ -= step_;
-      residual(y, R_);
+    model_.solve(jacobian_, terms_, z_, held_loads_, conservative_, move_);
+    // converged when the update is at round-off relative to the solution (an absolute
+    // tolerance would feed solver noise into the right-hand side, and the step-size control
+    // would chase it; the residual itself stalls at the solve's round-off, K's condition times eps)
+    const double resolution = 1e-11 * z_.norm() + floor_;
+    if (move_.norm() <= resolution) {
+      // an update below the resolution of the gaps: the recorded points stay those of z_,
+      // and their energy change is round-off that a line search would halve against
+      z_ += move_;
       scatter(z_);
+      update_window();
       return iteration;
     }
+    z_old_ = z_;
+    const double penalty_before = penalty_energy_, residual_before = R_.norm(), slope = R_.dot(move_);
     double alpha = 1.0;
     for (int halving = 0; halving < 30; ++halving) {
-      z_ = z_old_ - alpha * step_;
+      z_ = z_old_ + alpha * move_;
       residual(y, R_);
       const bool accept = conservative_ ? potential_change(penalty_before) <= 1e-4 * alpha * slope : R_.norm() <= residual_before;
       if (accept || halving == 29) break;
       alpha *= 0.5;
     }
-    // R_ and the Jacobian terms are those of the accepted z_ (the last trial)
-    // converged when the update or the residual is at round-off relative to the solution
-    // (an absolute tolerance would feed solver noise into the right-hand side, and the
-    // step-size control would chase it)
-    const double force = dense_stiffness_.size() ? (dense_stiffness_ * z_).norm() : stiffness_.cwiseProduct(z_).norm();
-    if (alpha * step_.norm() <= 1e-11 * z_.norm() + floor_ || R_.norm() <= 1e-10 * force || (force == 0 && R_.norm() == 0)) {
+    // R_ and the recorded points are those of the accepted z_ (the last trial). A full step
+    // on a solved model, whose forces there are the real ones, converged: the next update,
+    // J^-1 (f_model - f), is at most |f_model - f| / min K (J is K plus a positive
+    // semidefinite part without friction) on top of the model's round-off
+    const bool model_held = conservative_ && alpha == 1 && model_.solved() &&
+                            (model_.force() - force_).norm() <= jacobian_.smallest_eigenvalue() * resolution;
+    if (model_held || alpha * move_.norm() <= resolution) {
       scatter(z_);
+      update_window();
       return iteration;
     }
   }
   throw QuasistaticDivergence("the quasistatic modes of " + names_ +
-                                 " did not converge (Newton, 60 iterations): penalty too stiff for the contact resolution?");
+                              " did not converge (Newton, 60 iterations): penalty too stiff for the contact resolution?");
+}
+
+void QuasistaticModes::update_window() const {
+  window_ = 0;
+  for (Eigen::Index k = 0; k < terms_.count; ++k) window_ = std::max(window_, 2 * (terms_.multiplier(k) / terms_.penalty(k) - terms_.gap(k)));
 }
 
 double QuasistaticModes::friction_power(const double* y, const double* ydot, Eigen::Index n) const {
   if (size() == 0 || conservative_) return 0;
-  friction_ = terms_.friction;  // of the converged z_ at y (solve's last residual)
+  friction_ = friction_force_;  // of the converged z_ at y (solve's last residual)
   if (friction_.isZero(0.0)) return 0;
   // dR/dy ydot by a forward difference at fixed z, with the step of a Jacobian-vector product
   // (sqrt(eps) relative to the state); its error only blurs the energy bookkeeping, never the motion
@@ -231,7 +165,8 @@ double QuasistaticModes::friction_power(const double* y, const double* ydot, Eig
   update_held_loads(shifted_y_.data());
   residual(shifted_y_.data(), R_);
   // the Jacobian of the shifted state: it differs from that at y by O(h)
-  solve_jacobian((R0 - R_) / h, z_rate_);
+  const Eigen::Index r = model_.jacobian_terms(terms_, terms_.gap);
+  jacobian_.solve(model_.U(), model_.V(), r, (R0 - R_) / h, z_rate_);
   update_held_loads(y);
   residual(y, R_);  // leaves R_, the terms and the penalty energy those of y again
   return -friction_.dot(z_rate_);

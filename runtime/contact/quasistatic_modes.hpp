@@ -1,12 +1,15 @@
 // Quasistatic high-frequency modes (seed 001): instead of integrating the stiff high modes,
 // solve their static equilibrium K_h z = f(z) under the contact forces (and the rotation
-// loads of spinning bodies) at every evaluation,
-// by Newton's method with the exact contact Jacobian. All bodies are solved together, so a
-// contact between two flexible bodies couples their modes. The Jacobian K_h + U V^T (modal
-// stiffness plus one rank-one term per active point) is inverted with the Woodbury identity:
-// the cost grows with the number of active points, not with the number of modes.
+// loads of spinning bodies) at every evaluation, by Newton's method with the exact contact
+// Jacobian. All bodies are solved together, so a contact between two flexible bodies couples
+// their modes. Each Newton step solves the contact problem with the points' gaps linearized
+// where it stands (ContactModel, active set included), so a step costs one pass over the
+// contact points however many of them enter or leave contact; the Jacobian K_h + U V^T is
+// solved by Woodbury or directly, whichever is cheaper (QuasistaticJacobian).
 #pragma once
 #include "body/floating_body.hpp"
+#include "contact/contact_model.hpp"
+#include "contact/quasistatic_jacobian.hpp"
 #include "contact/quasistatic_terms.hpp"
 #include "contact/surface_contact.hpp"
 #include "isosid/format/error.hpp"
@@ -32,7 +35,7 @@ public:
   QuasistaticModes(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const std::vector<SurfaceContact>& contacts);
 
   /// Number of stacked quasistatic modes (0: nothing to solve).
-  Eigen::Index size() const { return stiffness_.size(); }
+  Eigen::Index size() const { return jacobian_.size(); }
   /// Updates the bodies' quasistatic modes for state y (warm-started from their last values);
   /// returns the Newton iterations. Throws ComputationError (naming the bodies) on failure.
   int solve(const double* y) const;
@@ -47,32 +50,29 @@ private:
   /// The loads on z at state y that do not depend on z (held while Newton iterates): centrifugal
   /// and Coriolis loads, and the stiffness coupling to the integrated modes.
   void update_held_loads(const double* y) const;
-  /// Residual K z - f(z) at the current z_, and the rank-one terms of its Jacobian.
+  /// Records the contact points' linearization at the current z_ and the residual
+  /// K z - f(z) - held loads into R.
   void residual(const double* y, Eigen::VectorXd& R) const;
   /// Newton's method for z at y with the contacts' current multipliers; returns its iterations.
   int newton(const double* y) const;
-  /// Solves (K + U V^T) x = b.
-  void solve_jacobian(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  /// The free-point window of the next solve's recording from the solution just found.
+  void update_window() const;
   /// Change of the potential energy from z_old_ to z_ (frictionless contact: its gradient is
   /// the residual, so it is Newton's merit); penalty_before: the contacts' energy at z_old_.
   double potential_change(double penalty_before) const;
 
   std::vector<FloatingBody*> bodies_;            ///< bodies with quasistatic modes
   std::vector<const SurfaceContact*> contacts_;  ///< contacts touching one of them
-  Eigen::VectorXd stiffness_;                    ///< diagonal of K_h (the SID's normal form)
-  Eigen::MatrixXd dense_stiffness_;              ///< K_h if it is not diagonal (massless boundaries, SIDs from elsewhere)
-  Eigen::LLT<Eigen::MatrixXd> dense_factor_;     ///< its Cholesky factor
-  bool dense_factor_ok_ = false;                 ///< K_h is positive definite (else the Jacobian is factored each time)
+  QuasistaticJacobian jacobian_;
+  ContactModel model_;
   bool conservative_ = true;
   bool exact_ = false;                           ///< some contact is exact: Uzawa passes around Newton
   double floor_ = 0;                             ///< unresolvable displacement, modal units
   double gap_tolerance_ = 0;                     ///< m: exact contact's gaps close to this
   std::string names_;
-  mutable Eigen::VectorXd z_, R_, step_, z_old_, coefficients_;
-  mutable Eigen::MatrixXd scaled_U_, small_;
-  mutable Eigen::MatrixXd jacobian_;                         ///< K + U V^T, when K is dense or the rank exceeds the size
-  mutable Eigen::PartialPivLU<Eigen::MatrixXd> jacobian_lu_;
+  mutable Eigen::VectorXd z_, R_, move_, step_, z_old_, z_sum_, force_, friction_force_;
   mutable QuasistaticTerms terms_;
+  mutable double window_ = 0;                    ///< QuasistaticTerms::window of the next solve, m
   mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual
   mutable Eigen::VectorXd held_loads_;           ///< update_held_loads()
   mutable Eigen::VectorXd shifted_y_, friction_, z_rate_;  ///< friction_power's buffers

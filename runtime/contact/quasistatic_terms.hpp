@@ -1,36 +1,57 @@
-// What the contacts contribute to the quasistatic sub-problem (seed 001): the generalized
-// contact forces f(z) on the quasistatic modes z of all bodies (stacked; each body's block
-// starts at its quasistatic_offset()) and the Jacobian -df/dz as a sum of rank-one terms
-// u v^T, one per active contact point (v = d gap/dz, u = -df/d gap). The low rank is what
-// makes the Newton solve cheap even with hundreds of quasistatic modes.
+// What the contacts contribute to the quasistatic sub-problem (seed 001): every candidate
+// contact point of the quasistatic modes z of all bodies (stacked; each body's block starts at
+// its quasistatic_offset()) with its gap linearized in z, g(z) ~ g + v^T (z - z0). A point
+// carries the normal pressure p(g) = max(0, lambda - c_p g) over its weight w (lambda = 0:
+// penalty contact), and its generalized force on z is p w (v + t), t the friction direction
+// per unit normal force. The Jacobian -df/dz of the pressed points is a sum of rank-one terms
+// c_p w (v + t) v^T, whose low rank keeps the Newton solve cheap with hundreds of modes; the
+// recorded free points let the solve find the active set on the linear model (contact_model).
 #pragma once
 #include <Eigen/Dense>
+
+#include <cmath>
 
 namespace isosid::run {
 
 struct QuasistaticTerms {
-  Eigen::VectorXd force;
-  Eigen::VectorXd friction;  ///< the friction part of `force` (its work on z is dissipated)
-  Eigen::MatrixXd U, V;    ///< n x capacity; the first `rank` columns are in use
-  Eigen::Index rank = 0;
+  Eigen::MatrixXd V;           ///< n x capacity: d gap / dz of each recorded point
+  Eigen::MatrixXd T;           ///< n x capacity: friction direction per unit normal force (if friction)
+  Eigen::VectorXd gap;         ///< m, at the z of the recording
+  Eigen::VectorXd multiplier;  ///< Pa: exact contact's lambda (0: penalty)
+  Eigen::VectorXd penalty;     ///< c_p, N/m^3
+  Eigen::VectorXd weight;      ///< m^2
+  Eigen::Index count = 0;      ///< recorded points
+  bool friction = false;       ///< some point has a friction direction (T in use)
+  /// Free points are recorded too where their effective gap g - lambda / c_p is below
+  /// window + reach |Psi_h|_F, the most a change of z by `reach` (modal units) can close: the
+  /// active set of the linear model can only grow by points it knows. Points beyond cost the
+  /// outer Newton an iteration when they close after all.
+  double window = INFINITY;  ///< m
+  double reach = 0;          ///< modal units
 
   void reset(Eigen::Index n) {
-    force.setZero(n);
-    friction.setZero(n);
-    if (U.rows() != n) U.resize(n, 0), V.resize(n, 0);
-    rank = 0;
+    if (V.rows() != n) V.resize(n, 0), T.resize(n, 0);
+    count = 0;
+    friction = false;
   }
-  /// Appends a zeroed term; fill U.col(k) and V.col(k) for the returned k.
-  Eigen::Index add_term() {
-    if (rank == U.cols()) {  // grows geometrically, so steady state is allocation-free
-      const Eigen::Index capacity = std::max<Eigen::Index>(16, 2 * U.cols());
-      U.conservativeResize(Eigen::NoChange, capacity);
+  /// Appends a point with zeroed v and t; fill V.col(k) (and T.col(k)) for the returned k.
+  Eigen::Index add_point(double gap_m, double lambda, double c_p, double w) {
+    if (count == V.cols()) {  // grows geometrically, so steady state is allocation-free
+      const Eigen::Index capacity = std::max<Eigen::Index>(16, 2 * V.cols());
       V.conservativeResize(Eigen::NoChange, capacity);
+      T.conservativeResize(Eigen::NoChange, capacity);
+      gap.conservativeResize(capacity);
+      multiplier.conservativeResize(capacity);
+      penalty.conservativeResize(capacity);
+      weight.conservativeResize(capacity);
     }
-    U.col(rank).setZero();
-    V.col(rank).setZero();
-    return rank++;
+    V.col(count).setZero();
+    T.col(count).setZero();
+    gap(count) = gap_m, multiplier(count) = lambda, penalty(count) = c_p, weight(count) = w;
+    return count++;
   }
+  /// Pressure of point k at gap g, Pa.
+  double pressure(Eigen::Index k, double g) const { return std::max(0.0, multiplier(k) - penalty(k) * g); }
 };
 
 }  // namespace isosid::run

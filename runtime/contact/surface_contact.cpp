@@ -24,6 +24,9 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
     penalty_source_ = "derived: 1000 E*/h";
   }
   edge_ = edge_points(surface_, body.sid().analysis);
+  quasistatic_rows_ = surface_.Psi.rightCols(body.n_quasistatic()).transpose();
+  quasistatic_row_norms_.resize(surface_.points());
+  for (Eigen::Index g = 0; g < surface_.points(); ++g) quasistatic_row_norms_(g) = quasistatic_rows_.middleCols(g * dim_, dim_).norm();
   hints_.assign(std::size_t(surface_.points()), Eigen::Vector2d::Constant(NAN));
   multiplier_.assign(std::size_t(surface_.points()), 0.0);
   updated_ = multiplier_;
@@ -121,46 +124,51 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
   return s;
 }
 
-double SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const {
+void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const {
   const FloatingBody* master = target_.body();
   const bool slave_qs = body_.n_quasistatic() > 0, master_qs = master && master->n_quasistatic() > 0;
-  if (!slave_qs && !master_qs) return 0;
-  double energy = 0;
+  if (!slave_qs && !master_qs) return;
   const Eigen::Matrix3d A_master = master ? master->orientation(y).toRotationMatrix() : Eigen::Matrix3d::Identity();
-  // one side's block: its generalized force from the world force F, and its parts of
-  // u = -df/dgap and v = dgap/dz; sign -1 for the target (reaction, gap decreasing with it)
-  auto add_side = [&](const FloatingBody& b, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Matrix3d& A, double sign,
-                      const Eigen::Vector3d& F, const Eigen::Vector3d& Ft, const Eigen::Vector3d& dF_dgap, const Eigen::Vector3d& n,
-                      Eigen::Index k) {
-    const Eigen::Index nh = b.n_quasistatic(), at = b.quasistatic_offset();
+  // the target's block of the gap gradient v = dgap/dz and of the friction direction t: -Psi^T
+  // A^T (its displacement closes the gap, and it takes the reaction)
+  auto add_target_side = [&](const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Vector3d& n, const Eigen::Vector3d& direction,
+                             Eigen::Index k) {
+    const Eigen::Index nh = master->n_quasistatic(), at = master->quasistatic_offset();
     const auto Psi_h = Psi.rightCols(nh);
-    add_elastic_force(Psi_h, sign * (A.transpose() * F), terms.force.segment(at, nh));
-    if (spec_.friction > 0) add_elastic_force(Psi_h, sign * (A.transpose() * Ft), terms.friction.segment(at, nh));
-    add_elastic_force(Psi_h, -sign * (A.transpose() * dF_dgap), terms.U.col(k).segment(at, nh));
-    add_elastic_force(Psi_h, sign * (A.transpose() * n), terms.V.col(k).segment(at, nh));
+    add_elastic_force(Psi_h, -(A_master.transpose() * n), terms.V.col(k).segment(at, nh));
+    if (spec_.friction > 0) add_elastic_force(Psi_h, -(A_master.transpose() * direction), terms.T.col(k).segment(at, nh));
   };
+  const Eigen::Index nh = body_.n_quasistatic(), at = body_.quasistatic_offset();
   for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
-    const double p = pressure(g, t.gap);
-    if (p <= 0) return;
-    const double w = surface_.weight(g), fn = p * w;
-    // Newton's merit: its derivative along the gap is -p w (penalty: 1/2 c_p g^2 w)
-    energy += 0.5 * p * p * w / spec_.penalty;
-    Eigen::Vector3d F = fn * t.normal, Ft = Eigen::Vector3d::Zero(), dF_dgap = -spec_.penalty * w * t.normal;
+    const double lambda = spec_.exact ? multiplier_[std::size_t(g)] : 0.0;
+    if (pressure(g, t.gap) <= 0) {
+      // free: recorded if a change of z by terms.reach could close its gap (|Psi_h u| <=
+      // |Psi_h|_F |u| on either side), or it is within the window
+      double reach = slave_qs ? quasistatic_row_norms_(g) : 0.0;
+      if (master_qs) reach += t.Psi.rightCols(master->n_quasistatic()).norm();
+      if (t.gap - lambda / spec_.penalty >= terms.window + terms.reach * reach) return;
+    }
+    const Eigen::Index k = terms.add_point(t.gap, lambda, spec_.penalty, surface_.weight(g));
+    Eigen::Vector3d direction = Eigen::Vector3d::Zero();
     if (spec_.friction > 0) {
       // Along the point's rigid-body sliding, held during the Newton iterations. The quasistatic
       // modes carry no velocity, and a direction set by the dynamic modes' vibration alone pumps
       // energy into them where the bodies do not slide (a disk dropped without spin rebounded
       // 0.6-2.9 % faster than it came); where they slide, the two directions agree.
-      const Eigen::Vector3d dir = friction_per_normal_force(sliding_velocity(P, Psi.leftCols(0), y, t));
-      Ft = fn * dir;
-      F += Ft;
-      dF_dgap += -spec_.penalty * w * dir;
+      direction = friction_per_normal_force(sliding_velocity(P, Psi.leftCols(0), y, t));
+      terms.friction = true;
     }
-    const Eigen::Index k = terms.add_term();
-    if (slave_qs) add_side(body_, Psi, A, 1.0, F, Ft, dF_dgap, t.normal, k);
-    if (master_qs) add_side(*master, t.Psi, A_master, -1.0, F, Ft, dF_dgap, t.normal, k);
+    if (slave_qs) {
+      // the slave's block from its transposed quasistatic shape rows: contiguous per point
+      const Eigen::Vector3d n_body = A.transpose() * t.normal, direction_body = A.transpose() * direction;
+      for (int a = 0; a < dim_; ++a) {
+        const auto column = quasistatic_rows_.col(g * dim_ + a);
+        terms.V.col(k).segment(at, nh).noalias() += n_body(a) * column;
+        if (spec_.friction > 0) terms.T.col(k).segment(at, nh).noalias() += direction_body(a) * column;
+      }
+    }
+    if (master_qs) add_target_side(t.Psi, t.normal, direction, k);
   });
-  return energy;
 }
 
 double SurfaceContact::update_multipliers(const double* y) const {

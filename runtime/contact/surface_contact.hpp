@@ -46,10 +46,10 @@ public:
   /// Adds the contact forces to the slave's generalized forces and their reactions to the
   /// target body's (`target_force`, unused for fixed targets); returns what was found.
   ContactState apply(const double* y, GeneralizedForce& slave_force, GeneralizedForce* target_force) const;
-  /// Adds the generalized contact forces on the quasistatic modes of the slave and target
-  /// bodies to `terms`, with one rank-one Jacobian term per active point; returns the
-  /// penalty energy (0 if neither body has quasistatic modes).
-  double add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const;
+  /// Records every point of this contact that presses on the quasistatic modes of the slave
+  /// or target body at y, or is free by less than what terms.window and terms.reach allow,
+  /// with its gap linearized in those modes (nothing if neither body has quasistatic modes).
+  void add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const;
   /// The points that carry load at y, as apply() loads them.
   std::vector<PointLoad> point_loads(const double* y) const;
   bool frictionless() const { return spec_.friction == 0; }
@@ -113,6 +113,8 @@ private:
   mutable std::vector<double> multiplier_, updated_;  ///< exact contact: lambda per point, Pa
   mutable TargetPoint point_;
   mutable Eigen::VectorXd displacement_;         ///< Psi q of all points
+  Eigen::MatrixXd quasistatic_rows_;             ///< the quasistatic columns of Psi, transposed (n_h x dim points)
+  Eigen::VectorXd quasistatic_row_norms_;        ///< per point: the Frobenius norm of its quasistatic rows
 };
 
 }  // namespace isosid::run

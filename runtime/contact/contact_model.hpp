@@ -1,0 +1,54 @@
+// The quasistatic contact problem on its linear model: every recorded contact point's gap
+// linear in the quasistatic modes z (QuasistaticTerms), so the contact forces are piecewise
+// linear in z and, without friction, the energy
+//   Pi(z0 + d) = 1/2 z^T K z - z . loads + sum 1/2 w p(g + v^T d)^2 / c_p
+// piecewise quadratic and strictly convex. Semismooth Newton on it (the active set of the
+// model's gaps, an Armijo search on the model's energy whose terms cost O(points) per trial)
+// ends where the active set repeats, at the model's exact solution. The outer Newton of
+// QuasistaticModes then needs one pass over the real contact points per step instead of one
+// per line-search trial: against a plane the model is exact and one step solves the problem.
+#pragma once
+#include "contact/quasistatic_jacobian.hpp"
+#include "contact/quasistatic_terms.hpp"
+
+#include <vector>
+
+namespace isosid::run {
+
+class ContactModel {
+public:
+  /// Semismooth Newton iterations before the model solve returns its best step.
+  static constexpr int kMaxIterations = 50;
+
+  /// The generalized contact force of the recorded points at gaps `gaps` (its friction part
+  /// separately; sized n); returns the merit energy sum 1/2 w p^2 / c_p.
+  double forces(const QuasistaticTerms& terms, const Eigen::VectorXd& gaps, Eigen::VectorXd& force, Eigen::VectorXd& friction) const;
+  /// Collects the Jacobian terms of the points pressed at `gaps`: U = c_p w (v + t), V = v in
+  /// the first r columns of U() and V(); returns r.
+  Eigen::Index jacobian_terms(const QuasistaticTerms& terms, const Eigen::VectorXd& gaps) const;
+  const Eigen::MatrixXd& U() const { return U_; }
+  const Eigen::MatrixXd& V() const { return V_; }
+
+  /// The step d that solves the linear model from z0 (recorded there): K (z0 + d) - loads =
+  /// f(g + V^T d). `conservative`: no friction, so the search minimizes the energy above; with
+  /// friction it reduces the model residual's norm. Returns the iterations.
+  int solve(const QuasistaticJacobian& K, const QuasistaticTerms& terms, const Eigen::VectorXd& z0, const Eigen::VectorXd& loads,
+            bool conservative, Eigen::VectorXd& d) const;
+  /// The last solve reached the model's solution (to round-off) within kMaxIterations.
+  bool solved() const { return solved_; }
+  /// The generalized contact force of the model at the last solve's step.
+  const Eigen::VectorXd& force() const { return force_; }
+
+private:
+  /// Residual K z - loads - f at gaps_ into R_; returns the merit energy.
+  double model_residual(const QuasistaticJacobian& K, const QuasistaticTerms& terms, const Eigen::VectorXd& z, const Eigen::VectorXd& loads) const;
+  /// Merit energy of the recorded points at gaps_ - alpha rates_.
+  double energy_along(const QuasistaticTerms& terms, double alpha) const;
+
+  mutable Eigen::MatrixXd U_, V_;
+  mutable Eigen::VectorXd gaps_, rates_, z_, R_, step_, force_, friction_, Kz_;
+  mutable std::vector<char> pressed_;
+  mutable bool solved_ = false;
+};
+
+}  // namespace isosid::run

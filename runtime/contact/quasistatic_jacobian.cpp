@@ -1,0 +1,156 @@
+// Stiffness of the quasistatic modes and its Newton Jacobian; see quasistatic_jacobian.hpp.
+#include "contact/quasistatic_jacobian.hpp"
+
+#include <algorithm>
+
+namespace isosid::run {
+
+QuasistaticJacobian::QuasistaticJacobian(const std::vector<Eigen::MatrixXd>& blocks, bool diagonal) {
+  Eigen::Index n = 0;
+  for (const Eigen::MatrixXd& K : blocks) n += K.rows();
+  stiffness_.resize(n);
+  Eigen::Index at = 0;
+  for (const Eigen::MatrixXd& K : blocks) stiffness_.segment(at, K.rows()) = K.diagonal(), at += K.rows();
+  if (diagonal) {
+    smallest_eigenvalue_ = n ? std::max(0.0, stiffness_.minCoeff()) : 0.0;
+    return;
+  }
+  dense_stiffness_ = Eigen::MatrixXd::Zero(n, n);
+  at = 0;
+  for (const Eigen::MatrixXd& K : blocks) dense_stiffness_.block(at, at, K.rows(), K.rows()) = K, at += K.rows();
+  // K_h does not change: factored once, it serves every Woodbury solve (a massless boundary
+  // without contact then costs two triangular solves per Newton step, not a factorization)
+  dense_factor_.compute(dense_stiffness_);
+  dense_factor_ok_ = dense_factor_.info() == Eigen::Success;
+  if (n) smallest_eigenvalue_ = std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense_stiffness_, Eigen::EigenvaluesOnly).eigenvalues()(0));
+}
+
+void QuasistaticJacobian::multiply(const Eigen::VectorXd& z, Eigen::VectorXd& out) const {
+  if (dense_stiffness_.size())
+    out.noalias() = dense_stiffness_ * z;
+  else
+    out = stiffness_.cwiseProduct(z);
+}
+
+double QuasistaticJacobian::product(const Eigen::VectorXd& z, const Eigen::VectorXd& w) const {
+  if (dense_stiffness_.size()) return z.dot(dense_stiffness_ * w);
+  double sum = 0;
+  for (Eigen::Index i = 0; i < z.size(); ++i) sum += z(i) * stiffness_(i) * w(i);
+  return sum;
+}
+
+namespace {
+/// LU factors with partial pivoting of the leading r x r block of A, in place (row k was
+/// swapped with pivots[k]). Eigen's decompositions would allocate per call for a size that
+/// changes with the active set; this runs in the right-hand side, which must not.
+void factor_leading_block(Eigen::MatrixXd& A, Eigen::Index r, std::vector<Eigen::Index>& pivots) {
+  for (Eigen::Index k = 0; k < r; ++k) {
+    Eigen::Index pivot = k;
+    A.col(k).segment(k, r - k).cwiseAbs().maxCoeff(&pivot);
+    pivot += k;
+    pivots[std::size_t(k)] = pivot;
+    if (pivot != k) A.row(k).head(r).swap(A.row(pivot).head(r));
+    A.col(k).segment(k + 1, r - k - 1) /= A(k, k);
+    for (Eigen::Index j = k + 1; j < r; ++j) A.col(j).segment(k + 1, r - k - 1) -= A(k, j) * A.col(k).segment(k + 1, r - k - 1);
+  }
+}
+/// Solves with factor_leading_block's factors: the first r entries of b become x.
+void solve_leading_block(const Eigen::MatrixXd& LU, Eigen::Index r, const std::vector<Eigen::Index>& pivots, Eigen::VectorXd& b) {
+  for (Eigen::Index k = 0; k < r; ++k)
+    if (pivots[std::size_t(k)] != k) std::swap(b(k), b(pivots[std::size_t(k)]));
+  for (Eigen::Index k = 0; k < r; ++k) b.segment(k + 1, r - k - 1) -= b(k) * LU.col(k).segment(k + 1, r - k - 1);
+  for (Eigen::Index k = r - 1; k >= 0; --k) {
+    b(k) /= LU(k, k);
+    b.head(k) -= b(k) * LU.col(k).head(k);
+  }
+}
+}  // namespace
+
+namespace {
+/// The first r columns of A and B are equal (stops at the first difference).
+bool same_columns(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, Eigen::Index r) {
+  return A.rows() == B.rows() && std::equal(A.data(), A.data() + A.rows() * r, B.data());
+}
+}  // namespace
+
+const QuasistaticJacobian::Factorization& QuasistaticJacobian::factorization(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V,
+                                                                             Eigen::Index r) const {
+  ++uses_;
+  Factorization* oldest = &kept_.front();
+  for (Factorization& f : kept_) {
+    if (f.rank == r && same_columns(f.V, V, r) && same_columns(f.U, U, r)) {
+      f.last_use = uses_;
+      return f;
+    }
+    if (f.last_use < oldest->last_use) oldest = &f;
+  }
+  factor(U, V, r, *oldest);
+  oldest->last_use = uses_;
+  return *oldest;
+}
+
+void QuasistaticJacobian::solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  if (dense_stiffness_.size()) {
+    x = b;
+    dense_factor_.solveInPlace(x);
+  } else {
+    x = b.cwiseQuotient(stiffness_);
+  }
+}
+
+void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::MatrixXd& V_all, Eigen::Index r, Factorization& f) const {
+  const auto U = U_all.leftCols(r), V = V_all.leftCols(r);
+  // buffers sized to the columns' capacity: no allocation once the largest active set has been seen
+  const Eigen::Index capacity = U_all.cols();
+  if (f.U.cols() < capacity || f.U.rows() != size()) {
+    f.U.resize(size(), capacity), f.V.resize(size(), capacity);
+    f.scaled_U.resize(size(), capacity), f.capacitance.resize(capacity, capacity);
+    f.pivots.resize(std::size_t(capacity));
+  }
+  if (coefficients_.size() < capacity) coefficients_.resize(capacity);
+  f.U.leftCols(r) = U;
+  f.V.leftCols(r) = V;
+  f.rank = r;
+  // the n x n Jacobian itself (forming and factoring it: n^2 r + n^3 / 3) when that is cheaper
+  // than Woodbury's r x r capacitance: with a diagonal K_h (n r^2 + r^3 / 3) once more contact
+  // terms are active than there are modes; with a dense K_h and its kept Cholesky factor
+  // (2 n^2 r + n r^2) once r passes about n / 4
+  const bool dense = dense_stiffness_.size() > 0;
+  f.direct = dense ? (!dense_factor_ok_ || 4 * r > size()) : r > size();
+  if (f.direct) {
+    if (f.jacobian.rows() != size()) f.jacobian.resize(size(), size()), f.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(size());
+    f.jacobian.noalias() = U * V.transpose();
+    if (dense) f.jacobian += dense_stiffness_;
+    else f.jacobian.diagonal() += stiffness_;
+    f.lu.compute(f.jacobian);
+    return;
+  }
+  // Woodbury: (K + U V^T)^-1 b = K^-1 b - K^-1 U (I + V^T K^-1 U)^-1 V^T K^-1 b
+  if (r == 0) return;
+  auto scaled_U = f.scaled_U.leftCols(r);
+  if (dense) {
+    scaled_U = U;
+    dense_factor_.solveInPlace(scaled_U);
+  } else {
+    scaled_U = U.array().colwise() / stiffness_.array();
+  }
+  f.capacitance.topLeftCorner(r, r).setIdentity();
+  f.capacitance.topLeftCorner(r, r).noalias() += V.transpose() * f.scaled_U.leftCols(r);
+  factor_leading_block(f.capacitance, r, f.pivots);
+}
+
+void QuasistaticJacobian::solve(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd& b,
+                                Eigen::VectorXd& x) const {
+  const Factorization& f = factorization(U, V, r);
+  if (f.direct) {
+    x = f.lu.solve(b);
+    return;
+  }
+  solve_stiffness(b, x);
+  if (r == 0) return;
+  coefficients_.head(r).noalias() = f.V.leftCols(r).transpose() * x;
+  solve_leading_block(f.capacitance, r, f.pivots, coefficients_);
+  x.noalias() -= f.scaled_U.leftCols(r) * coefficients_.head(r);
+}
+
+}  // namespace isosid::run

@@ -1,0 +1,70 @@
+// The stiffness of the quasistatic modes, K_h (diagonal in the SID's normal form, dense for
+// massless boundaries and SIDs from elsewhere), and solves with the Newton Jacobian K_h + U V^T
+// that the active contact points make of it (one rank-one term u v^T per point). The solve
+// picks by size: Woodbury's r x r capacitance for few active points, the n x n Jacobian itself
+// once the points outnumber what Woodbury saves. The last few factorizations are kept for
+// solves with the same terms: between Newton iterations, and between evaluations of a body
+// that does not rotate against a plane, the active points' terms repeat exactly (the stages
+// of a step alternate between a handful of active sets: scene A finds 80 % of its solves
+// among the last eight).
+#pragma once
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+namespace isosid::run {
+
+class QuasistaticJacobian {
+public:
+  QuasistaticJacobian() = default;
+  /// K_h as the diagonal blocks of the bodies' quasistatic modes; `diagonal`: every block is.
+  QuasistaticJacobian(const std::vector<Eigen::MatrixXd>& blocks, bool diagonal);
+
+  Eigen::Index size() const { return stiffness_.size(); }
+  /// Smallest diagonal entry of K_h (positive for a solvable problem).
+  double smallest_diagonal() const { return size() ? stiffness_.minCoeff() : 0.0; }
+  /// Smallest eigenvalue of K_h (0 if it is singular or indefinite): a lower bound of the
+  /// Jacobian's without friction, whose contact terms are positive semidefinite.
+  double smallest_eigenvalue() const { return smallest_eigenvalue_; }
+  /// out = K_h z.
+  void multiply(const Eigen::VectorXd& z, Eigen::VectorXd& out) const;
+  /// z^T K_h w.
+  double product(const Eigen::VectorXd& z, const Eigen::VectorXd& w) const;
+  /// Solves (K_h + U V^T) x = b with the first r columns of U and V.
+  void solve(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+
+  /// Factorizations kept.
+  static constexpr std::size_t kKeptFactorizations = 8;
+
+private:
+  /// One factorization of K + U V^T: of the n x n Jacobian itself, or Woodbury's capacitance.
+  struct Factorization {
+    Eigen::MatrixXd U, V;        ///< the terms factored (first `rank` columns)
+    Eigen::Index rank = -1;      ///< -1: empty
+    bool direct = false;
+    Eigen::MatrixXd scaled_U;    ///< Woodbury: K^-1 U
+    Eigen::MatrixXd capacitance; ///< Woodbury: LU factors of I + V^T K^-1 U
+    std::vector<Eigen::Index> pivots;
+    Eigen::MatrixXd jacobian;    ///< direct: K + U V^T
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    long last_use = 0;
+  };
+  /// The kept factorization of these terms, factoring them in place of the least recently used.
+  const Factorization& factorization(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r) const;
+  /// Factors K + U V^T for the first r columns into f.
+  void factor(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, Factorization& f) const;
+  /// x = K^-1 b.
+  void solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+
+  Eigen::VectorXd stiffness_;                 ///< diagonal of K_h
+  Eigen::MatrixXd dense_stiffness_;           ///< K_h if it is not diagonal
+  Eigen::LLT<Eigen::MatrixXd> dense_factor_;  ///< its Cholesky factor
+  bool dense_factor_ok_ = false;              ///< K_h is positive definite (else the Jacobian is factored each time)
+  double smallest_eigenvalue_ = 0;
+  mutable std::vector<Factorization> kept_ = std::vector<Factorization>(kKeptFactorizations);
+  mutable long uses_ = 0;
+  mutable Eigen::VectorXd coefficients_;
+};
+
+}  // namespace isosid::run
