@@ -95,7 +95,21 @@ std::size_t MultibodySystem::body_index(const std::string& name) const {
 
 const FloatingBody& MultibodySystem::body(const std::string& name) const { return *bodies_[body_index(name)]; }
 
-void MultibodySystem::update_quasistatic(const double* y) const { quasistatic_iterations_ += quasistatic_->solve(y); }
+namespace {
+/// y (n entries) equals the stored state exactly.
+bool same_state(bool valid, const Eigen::VectorXd& stored, const double* y, Eigen::Index n) {
+  return valid && stored.size() == n && Eigen::Map<const Eigen::VectorXd>(y, n) == stored;
+}
+}  // namespace
+
+void MultibodySystem::update_quasistatic(const double* y) const {
+  // the gaps at the end of a step follow the step's last stage, at the same state
+  if (quasistatic_->size() == 0 || same_state(solved_valid_, solved_y_, y, size_)) return;
+  solved_valid_ = false;  // a failed solve leaves the modes half-way
+  quasistatic_iterations_ += quasistatic_->solve(y);
+  solved_y_ = Eigen::Map<const Eigen::VectorXd>(y, size_);
+  solved_valid_ = true;
+}
 
 void MultibodySystem::initial_state(double* y) const {
   for (const auto& b : bodies_) b->initial_state(y);
@@ -111,6 +125,14 @@ void MultibodySystem::rhs(double, const double* y, double* ydot) const {
     last = now;
   };
   ++cost_.evaluations;
+  if (same_state(rhs_valid_, rhs_y_, y, size_)) {
+    Eigen::Map<Eigen::VectorXd>(ydot, size_) = rhs_ydot_;
+    ++cost_.repeated;
+    cost_.active_points += rhs_active_points_;
+    return;
+  }
+  rhs_valid_ = false;  // until this evaluation completes
+  const long active_before = cost_.active_points;
   update_quasistatic(y);
   lap(cost_.static_solve_s);
   for (std::size_t i = 0; i < bodies_.size(); ++i) forces_[i].reset(bodies_[i]->nq());
@@ -130,6 +152,10 @@ void MultibodySystem::rhs(double, const double* y, double* ydot) const {
   dissipation += quasistatic_->friction_power(y, ydot, Eigen::Index(size_));
   lap(cost_.static_solve_s);
   ydot[size_ - 1] = dissipation;
+  rhs_y_ = Eigen::Map<const Eigen::VectorXd>(y, size_);
+  rhs_ydot_ = Eigen::Map<const Eigen::VectorXd>(ydot, size_);
+  rhs_active_points_ = cost_.active_points - active_before;
+  rhs_valid_ = true;
 }
 
 std::vector<MultibodySystem::JointState> MultibodySystem::joint_states(const double* y) const {

@@ -28,7 +28,9 @@ public:
 
   Eigen::Index size() const { return size_; }
   void initial_state(double* y) const;
-  /// Right-hand side; reuses preallocated force buffers.
+  /// Right-hand side; reuses preallocated force buffers. A call at the state of the call before
+  /// returns that call's result: ARKODE's ERKStep evaluates the start of each step again
+  /// although its Dormand-Prince stages ended there (about one call in six).
   void rhs(double t, const double* y, double* ydot) const;
   /// One gap function per contact (for event location): the smallest signed gap.
   void gaps(const double* y, double* g) const;
@@ -61,6 +63,7 @@ public:
   /// work the evaluations cannot avoid).
   struct RhsCost {
     long evaluations = 0;
+    long repeated = 0;       ///< evaluations at the state of the one before, answered from it
     long active_points = 0;  ///< contact points carrying load, summed over the evaluations
     double static_solve_s = 0, contacts_s = 0, joints_s = 0, floating_frame_s = 0;
   };
@@ -89,6 +92,11 @@ private:
   mutable std::vector<GeneralizedForce> forces_;
   mutable long quasistatic_iterations_ = 0;
   mutable RhsCost cost_;
+  mutable Eigen::VectorXd rhs_y_, rhs_ydot_;  ///< the last rhs() call's state and result
+  mutable long rhs_active_points_ = 0;        ///< and its loaded contact points
+  mutable bool rhs_valid_ = false;            ///< the call completed
+  mutable Eigen::VectorXd solved_y_;          ///< the state the quasistatic modes were last solved for
+  mutable bool solved_valid_ = false;         ///< that solve completed
   std::vector<std::string> warnings_;
   std::vector<std::optional<ImpactEstimate>> impact_estimates_;
 };
