@@ -54,14 +54,19 @@ double ContactModel::energy_along(const QuasistaticTerms& terms, double alpha) c
   return energy;
 }
 
-int ContactModel::solve(const QuasistaticJacobian& K, const QuasistaticTerms& terms, const Eigen::VectorXd& z0,
-                        const Eigen::VectorXd& loads, bool conservative, Eigen::VectorXd& d) const {
-  const Eigen::Index m = terms.count;
+void ContactModel::start(const QuasistaticJacobian& K, const QuasistaticTerms& terms, const Eigen::VectorXd& z0,
+                         const Eigen::VectorXd& loads) const {
   if (gaps_.size() < terms.gap.size()) gaps_.resize(terms.gap.size()), rates_.resize(terms.gap.size()), pressed_.resize(std::size_t(terms.gap.size()));
-  gaps_.head(m) = terms.gap.head(m);
+  gaps_.head(terms.count) = terms.gap.head(terms.count);
   z_ = z0;
-  d.setZero(z0.size());
-  double energy = model_residual(K, terms, z_, loads);
+  energy_ = model_residual(K, terms, z_, loads);
+}
+
+int ContactModel::solve(const QuasistaticJacobian& K, const QuasistaticTerms& terms, const Eigen::VectorXd& loads, bool conservative,
+                        Eigen::VectorXd& d) const {
+  const Eigen::Index m = terms.count;
+  d.setZero(z_.size());
+  double& energy = energy_;
   for (int iteration = 1; iteration <= kMaxIterations; ++iteration) {
     const Eigen::Index r = jacobian_terms(terms, gaps_);
     for (Eigen::Index k = 0; k < m; ++k) pressed_[std::size_t(k)] = terms.pressure(k, gaps_(k)) > 0;

@@ -29,15 +29,23 @@ public:
   const Eigen::MatrixXd& U() const { return U_; }
   const Eigen::MatrixXd& V() const { return V_; }
 
-  /// The step d that solves the linear model from z0 (recorded there): K (z0 + d) - loads =
+  /// Sets the model at z0, where `terms` were recorded: its gaps, forces, residual and energy
+  /// there are those of the real problem (the accessors below).
+  void start(const QuasistaticJacobian& K, const QuasistaticTerms& terms, const Eigen::VectorXd& z0, const Eigen::VectorXd& loads) const;
+  /// The step d from start()'s z0 that solves the linear model: K (z0 + d) - loads =
   /// f(g + V^T d). `conservative`: no friction, so the search minimizes the energy above; with
   /// friction it reduces the model residual's norm. Returns the iterations.
-  int solve(const QuasistaticJacobian& K, const QuasistaticTerms& terms, const Eigen::VectorXd& z0, const Eigen::VectorXd& loads,
-            bool conservative, Eigen::VectorXd& d) const;
+  int solve(const QuasistaticJacobian& K, const QuasistaticTerms& terms, const Eigen::VectorXd& loads, bool conservative,
+            Eigen::VectorXd& d) const;
   /// The last solve reached the model's solution (to round-off) within kMaxIterations.
   bool solved() const { return solved_; }
-  /// The generalized contact force of the model at the last solve's step.
+  /// At start()'s z0, then at the last solve's step: the recorded points' gaps in the model (first terms.count), the
+  /// generalized contact force and its friction part, the residual and the merit energy.
+  const Eigen::VectorXd& gaps() const { return gaps_; }
   const Eigen::VectorXd& force() const { return force_; }
+  const Eigen::VectorXd& friction() const { return friction_; }
+  const Eigen::VectorXd& residual() const { return R_; }
+  double energy() const { return energy_; }
 
 private:
   /// Residual K z - loads - f at gaps_ into R_; returns the merit energy.
@@ -49,6 +57,7 @@ private:
   mutable Eigen::VectorXd gaps_, rates_, z_, R_, step_, force_, friction_, Kz_;
   mutable std::vector<char> pressed_;
   mutable bool solved_ = false;
+  mutable double energy_ = 0;
 };
 
 }  // namespace isosid::run

@@ -34,6 +34,10 @@ public:
   /// Principal curvatures (1/m, positive where convex) of the target at its point nearest
   /// the world point x, at the state of the last update(): for the Hertz estimate of an impact.
   virtual Eigen::Vector2d curvatures(const Eigen::Vector3d& x) const = 0;
+  /// A fixed plane {x : n . x = offset} (n its unit normal out of the target): a slave point's
+  /// gap is linear in its position, so the static solve's linearized gaps are exact and the
+  /// gaps of all points are one product. False for every other target.
+  virtual bool fixed_plane(Eigen::Vector3d& normal, double& offset) const { return (void)normal, (void)offset, false; }
 };
 
 }  // namespace isosid::run

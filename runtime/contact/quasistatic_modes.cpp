@@ -37,6 +37,9 @@ QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBod
     if (!touches) continue;
     contacts_.push_back(&c);
     conservative_ = conservative_ && c.frictionless();
+    Eigen::Vector3d normal;
+    double offset = 0;
+    flat_ = flat_ && c.target().fixed_plane(normal, offset);
     exact_ = exact_ || c.exact();
   }
   z_.setZero(n);
@@ -55,10 +58,11 @@ void QuasistaticModes::residual(const double* y, Eigen::VectorXd& R) const {
   terms_.window = window_;
   terms_.reach = 2 * z_.norm();
   for (const SurfaceContact* c : contacts_) c->add_quasistatic_terms(y, terms_);
-  penalty_energy_ = model_.forces(terms_, terms_.gap, force_, friction_force_);
-  jacobian_.multiply(z_, R);
-  R -= force_;
-  R -= held_loads_;
+  model_.start(jacobian_, terms_, z_, held_loads_);
+  penalty_energy_ = model_.energy();
+  force_ = model_.force();
+  friction_force_ = model_.friction();
+  R = model_.residual();
 }
 
 double QuasistaticModes::potential_change(double penalty_before) const {
@@ -106,11 +110,24 @@ int QuasistaticModes::newton(const double* y) const {
   // falls back to |R|.
   residual(y, R_);
   for (int iteration = 1; iteration <= 60; ++iteration) {
-    model_.solve(jacobian_, terms_, z_, held_loads_, conservative_, move_);
+    model_.solve(jacobian_, terms_, held_loads_, conservative_, move_);
     // converged when the update is at round-off relative to the solution (an absolute
     // tolerance would feed solver noise into the right-hand side, and the step-size control
     // would chase it; the residual itself stalls at the solve's round-off, K's condition times eps)
     const double resolution = 1e-11 * z_.norm() + floor_;
+    if (flat_ && model_.solved() && !terms_.unseen && move_.norm() <= terms_.reach) {
+      // against planes the model is the problem itself, and a move within the reach closes no
+      // point it left out: its solution is the solution, without another pass over the points
+      z_ += move_;
+      terms_.gap.head(terms_.count) = model_.gaps().head(terms_.count);
+      force_ = model_.force();
+      friction_force_ = model_.friction();
+      R_ = model_.residual();
+      penalty_energy_ = model_.energy();
+      scatter(z_);
+      update_window();
+      return iteration;
+    }
     if (move_.norm() <= resolution) {
       // an update below the resolution of the gaps: the recorded points stay those of z_,
       // and their energy change is round-off that a line search would halve against
@@ -120,6 +137,8 @@ int QuasistaticModes::newton(const double* y) const {
       return iteration;
     }
     z_old_ = z_;
+    predicted_force_ = model_.force();  // the trials below restart the model
+    const bool model_solved = model_.solved();
     const double penalty_before = penalty_energy_, residual_before = R_.norm(), slope = R_.dot(move_);
     double alpha = 1.0;
     for (int halving = 0; halving < 30; ++halving) {
@@ -133,8 +152,8 @@ int QuasistaticModes::newton(const double* y) const {
     // on a solved model, whose forces there are the real ones, converged: the next update,
     // J^-1 (f_model - f), is at most |f_model - f| / min K (J is K plus a positive
     // semidefinite part without friction) on top of the model's round-off
-    const bool model_held = conservative_ && alpha == 1 && model_.solved() &&
-                            (model_.force() - force_).norm() <= jacobian_.smallest_eigenvalue() * resolution;
+    const bool model_held = conservative_ && alpha == 1 && model_solved &&
+                            (predicted_force_ - force_).norm() <= jacobian_.smallest_eigenvalue() * resolution;
     if (model_held || alpha * move_.norm() <= resolution) {
       scatter(z_);
       update_window();

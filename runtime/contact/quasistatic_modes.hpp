@@ -66,11 +66,12 @@ private:
   QuasistaticJacobian jacobian_;
   ContactModel model_;
   bool conservative_ = true;
+  bool flat_ = true;                             ///< every contact's target is a fixed plane
   bool exact_ = false;                           ///< some contact is exact: Uzawa passes around Newton
   double floor_ = 0;                             ///< unresolvable displacement, modal units
   double gap_tolerance_ = 0;                     ///< m: exact contact's gaps close to this
   std::string names_;
-  mutable Eigen::VectorXd z_, R_, move_, step_, z_old_, z_sum_, force_, friction_force_;
+  mutable Eigen::VectorXd z_, R_, move_, step_, z_old_, z_sum_, force_, friction_force_, predicted_force_;
   mutable QuasistaticTerms terms_;
   mutable double window_ = 0;                    ///< QuasistaticTerms::window of the next solve, m
   mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual

@@ -28,11 +28,15 @@ struct QuasistaticTerms {
   /// outer Newton an iteration when they close after all.
   double window = INFINITY;  ///< m
   double reach = 0;          ///< modal units
+  /// Some contact's broad phase found its surface clear and recorded nothing of it: its points
+  /// are not bounded by the reach.
+  bool unseen = false;
 
   void reset(Eigen::Index n) {
     if (V.rows() != n) V.resize(n, 0), T.resize(n, 0);
     count = 0;
     friction = false;
+    unseen = false;
   }
   /// Appends a point with zeroed v and t; fill V.col(k) (and T.col(k)) for the returned k.
   Eigen::Index add_point(double gap_m, double lambda, double c_p, double w) {

@@ -28,6 +28,13 @@ bool ShapeTarget::project(const Eigen::Vector3d& x, const double* y, TargetPoint
   return true;
 }
 
+bool ShapeTarget::fixed_plane(Eigen::Vector3d& normal, double& offset) const {
+  if (body_ || shape_.kind != ShapeSpec::Kind::Plane) return false;
+  normal = shape_.normal;
+  offset = shape_.normal.dot(shape_.point);
+  return true;
+}
+
 Eigen::Vector2d ShapeTarget::curvatures(const Eigen::Vector3d&) const {
   switch (shape_.kind) {
     case ShapeSpec::Kind::Sphere: return Eigen::Vector2d::Constant(1 / shape_.radius);

@@ -19,6 +19,7 @@ public:
   double clearance(const Eigen::Vector3d& center, double radius) const override;
   bool project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d& hint) const override;
   Eigen::Vector2d curvatures(const Eigen::Vector3d& x) const override;
+  bool fixed_plane(Eigen::Vector3d& normal, double& offset) const override;
 
 private:
   ShapeSpec shape_;

@@ -62,6 +62,24 @@ double SurfaceContact::for_each_point(const double* y, F&& f) const {
   if (clearance > 0) return clearance;
   displacement_.noalias() = surface_.Psi * q;  // all points in one product (row blocks would be strided)
   Eigen::Vector3d P = Eigen::Vector3d::Zero();
+  Eigen::Vector3d plane_normal;
+  double plane_offset = 0;
+  if (target_.fixed_plane(plane_normal, plane_offset)) {
+    // a fixed plane: every gap is n . (r + A P) - offset, from the body-frame normal; the
+    // target point is the projection (what ShapeTarget::project gives, without its dispatch)
+    const Eigen::Vector3d n_body = A.transpose() * plane_normal;
+    const double base = plane_normal.dot(r) - plane_offset;
+    point_.normal = plane_normal;
+    point_.velocity.setZero();
+    point_.Psi.resize(dim_, 0);
+    for (Eigen::Index g = 0; g < surface_.points(); ++g) {
+      P.head(dim_) = surface_.position.row(g).transpose() + displacement_.segment(g * dim_, dim_);
+      point_.gap = base + n_body.dot(P);
+      point_.body_point = r + A * P - point_.gap * plane_normal;
+      f(g, surface_.Psi.middleRows(g * dim_, dim_), P, A, point_);
+    }
+    return clearance;
+  }
   for (Eigen::Index g = 0; g < surface_.points(); ++g) {
     const auto Psi = surface_.Psi.middleRows(g * dim_, dim_);
     P.head(dim_) = surface_.position.row(g).transpose() + displacement_.segment(g * dim_, dim_);
@@ -139,7 +157,7 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
     if (spec_.friction > 0) add_elastic_force(Psi_h, -(A_master.transpose() * direction), terms.T.col(k).segment(at, nh));
   };
   const Eigen::Index nh = body_.n_quasistatic(), at = body_.quasistatic_offset();
-  for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
+  const double clearance = for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
     const double lambda = spec_.exact ? multiplier_[std::size_t(g)] : 0.0;
     if (pressure(g, t.gap) <= 0) {
       // free: recorded if a change of z by terms.reach could close its gap (|Psi_h u| <=
@@ -169,6 +187,7 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
     }
     if (master_qs) add_target_side(t.Psi, t.normal, direction, k);
   });
+  if (clearance > 0) terms.unseen = true;
 }
 
 double SurfaceContact::update_multipliers(const double* y) const {
