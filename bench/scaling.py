@@ -3,7 +3,7 @@
 100, 148 and 300 (Craig-Bampton, 6 to 270 normal modes and the same 31 interface DOFs; the
 interface coordinates quasistatic, the normal modes integrated), and the nq = 36 sphere hit
 at 0.03 to 1 m/s so that more and more contact points carry load. For each run: steps, CPU
-time per step, right-hand sides (RHS) per step, µs per RHS with the static solve's share,
+time per step, computed right-hand sides (RHS) per step, µs per RHS with the static solve's share,
 mean loaded points, and the ratio to the bound of bench/cost_model.py. Writes the 'scaling'
 section of bench/RESULTS.md.
 
@@ -18,7 +18,7 @@ import tempfile  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from bench_common import BUILD, ROOT, machine, run_json, update_section  # noqa: E402
-from cost_model import PARTS, bound_multiply_adds, dense_rate  # noqa: E402
+from cost_model import dense_rate, per_rhs  # noqa: E402
 
 PREP = os.path.join(BUILD, "preprocess", "isosid-prep")
 RUN = os.path.join(BUILD, "runtime", "isosid-run")
@@ -50,11 +50,7 @@ def scene(work, sid, speed, name):
 
 
 def row(label, s, rate):
-    n = s["rhs_cost"]["evaluations"]
-    split = s["time_split_s"]
-    per = {p: 1e6 * split[p] / n for p in PARTS}
-    total = sum(per.values())
-    bound = 1e6 * bound_multiply_adds(s) / rate
+    n, per, total, bound = per_rhs(s, rate)
     b = s["bodies"][0]
     return (f"| {label} | {b['nq']} ({b['quasistatic_modes']}) | {s['steps']} | {1e6 * s['cpu_time_s'] / s['steps']:.0f} | "
             f"{n / s['steps']:.1f} | {s['rhs_cost']['mean_active_points']:.1f} | {total:.1f} | {per['static_solve']:.1f} | "
