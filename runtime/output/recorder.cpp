@@ -52,6 +52,7 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
   contact_penetration_.resize(nc);
   body_q_.resize(system_.bodies().size());
   intervals_.resize(nc);
+  touches_.resize(nc);
   peak_force_.assign(nc, 0);
   points_at_peak_.assign(nc, 0);
   edge_reached_.assign(nc, -1);
@@ -152,6 +153,8 @@ void Recorder::contact_event(int k, bool closing, double t) {
   if (!closing && active_[std::size_t(k)] && !list.empty()) list.back().end = t;
   active_[std::size_t(k)] = closing;
 }
+
+void Recorder::touch(int k, double t, const Touch& touch) { touches_[std::size_t(k)].emplace_back(t, touch); }
 
 double Recorder::max_relative_energy_error() const {
   if (energies_.empty()) return 0;
@@ -284,6 +287,19 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     // the contact lasts from the first onset to the last release
     c["duration_s"] = list.empty() || list.back().end < 0 ? json(nullptr) : json(list.back().end - list.front().start);
     c["intervals"] = list.size();
+    // the exact surfaces' first instants of contact, one per impact
+    c["touches"] = json::array();
+    for (const auto& [time, touch] : touches_[k]) {
+      auto parameters = [&](const Eigen::Vector2d& u) {
+        if (std::isnan(u(0))) return json(nullptr);
+        json list = json::array();
+        for (int a = 0; a < touch.parameter_dim; ++a) list.push_back(u(a));
+        return list;
+      };
+      c["touches"].push_back({{"time_s", time}, {"gap_m", touch.gap}, {"slave_parameter", parameters(touch.slave_parameter)},
+                              {"target_parameter", parameters(touch.target_parameter)},
+                              {"point_m", {touch.point.x(), touch.point.y(), touch.point.z()}}});
+    }
     c["penalty_n_m3"] = system_.contacts()[k].penalty();
     c["penalty_source"] = system_.contacts()[k].penalty_source();
     c["peak_force_n"] = peak_force_[k];

@@ -31,6 +31,8 @@ public:
   void step(double t, const double* y) override;
   /// A contact's gap changed sign at t: closing (onset) or opening (release).
   void contact_event(int contact, bool closing, double t) override;
+  /// A contact's exact surfaces touched at t: kept for summary.json.
+  void touch(int contact, double t, const Touch& touch) override;
 
   /// results.h5: written to a temporary file and renamed (never half-written).
   void write_results(const std::string& path) const;
@@ -57,6 +59,7 @@ private:
   std::vector<std::vector<double>> monitor_values_;  ///< per monitor: 3 per sample
   // per-step statistics
   std::vector<std::vector<ContactInterval>> intervals_;
+  std::vector<std::vector<std::pair<double, Touch>>> touches_;  ///< per contact: time and where
   std::vector<double> peak_force_, impulse_, max_penetration_;
   std::vector<int> points_at_peak_;
   std::vector<double> edge_reached_;  ///< first step time with load in an edge element, or -1

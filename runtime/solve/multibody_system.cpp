@@ -41,6 +41,11 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   } catch (const format::InputError& e) {  // a surface the SID does not have: name the scene file
     throw format::InputError(scene.file, "contact " + c.name + "." + e.field(), e.problem());
   }
+  touches_.reserve(contacts_.size());
+  for (const SurfaceContact& c : contacts_) {
+    touches_.emplace_back(c);
+    touch_state_.push_back(touches_.back().available() ? TouchState::Armed : TouchState::Unavailable);
+  }
   quasistatic_ = std::make_unique<QuasistaticModes>(bodies_, contacts_);
   forces_.resize(bodies_.size());
   for (std::size_t i = 0; i < bodies_.size(); ++i) warn_of_many_dynamic_modes(*bodies_[i], scene.bodies[i]);
@@ -180,6 +185,28 @@ void MultibodySystem::gaps(const double* y, double* g) const {
   // above the denormals that would overflow the root finder's secant step.
   update_quasistatic(y);
   gaps_after_rhs(y, g);
+}
+
+void MultibodySystem::roots(const double* y, double* g) const {
+  gaps(y, g);
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    double& root = g[contacts_.size() + k];
+    root = 1.0;
+    if (touch_state_[k] == TouchState::Unavailable || touch_state_[k] == TouchState::Found) continue;
+    // the surfaces cannot be apart while a Gauss point (on the slave surface) is still inside
+    if (touch_state_[k] == TouchState::Separating && !(g[k] > 0)) continue;
+    const double gap = touches_[k].evaluate(y).gap;
+    if (touch_state_[k] == TouchState::Separating) {
+      if (!(gap > 0)) continue;
+      touch_state_[k] = TouchState::Armed;  // from 1 to a positive gap: no sign change
+    }
+    root = std::isfinite(gap) ? (gap != 0.0 ? gap : -1e-30) : 1.0;
+  }
+}
+
+const Touch& MultibodySystem::touch(std::size_t k, const double* y) const {
+  update_quasistatic(y);
+  return touches_[k].evaluate(y);
 }
 
 void MultibodySystem::gaps_after_rhs(const double* y, double* g) const {

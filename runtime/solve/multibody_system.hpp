@@ -7,6 +7,7 @@
 #include "contact/impact_estimate.hpp"
 #include "contact/quasistatic_modes.hpp"
 #include "contact/surface_contact.hpp"
+#include "contact/surface_touch.hpp"
 #include "joint/joint_constraints.hpp"
 #include "scene/scene.hpp"
 
@@ -36,6 +37,18 @@ public:
   void gaps(const double* y, double* g) const;
   /// The same right after rhs(y), whose static solve already holds for y (not solved again).
   void gaps_after_rhs(const double* y, double* g) const;
+  /// Root functions for event location: gaps() (one per contact), then one per contact for
+  /// the touch of its exact surfaces (SurfaceTouch) while that is armed, else a constant 1.
+  std::size_t root_count() const { return 2 * contacts_.size(); }
+  void roots(const double* y, double* g) const;
+  /// The closest approach of contact k's exact surfaces at y (quasistatic modes solved for y).
+  const Touch& touch(std::size_t k, const double* y) const;
+  /// Contact k's touch was found: its root is held until the contact has opened (release())
+  /// and its surfaces are apart again, so a later impact is found as well.
+  void touched(std::size_t k) const { touch_state_[k] = TouchState::Found; }
+  void released(std::size_t k) const {
+    if (touch_state_[k] == TouchState::Found) touch_state_[k] = TouchState::Separating;
+  }
   /// Contact states at y (for output); also brings the quasistatic modes up to date for y.
   std::vector<ContactState> contact_states(const double* y) const;
   /// Energies at y, given `states` = contact_states(y) (evaluated once for both).
@@ -83,6 +96,12 @@ private:
   std::vector<std::unique_ptr<FloatingBody>> bodies_;
   std::vector<std::unique_ptr<ContactTarget>> targets_;
   std::vector<SurfaceContact> contacts_;
+  std::vector<SurfaceTouch> touches_;         ///< per contact: its exact surfaces
+  /// Armed: the touch gap is a root function; Found: held at 1 until the contact opens;
+  /// Separating: opened, held at 1 until the surfaces are apart (then armed without a jump
+  /// through zero); Unavailable: no exact slave surface.
+  enum class TouchState { Armed, Found, Separating, Unavailable };
+  mutable std::vector<TouchState> touch_state_;
   std::vector<std::size_t> slave_body_;    ///< body index of each contact's slave
   std::vector<long> target_body_;          ///< body index of each contact's target, -1: fixed
   std::unique_ptr<QuasistaticModes> quasistatic_;

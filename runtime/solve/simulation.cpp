@@ -60,6 +60,11 @@ void Simulation::start(SimulationObserver& observer) {
   system_.gaps(state().data(), gap.data());
   for (std::size_t k = 0; k < gap.size(); ++k)
     if (gap[k] < 0) observer.contact_event(int(k), true, t_);  // starts in contact
+  for (std::size_t k = 0; k < gap.size(); ++k) {
+    if (!(system_.touch(k, state().data()).gap < 0)) continue;
+    observer.touch(int(k), t_, system_.touch(k, state().data()));  // starts touching
+    system_.touched(k);
+  }
 }
 
 bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
@@ -73,7 +78,16 @@ bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
       const auto events = integrator_.advance(tout, t_);
       if (!state().allFinite())
         throw format::ComputationError("the state of body '" + diverged_body(system_, state()) + "' is not finite");
-      for (const auto& e : events) observer.contact_event(e.contact, e.closing, e.time);
+      for (const auto& e : events) {
+        const std::size_t k = std::size_t(e.contact);
+        if (!e.touch) {
+          observer.contact_event(e.contact, e.closing, e.time);
+          if (!e.closing) system_.released(k);
+        } else if (e.closing) {
+          observer.touch(e.contact, e.time, system_.touch(k, state().data()));
+          system_.touched(k);
+        }
+      }
       observer.sample(t_, state().data());
       if (events.empty() && t_ >= double(next_output_) * dt_out * (1 - 1e-12)) ++next_output_;
       if (std::chrono::duration<double>(Clock::now() - last_progress).count() > 1.0) {

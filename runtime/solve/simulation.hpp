@@ -21,6 +21,8 @@ public:
   virtual void step(double t, const double* y) = 0;
   /// A contact's gap changed sign at t: closing (onset) or opening (release).
   virtual void contact_event(int contact, bool closing, double t) = 0;
+  /// A contact's exact surfaces touched at t (an impact's first instant), where `touch` says.
+  virtual void touch(int /*contact*/, double /*t*/, const Touch& /*touch*/) {}
   /// Roughly once a second of wall time: how far the run is.
   virtual void progress(double /*t*/, double /*end_time*/, long /*steps*/) {}
   /// Asked between output samples: true ends the phase there (e.g. on a signal).

@@ -60,7 +60,7 @@ struct TimeIntegrator::Impl {
   }
   static int roots(realtype, N_Vector y, realtype* g, void* data) {
     const Impl* self = static_cast<const Impl*>(data);
-    return self->guarded([&] { self->system.gaps(N_VGetArrayPointer(y), g); });
+    return self->guarded([&] { self->system.roots(N_VGetArrayPointer(y), g); });
   }
   static int post_step(realtype t, N_Vector y, void* data) {
     const Impl* self = static_cast<const Impl*>(data);
@@ -133,7 +133,7 @@ TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSe
   check(SUNContext_Create(nullptr, &m.context), "context");
   m.y = N_VMake_Serial(y_.size(), y_.data(), m.context);  // shares y_'s storage
   m.accepted_y = y_;  // restarts go back to the initial state until a step is accepted (t = 0)
-  const int n_roots = int(system.contacts().size());
+  const int n_roots = int(system.root_count());
   if (m.implicit) {
     m.memory = ARKStepCreate(nullptr, Impl::rhs, 0.0, m.y, m.context);
     if (!m.memory) throw format::ComputationError("SUNDIALS: ARKStepCreate failed");
@@ -241,10 +241,11 @@ std::vector<TimeIntegrator::GapEvent> TimeIntegrator::advance(double tout, doubl
   }
   std::vector<GapEvent> changed;
   if (flag == ARK_ROOT_RETURN) {
-    std::vector<int> info(m.system.contacts().size());  // +1: gap increasing, -1: decreasing
+    std::vector<int> info(m.system.root_count());  // +1: gap increasing, -1: decreasing
     m.implicit ? ARKStepGetRootInfo(m.memory, info.data()) : ERKStepGetRootInfo(m.memory, info.data());
+    const std::size_t n = m.system.contacts().size();
     for (std::size_t k = 0; k < info.size(); ++k)
-      if (info[k] != 0) changed.push_back({int(k), info[k] < 0, reached});
+      if (info[k] != 0) changed.push_back({int(k % n), info[k] < 0, reached, k >= n});
   }
   return changed;
 }

@@ -35,7 +35,8 @@ public:
   struct GapEvent {
     int contact;
     bool closing;
-    double time;  ///< s: located by the root finder, or interpolated within a leapfrog step
+    double time;         ///< s: located by the root finder, or interpolated within a leapfrog step
+    bool touch = false;  ///< the contact's exact surfaces (MultibodySystem::touch), not its Gauss points
   };
   /// Advances toward tout. Returns the contacts whose gap changed sign (empty if tout was
   /// reached); t and y() hold the state reached. Throws ComputationError on failure.

@@ -1,0 +1,106 @@
+// Closest approach of a contact's exact surfaces; see surface_touch.hpp.
+#include "contact/surface_touch.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace isosid::run {
+
+SurfaceTouch::SurfaceTouch(const SurfaceContact& contact) : contact_(contact), dim_(contact.body().sid().dim()) {
+  const format::MasterPatch* patch = format::find_master_patch(contact.body().sid(), contact.surface().master_patch);
+  if (patch) patch_ = std::make_unique<DeformedPatch>(*patch, dim_);
+}
+
+bool SurfaceTouch::distance(const double* y, const Eigen::Vector2d& u, double& gap, Eigen::Vector2d& gradient) const {
+  patch_->evaluate(u, point_);
+  Eigen::Vector3d x = point_.C;
+  if (dim_ == 2) x.z() = 0;
+  if (!contact_.target().project(r_ + A_ * x, y, target_point_, target_hint_)) return false;
+  gap = target_point_.gap;
+  // the signed distance's gradient in space is the target's normal (where it is smooth):
+  // along the patch, its product with the tangents
+  gradient.setZero();
+  for (int a = 0; a < patch_->parameter_dim(); ++a) gradient(a) = target_point_.normal.dot(A_ * point_.dC[a]);
+  return true;
+}
+
+const Touch& SurfaceTouch::evaluate(const double* y) const {
+  touch_ = Touch{};
+  if (!patch_) return touch_;
+  const FloatingBody& body = contact_.body();
+  contact_.target().update(y);
+  patch_->deform(body.q(y));
+  A_ = body.orientation(y).toRotationMatrix();
+  r_ = body.r(y);
+  const int pd = patch_->parameter_dim();
+  Eigen::Vector2d range = Eigen::Vector2d::Ones();
+  for (int a = 0; a < pd; ++a) range(a) = patch_->upper(a) - patch_->lower(a);
+  auto clamp = [&](Eigen::Vector2d u) {
+    for (int a = 0; a < pd; ++a) u(a) = std::clamp(u(a), patch_->lower(a), patch_->upper(a));
+    return u;
+  };
+
+  // start: the last closest point, else the best of a grid of 9 (or 81) parameters
+  Eigen::Vector2d u = touch_.slave_parameter;
+  double gap = INFINITY;
+  Eigen::Vector2d gradient;
+  if (std::isnan(last_parameter_(0)) || !distance(y, last_parameter_, gap, gradient)) {
+    const int n = 9;
+    for (int j = 0; j < (pd > 1 ? n : 1); ++j)
+      for (int i = 0; i < n; ++i) {
+        Eigen::Vector2d c(patch_->lower(0) + range(0) * i / (n - 1), pd > 1 ? patch_->lower(1) + range(1) * j / (n - 1) : 0.0);
+        double g = 0;
+        if (distance(y, c, g, gradient) && g < gap) gap = g, u = c;
+      }
+    if (std::isnan(u(0))) return touch_;  // the target sees none of the surface
+  } else {
+    u = last_parameter_;
+  }
+  // Newton on the gradient; its Jacobian exactly against a fixed plane (n . A C_ab), else by
+  // central differences of the gradient (the target's curvature enters it, which an analytic
+  // Hessian would need per kind of target)
+  Eigen::Vector3d plane_normal;
+  double plane_offset = 0;
+  const bool plane = contact_.target().fixed_plane(plane_normal, plane_offset);
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    if (!distance(y, u, gap, gradient)) break;
+    Eigen::Matrix2d H = Eigen::Matrix2d::Identity();
+    bool ok = true;
+    for (int a = 0; a < pd && plane; ++a)
+      for (int b = 0; b < pd; ++b) H(a, b) = plane_normal.dot(A_ * point_.ddC[a + b]);
+    for (int b = 0; b < pd && ok && !plane; ++b) {
+      const double h = 1e-6 * range(b);
+      Eigen::Vector2d up = u, down = u, g_up, g_down;
+      up(b) += h, down(b) -= h;
+      double unused = 0;
+      ok = distance(y, up, unused, g_up) && distance(y, down, unused, g_down);
+      if (ok) H.col(b) = (g_up - g_down) / (2 * h);
+    }
+    if (!ok) break;
+    Eigen::Vector2d step = Eigen::Vector2d::Zero();
+    if (pd == 1) {
+      // a minimum needs positive curvature; elsewhere a gradient step of a tenth of the range
+      step(0) = H(0, 0) > 0 ? -gradient(0) / H(0, 0) : -0.1 * range(0) * (gradient(0) > 0 ? 1 : -1);
+    } else {
+      H = 0.5 * (H + H.transpose()).eval();
+      Eigen::LLT<Eigen::Matrix2d> llt(H);
+      step = llt.info() == Eigen::Success ? Eigen::Vector2d(-llt.solve(gradient)) : Eigen::Vector2d(-0.1 * range.cwiseProduct(gradient.normalized()));
+    }
+    const Eigen::Vector2d next = clamp(u + step);
+    const bool converged = ((next - u).cwiseQuotient(range)).cwiseAbs().maxCoeff() <= 1e-13;
+    u = next;
+    if (converged) break;
+  }
+  if (!distance(y, u, gap, gradient)) return touch_;
+  last_parameter_ = u;
+  touch_.gap = gap;
+  touch_.slave_parameter = u;
+  touch_.target_parameter = contact_.target().body() ? target_hint_ : Eigen::Vector2d::Constant(NAN);
+  Eigen::Vector3d x = point_.C;
+  if (dim_ == 2) x.z() = 0;
+  touch_.point = r_ + A_ * x;
+  touch_.parameter_dim = pd;
+  return touch_;
+}
+
+}  // namespace isosid::run

@@ -1,0 +1,51 @@
+// Where and when two bodies first touch (seed 001 eq. 7): the closest approach of a contact's
+// exact slave surface, the NURBS of its master patch on the deformed control net, to the
+// target, minimizing the target's signed distance over the patch's parameters. Unlike the
+// contact's Gauss points, the exact surfaces touch at one point at one time: the impact's
+// time and its location in each body's parameter space (the root of this gap in time).
+#pragma once
+#include "contact/deformed_patch.hpp"
+#include "contact/surface_contact.hpp"
+
+#include <memory>
+
+namespace isosid::run {
+
+/// The closest approach of the two surfaces at one state.
+struct Touch {
+  double gap = INFINITY;  ///< m, signed: negative where the slave surface reaches into the target
+  Eigen::Vector2d slave_parameter = Eigen::Vector2d::Constant(NAN);   ///< on the slave's master patch
+  Eigen::Vector2d target_parameter = Eigen::Vector2d::Constant(NAN);  ///< on a flexible target's patch (else NaN)
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();                    ///< world point of the slave surface, m
+  int parameter_dim = 0;  ///< parameters of the patches (1: curves of 2D sections, 2: surfaces)
+};
+
+class SurfaceTouch {
+public:
+  /// The slave surface of `contact`: the master patch its SID gives for the contact surface
+  /// (available() is false without one).
+  explicit SurfaceTouch(const SurfaceContact& contact);
+
+  bool available() const { return patch_ != nullptr; }
+  /// The closest approach at state y (the bodies' quasistatic modes as last solved), by
+  /// Newton's method on the distance's parametric gradient, warm-started from the last call.
+  const Touch& evaluate(const double* y) const;
+
+private:
+  /// The target's signed distance to the slave surface at parameter u, with its gradient
+  /// along u; false where the target sees no candidate there.
+  bool distance(const double* y, const Eigen::Vector2d& u, double& gap, Eigen::Vector2d& gradient) const;
+
+  const SurfaceContact& contact_;
+  std::unique_ptr<DeformedPatch> patch_;
+  int dim_ = 3;
+  mutable DeformedPatch::Point point_;
+  mutable TargetPoint target_point_;
+  mutable Eigen::Vector2d target_hint_ = Eigen::Vector2d::Constant(NAN);  ///< the target's projection warm start
+  mutable Eigen::Vector2d last_parameter_ = Eigen::Vector2d::Constant(NAN);  ///< the slave's, from the last call
+  mutable Eigen::Matrix3d A_ = Eigen::Matrix3d::Identity();
+  mutable Eigen::Vector3d r_ = Eigen::Vector3d::Zero();
+  mutable Touch touch_;
+};
+
+}  // namespace isosid::run

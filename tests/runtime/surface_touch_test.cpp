@@ -1,0 +1,146 @@
+// Impact detection against known answers: a sphere flying rigidly toward a plane touches it
+// when its distance has closed, at the point of the sphere facing the plane. The run must find
+// that instant (to 1e-9 s) and the point's parameter on the sphere's NURBS surface (to 1e-9 of
+// the parameter range), for a level and a tilted plane.
+#include "contact/deformed_patch.hpp"
+#include "isosid/format/sid_io.hpp"
+#include "scene/scene.hpp"
+#include "solve/simulation.hpp"
+#include "support/run_program.hpp"
+
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+
+using namespace isosid;
+
+namespace {
+struct TouchObserver : run::SimulationObserver {
+  std::vector<std::pair<double, run::Touch>> touches;
+  void sample(double, const double*) override {}
+  void step(double, const double*) override {}
+  void contact_event(int, bool, double) override {}
+  void touch(int, double t, const run::Touch& touch) override { touches.emplace_back(t, touch); }
+};
+}  // namespace
+
+namespace {
+/// Runs `sid` (a body of radius R about its origin, facing the plane through the origin whose
+/// unit normal n leans in the section's plane) flying straight down from clearance + R along n,
+/// and checks its single touch against the closed form.
+void check_first_touch(const test::ScratchDir& dir, const std::string& dimension, const std::string& sid_file, double R,
+                       const Eigen::Vector3d& n) {
+  const double v = 0.1, clearance = 1e-6;  // m/s, m
+  const Eigen::Vector3d centre = (R + clearance) * n;
+  std::ofstream scene_file(dir.path("s.scene.toml"));
+  scene_file << std::setprecision(17);  // the closed form below holds for the numbers as written
+  scene_file << "[simulation]\ndimension = \"" << dimension << "\"\nend_time = 2e-5\noutput_interval = 1e-6\n"
+                                          << "[[flexible_body]]\nname = \"body\"\nsid = \"" << sid_file << "\"\nposition = ["
+                                          << centre.x() << ", " << centre.y() << ", 0.0]\nvelocity = [0.0, " << -v << ", 0.0]\n"
+                                          << "[[fixed_plane]]\nname = \"ground\"\npoint = [0.0, 0.0, 0.0]\nnormal = [" << n.x() << ", "
+                                          << n.y() << ", 0.0]\n[[contact]]\nname = \"c\"\nbody = \"body\"\nsurface = \"contact\"\n"
+                                          << "target = \"ground\"\npenalty = 1e15\n";
+  scene_file.close();
+  const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
+  const format::Sid sid = format::read_sid(scene.bodies[0].sid_file);
+  run::Simulation simulation(scene, {sid});
+  TouchObserver observer;
+  REQUIRE(simulation.run(observer).completed());
+  REQUIRE(observer.touches.size() == 1);
+  const auto& [time, touch] = observer.touches.front();
+
+  // before the touch no force acts: the distance to the plane closes at v n_y
+  const double expected_time = clearance / (v * n.y());
+  INFO(dimension << ", normal (" << n.x() << ", " << n.y() << "): touch at " << time << " s, expected " << expected_time << " s");
+  CHECK(std::abs(time - expected_time) < 1e-9);
+  CHECK(std::abs(touch.gap) < 1e-12);  // the root of the gap, located by the integrator
+  // the world point is the body's point facing the plane: the centre then, less R n
+  const Eigen::Vector3d centre_then = centre + Eigen::Vector3d(0.0, -v * expected_time, 0.0);
+  CHECK((touch.point - (centre_then - R * n)).norm() < 1e-9 * R);
+
+  // the parameter, independently: where the undeformed patch's tangent is normal to n (bisection),
+  // or the end of the patch that lies on the axis when n is the axis
+  const format::MasterPatch& patch = *format::find_master_patch(sid, sid.contact_surfaces.front().master_patch);
+  run::DeformedPatch curve(patch, 2);
+  run::DeformedPatch::Point p;
+  auto facing = [&](double u) {  // n . dC/du: zero where the surface faces the plane
+    curve.evaluate(Eigen::Vector2d(u, 0.0), p);
+    return n.dot(p.dC[0]);
+  };
+  double lo = curve.lower(0), hi = curve.upper(0);
+  const double range = hi - lo;
+  double expected_parameter = 0;
+  curve.evaluate(Eigen::Vector2d(lo, 0.0), p);
+  if (dimension == "axisymmetric") {
+    expected_parameter = std::abs(p.C.x()) < 1e-12 ? lo : hi;
+  } else {
+    REQUIRE(facing(lo) * facing(hi) < 0);  // the facing point lies on the patch
+    for (int i = 0; i < 200 && hi - lo > 1e-15 * range; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (facing(lo) * facing(mid) <= 0 ? hi : lo) = mid;
+    }
+    expected_parameter = 0.5 * (lo + hi);
+  }
+  CHECK(touch.parameter_dim == 1);
+  CHECK(std::abs(touch.slave_parameter(0) - expected_parameter) < 1e-9 * range);
+  CHECK(std::isnan(touch.target_parameter(0)));  // a plane has no parameters
+}
+}  // namespace
+
+TEST_CASE("impact detection: a sphere's first touch of a plane, at its pole", "[runtime][unit]") {
+  const test::ScratchDir dir("touch_sphere");
+  check_first_touch(dir, "axisymmetric", std::string(ISOSID_GOLDEN_DIR) + "/sphere_small.sid.h5", 0.01, Eigen::Vector3d::UnitY());
+}
+
+TEST_CASE("impact detection: a disk's first touch of a tilted plane, off its patch's ends", "[runtime][unit]") {
+  const test::ScratchDir dir("touch_disk");
+  // a coarse plane-strain disk of radius 0.05 m, contact on the middle of its bottom side
+  std::ofstream(dir.path("disk.model.toml")) << "[body]\nname = \"disk\"\nanalysis = \"plane_strain\"\nthickness = 1.0\n"
+                                             << "[material]\nyoungs_modulus = 2.1e11\npoisson_ratio = 0.3\ndensity = 7850.0\n"
+                                             << "[geometry]\nprimitive = \"disk\"\nradius = 0.05\n"
+                                             << "[refinement]\ndegrees = [2, 2]\nsubdivisions = [2, 2]\n"
+                                             << "[[contact_surface]]\nname = \"contact\"\nside = \"bottom\"\ninterval = [[0.2, 0.8]]\n"
+                                             << "[reduction]\nmethod = \"modal\"\nnormal_modes = 4\n";
+  const test::ProgramResult prep =
+      test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("disk.model.toml") + " -o " + dir.path("disk.sid.h5"));
+  INFO(prep.err);
+  REQUIRE(prep.exit_status == 0);
+  const double tilt = 0.15;  // rad: the facing point 7.5 mm from the bottom, inside the contact patch
+  check_first_touch(dir, "planar", dir.path("disk.sid.h5"), 0.05, Eigen::Vector3d(std::sin(tilt), std::cos(tilt), 0.0));
+}
+
+TEST_CASE("impact detection: a bouncing sphere's surfaces touch once per impact", "[runtime][unit]") {
+  // strong gravity brings the sphere back within 0.4 ms: three impacts, each found where its
+  // Gauss points start to carry load (the touch rearms once the contact has opened)
+  const test::ScratchDir dir("touch_bounce");
+  std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 4e-4\noutput_interval = 1e-6\n"
+                                          << "gravity = [0.0, -2000.0, 0.0]\n[[flexible_body]]\nname = \"sphere\"\nsid = \""
+                                          << ISOSID_GOLDEN_DIR << "/sphere_small.sid.h5\"\nposition = [0.0, 0.0100001, 0.0]\n"
+                                          << "velocity = [0.0, -0.1, 0.0]\nhigh_modes = \"quasistatic\"\n[[fixed_plane]]\nname = \"ground\"\n"
+                                          << "[[contact]]\nname = \"c\"\nbody = \"sphere\"\nsurface = \"contact\"\ntarget = \"ground\"\n"
+                                          << "penalty = 5e17\n";
+  const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
+  run::Simulation simulation(scene, {format::read_sid(scene.bodies[0].sid_file)});
+  struct Observer : TouchObserver {
+    std::vector<double> onsets;
+    bool open = true;
+    void contact_event(int, bool closing, double t) override {
+      if (closing && open) onsets.push_back(t);
+      open = !closing;
+    }
+  } observer;
+  REQUIRE(simulation.run(observer).completed());
+  REQUIRE(observer.touches.size() == 3);
+  REQUIRE(observer.onsets.size() >= 3);
+  // the first: 0.1 um closed at 0.1 m/s under 2000 m/s^2
+  CHECK(std::abs(observer.touches[0].first - (-0.1 + std::sqrt(0.01 + 4 * 1000 * 1e-7)) / 2000) < 1e-9);
+  for (const auto& [time, touch] : observer.touches) {
+    // each touch comes first, the Gauss points' onset of the same impact after it (within 2 us)
+    const auto onset = std::lower_bound(observer.onsets.begin(), observer.onsets.end(), time);
+    REQUIRE(onset != observer.onsets.end());
+    CHECK(*onset - time < 2e-6);
+    CHECK(std::abs(touch.gap) < 1e-12);
+  }
+}
