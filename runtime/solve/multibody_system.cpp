@@ -192,15 +192,18 @@ void MultibodySystem::roots(const double* y, double* g) const {
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     double& root = g[contacts_.size() + k];
     root = 1.0;
-    if (touch_state_[k] == TouchState::Unavailable || touch_state_[k] == TouchState::Found) continue;
-    // the surfaces cannot be apart while a Gauss point (on the slave surface) is still inside
-    if (touch_state_[k] == TouchState::Separating && !(g[k] > 0)) continue;
+    if (touch_state_[k] != TouchState::Armed) continue;
     const double gap = touches_[k].evaluate(y).gap;
-    if (touch_state_[k] == TouchState::Separating) {
-      if (!(gap > 0)) continue;
-      touch_state_[k] = TouchState::Armed;  // from 1 to a positive gap: no sign change
-    }
     root = std::isfinite(gap) ? (gap != 0.0 ? gap : -1e-30) : 1.0;
+  }
+}
+
+void MultibodySystem::rearm_touches(const double* y) const {
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    if (touch_state_[k] != TouchState::Separating) continue;
+    // the surfaces cannot be apart while a Gauss point (on the slave surface) is still inside;
+    // armed at a positive gap, the root goes from 1 to it without a sign change
+    if (contacts_[k].min_gap(y) > 0 && touch(k, y).gap > 0) touch_state_[k] = TouchState::Armed;
   }
 }
 

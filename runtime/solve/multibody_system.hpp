@@ -49,6 +49,9 @@ public:
   void released(std::size_t k) const {
     if (touch_state_[k] == TouchState::Found) touch_state_[k] = TouchState::Separating;
   }
+  /// At an accepted step (never inside the root finder's search, which goes back and forth in
+  /// time): released contacts whose surfaces are apart at y are armed again.
+  void rearm_touches(const double* y) const;
   /// Contact states at y (for output); also brings the quasistatic modes up to date for y.
   std::vector<ContactState> contact_states(const double* y) const;
   /// Energies at y, given `states` = contact_states(y) (evaluated once for both).

@@ -34,6 +34,7 @@ Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
       system_(scene_, std::move(sids)),
       integrator_(system_, scene_.simulation, initial_state(system_)) {
   integrator_.on_step([this](double t, const double* y) {
+    system_.rearm_touches(y);
     if (observer_) observer_->step(t, y);
   });
   if (!scene_.simulation.allow_initial_penetration) refuse_initial_penetration();

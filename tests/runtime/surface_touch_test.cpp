@@ -144,3 +144,33 @@ TEST_CASE("impact detection: a bouncing sphere's surfaces touch once per impact"
     CHECK(std::abs(touch.gap) < 1e-12);
   }
 }
+
+TEST_CASE("impact detection: two flexible spheres touch at their poles, found on both patches", "[runtime][unit]") {
+  // 0.2 um apart, closing at 0.2 m/s: the touch at 1 us, at each sphere's pole (the end of its
+  // patch on the axis), the target's parameter from the projection onto its deformed patch
+  const test::ScratchDir dir("touch_pair");
+  auto sphere = [](const std::string& name, const std::string& y, const std::string& vy, const std::string& extra) {
+    return "[[flexible_body]]\nname = \"" + name + "\"\nsid = \"" + std::string(ISOSID_GOLDEN_DIR) + "/sphere_small.sid.h5\"\n" +
+           "position = [0.0, " + y + ", 0.0]\nvelocity = [0.0, " + vy + ", 0.0]\nhigh_modes = \"quasistatic\"\n" + extra;
+  };
+  std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 3e-6\noutput_interval = 1e-6\n"
+                                          << sphere("upper", "0.0100001", "-0.1", "")
+                                          << sphere("lower", "-0.0100001", "0.1", "orientation = [3.141592653589793, 0.0, 0.0]\n")
+                                          << "[[contact]]\nname = \"pair\"\nbody = \"lower\"\nsurface = \"contact\"\ntarget = \"upper\"\n"
+                                          << "target_surface = \"contact\"\npenalty = 5e17\n";
+  const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
+  const format::Sid sid = format::read_sid(scene.bodies[0].sid_file);
+  run::Simulation simulation(scene, {sid, sid});
+  TouchObserver observer;
+  REQUIRE(simulation.run(observer).completed());
+  REQUIRE(observer.touches.size() == 1);
+  const auto& [time, touch] = observer.touches.front();
+  CHECK(std::abs(time - 1e-6) < 1e-9);
+  CHECK(touch.point.norm() < 1e-9 * 0.01);  // the poles meet at the origin
+  run::DeformedPatch curve(*format::find_master_patch(sid, sid.contact_surfaces.front().master_patch), 2);
+  run::DeformedPatch::Point p;
+  curve.evaluate(Eigen::Vector2d(curve.lower(0), 0.0), p);
+  const double pole = std::abs(p.C.x()) < 1e-12 ? curve.lower(0) : curve.upper(0), range = curve.upper(0) - curve.lower(0);
+  CHECK(std::abs(touch.slave_parameter(0) - pole) < 1e-9 * range);
+  CHECK(std::abs(touch.target_parameter(0) - pole) < 1e-9 * range);
+}
