@@ -39,8 +39,9 @@ public:
             Eigen::VectorXd& d) const;
   /// The last solve reached the model's solution (to round-off) within kMaxIterations.
   bool solved() const { return solved_; }
-  /// At start()'s z0, then at the last solve's step: the recorded points' gaps in the model (first terms.count), the
-  /// generalized contact force and its friction part, the residual and the merit energy.
+  /// At start()'s z0, then at the last solve's step: the recorded points' gaps in the model
+  /// (first terms.count), the generalized contact force and its friction part, the residual
+  /// and the merit energy.
   const Eigen::VectorXd& gaps() const { return gaps_; }
   const Eigen::VectorXd& force() const { return force_; }
   const Eigen::VectorXd& friction() const { return friction_; }
@@ -54,7 +55,7 @@ private:
   double energy_along(const QuasistaticTerms& terms, double alpha) const;
 
   mutable Eigen::MatrixXd U_, V_;
-  mutable Eigen::VectorXd gaps_, rates_, z_, R_, step_, force_, friction_, Kz_;
+  mutable Eigen::VectorXd gaps_, rates_, z_, R_, step_, force_, friction_;
   mutable std::vector<char> pressed_;
   mutable bool solved_ = false;
   mutable double energy_ = 0;
