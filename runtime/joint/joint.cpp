@@ -168,11 +168,17 @@ void Joint::add_load(int s, int row, double amount, const double* y, Generalized
   f.elastic.noalias() += a.psi.transpose() * T;
 }
 
-std::pair<double, double> Joint::errors(const double* y) const {
+Eigen::VectorXd Joint::residual(const double* y) const {
   const AttachmentMotion m0 = motion(0, y), m1 = motion(1, y);
-  double angle = 0;
-  if (rotation_rows_) angle = (directions(y).rightCols(rotation_rows_).transpose() * rotation_error(m0, m1)).norm();
-  return {(m0.x - m1.x).norm(), angle};
+  Eigen::VectorXd out(rows());
+  out.head<3>() = m0.x - m1.x;
+  if (rotation_rows_) out.tail(rotation_rows_) = directions(y).rightCols(rotation_rows_).transpose() * rotation_error(m0, m1);
+  return out;
+}
+
+std::pair<double, double> Joint::errors(const double* y) const {
+  const Eigen::VectorXd c = residual(y);
+  return {c.head<3>().norm(), c.tail(rotation_rows_).norm()};
 }
 
 }  // namespace isosid::run

@@ -56,6 +56,9 @@ public:
   /// Adds row j's unit load (force or torque along its direction, of sign +1 on side 0 and -1
   /// on side 1) times `amount` to the generalized force `f` of side s's body.
   void add_load(int s, int row, double amount, const double* y, GeneralizedForce& f) const;
+  /// The rows' position-level residuals at y: the attachments' separation (m, world), then
+  /// the orientation error along the rotational rows (rad); zero where the joint holds.
+  Eigen::VectorXd residual(const double* y) const;
   /// Position error (m) and orientation error (rad) at y.
   std::pair<double, double> errors(const double* y) const;
 

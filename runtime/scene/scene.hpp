@@ -56,7 +56,9 @@ struct BodySpec {
   std::string high_modes = "dynamic";
   double quasistatic_above_hz = -1;  ///< > 0: modes above this frequency are the high ones
   /// "rest": q0 (or zero); "steady": the integrated modes start in equilibrium with the
-  /// initial spin (centrifugal deformation), so a spinning body does not start ringing
+  /// initial spin (centrifugal deformation), so a spinning body does not start ringing;
+  /// "static": in their static deflection under everything acting at the start, the frame
+  /// moved with it so that the joints hold (solve/static_start; seed 001 §6)
   std::string elastic_start = "rest";
 };
 

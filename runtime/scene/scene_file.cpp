@@ -225,8 +225,9 @@ Scene read_scene_file(const std::string& path) {
       f.qdot0 = Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(v.size()));
     }
     f.elastic_start = b.string("elastic_start", f.elastic_start);
-    if (f.elastic_start != "rest" && f.elastic_start != "steady") b.fail("elastic_start", "must be rest or steady");
-    if (f.elastic_start == "steady" && (b.has("q0") || b.has("qdot0"))) b.fail("elastic_start", "steady replaces q0 and qdot0");
+    if (f.elastic_start != "rest" && f.elastic_start != "steady" && f.elastic_start != "static")
+      b.fail("elastic_start", "must be rest, steady or static");
+    if (f.elastic_start != "rest" && (b.has("q0") || b.has("qdot0"))) b.fail("elastic_start", f.elastic_start + " replaces q0 and qdot0");
     f.high_modes = b.string("high_modes", f.high_modes);
     if (f.high_modes != "dynamic" && f.high_modes != "quasistatic") b.fail("high_modes", "must be dynamic or quasistatic");
     f.quasistatic_above_hz = b.positive("quasistatic_above_hz", -1);

@@ -2,6 +2,7 @@
 #include "solve/simulation.hpp"
 
 #include "isosid/format/error.hpp"
+#include "solve/static_start.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -13,9 +14,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-Eigen::VectorXd initial_state(const MultibodySystem& system) {
+Eigen::VectorXd initial_state(const MultibodySystem& system, const Scene& scene) {
   Eigen::VectorXd y0(system.size());
   system.initial_state(y0.data());
+  std::vector<bool> static_start;
+  for (const BodySpec& b : scene.bodies) static_start.push_back(b.elastic_start == "static");
+  settle_static_start(system, static_start, y0.data());
   return y0;
 }
 
@@ -32,7 +36,7 @@ std::string diverged_body(const MultibodySystem& system, const Eigen::VectorXd& 
 Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
     : scene_(std::move(scene)),
       system_(scene_, std::move(sids)),
-      integrator_(system_, scene_.simulation, initial_state(system_)) {
+      integrator_(system_, scene_.simulation, initial_state(system_, scene_)) {
   integrator_.on_step([this](double t, const double* y) {
     system_.rearm_touches(y);
     if (observer_) observer_->step(t, y);

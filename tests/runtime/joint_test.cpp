@@ -1,9 +1,11 @@
 // Joints (runtime/joint): pendulums against their closed-form periods, reactions against
 // statics, a revolute joint holding a body whose principal axes are tilted against its hinge,
-// a fixed joint making two bodies one, a chaotic double pendulum's energy and drift, and a
-// flexible beam swinging from a SID node. Bad joint input: exit 2, one line.
+// a fixed joint making two bodies one, a chaotic double pendulum's energy and drift, a
+// flexible beam swinging from a SID node, and flexible bodies that start in their static
+// deflection. Bad joint input: exit 2, one line.
 #include "scene_runner.hpp"
 
+#include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
 
 #include <Eigen/Dense>
@@ -255,6 +257,59 @@ node = "end"
   CHECK(v_end.norm() < 1e-5 * theta * std::sqrt(kG * d));
   CHECK(s["joints"][0]["max_position_error_m"].get<double>() < 1e-10);
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-8);
+}
+
+TEST_CASE("joints: a clamped beam with a static start stays at rest in its deflection", "[runtime][joint]") {
+  // Static equilibrium is what stays at rest: released undeformed (elastic_start = "rest") the
+  // golden beam clamped at its end node rings about its deflection under gravity; started in
+  // it ("static"), its modes and its frame do not move (the clamped node stays where it was
+  // placed) and the clamp carries the weight, m g. Horizontal and inclined, so that bending
+  // and axial loads both enter.
+  const isosid::format::Sid sid = isosid::format::read_sid(kGolden + "/beam_small.sid.h5");
+  const double weight = sid.refmod.mass * kG;
+  struct Case {
+    const char* name;
+    double angle;  // of the beam's axis from horizontal, rad
+  };
+  for (const Case& c : {Case{"horizontal", 0.0}, Case{"30 degrees down", -M_PI / 6}}) {
+    double rest_motion = 0;
+    for (const char* start : {"rest", "static"}) {
+      const isosid::test::ScratchDir dir(std::string("joint-static-") + start);
+      const json s = run_scene(dir, simulation(5e-3, 1e-8) + R"(
+[[flexible_body]]
+name = "beam"
+sid = ")" + kGolden + R"(/beam_small.sid.h5"
+orientation = [0.0, 0.0, )" + number(c.angle) + R"(]
+elastic_start = ")" + start + R"("
+[[joint]]
+name = "clamp"
+type = "fixed"
+body = "beam"
+node = "end"
+)");
+      REQUIRE(s.is_object());
+      const isosid::format::h5::Reader results(dir.path("out-s.scene.toml/results.h5"));
+      const Eigen::MatrixXd q = results.matrix("/bodies/beam/q"), qdot = results.matrix("/bodies/beam/qdot");
+      const Eigen::MatrixXd v = results.matrix("/bodies/beam/velocity");
+      const double motion = (q.rowwise() - q.row(0)).cwiseAbs().maxCoeff();
+      INFO(c.name << ", " << start << " start: modes move by " << motion << " (deflection " << q.row(0).cwiseAbs().maxCoeff()
+                  << "), largest modal rate " << qdot.cwiseAbs().maxCoeff() << ", frame speed " << v.cwiseAbs().maxCoeff());
+      if (std::string(start) == "rest") {
+        rest_motion = motion;
+        REQUIRE(rest_motion > 0);  // the undeformed start does ring
+        continue;
+      }
+      // the deflection is there, and nothing moves: 1e-8 of the ringing of the undeformed start
+      // leaves room for the static solve's tolerance (1e-10 of the accelerations it removes)
+      CHECK(q.row(0).cwiseAbs().maxCoeff() > 0.1 * rest_motion);
+      CHECK(motion < 1e-8 * rest_motion);
+      CHECK(v.cwiseAbs().maxCoeff() < 1e-9);
+      const auto& force = s["joints"][0]["final_force_n"];
+      CHECK(std::abs(Eigen::Vector3d(force[0].get<double>(), force[1].get<double>(), force[2].get<double>()).norm() - weight) <
+            1e-8 * weight);
+      CHECK(s["joints"][0]["max_position_error_m"].get<double>() < 1e-12);
+    }
+  }
 }
 
 TEST_CASE("joints: bad joint input is refused with exit 2", "[runtime][joint][bad-input]") {
