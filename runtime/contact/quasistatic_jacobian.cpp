@@ -20,8 +20,8 @@ QuasistaticJacobian::QuasistaticJacobian(const std::vector<Eigen::MatrixXd>& blo
   for (const Eigen::MatrixXd& K : blocks) dense_stiffness_.block(at, at, K.rows(), K.rows()) = K, at += K.rows();
   // K_h does not change: factored once, it serves every Woodbury solve (a massless boundary
   // without contact then costs two triangular solves per Newton step, not a factorization)
-  dense_factor_.compute(dense_stiffness_);
-  dense_factor_ok_ = dense_factor_.info() == Eigen::Success;
+  dense_factor_.emplace(dense_stiffness_);
+  dense_factor_ok_ = dense_factor_->info() == Eigen::Success;
   if (n) smallest_eigenvalue_ = std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense_stiffness_, Eigen::EigenvaluesOnly).eigenvalues()(0));
 }
 
@@ -92,7 +92,7 @@ const QuasistaticJacobian::Factorization& QuasistaticJacobian::factorization(con
 void QuasistaticJacobian::solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   if (dense_stiffness_.size()) {
     x = b;
-    dense_factor_.solveInPlace(x);
+    dense_factor_->solveInPlace(x);
   } else {
     x = b.cwiseQuotient(stiffness_);
   }
@@ -130,7 +130,7 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
   auto scaled_U = f.scaled_U.leftCols(r);
   if (dense) {
     scaled_U = U;
-    dense_factor_.solveInPlace(scaled_U);
+    dense_factor_->solveInPlace(scaled_U);
   } else {
     scaled_U = U.array().colwise() / stiffness_.array();
   }

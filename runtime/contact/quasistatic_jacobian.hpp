@@ -10,6 +10,7 @@
 #pragma once
 #include <Eigen/Dense>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,7 +60,9 @@ private:
 
   Eigen::VectorXd stiffness_;                 ///< diagonal of K_h
   Eigen::MatrixXd dense_stiffness_;           ///< K_h if it is not diagonal
-  Eigen::LLT<Eigen::MatrixXd> dense_factor_;  ///< its Cholesky factor
+  /// its Cholesky factor (engaged for a dense K_h only: a default LLT leaves its status
+  /// uninitialized, which moving this object would read)
+  std::optional<Eigen::LLT<Eigen::MatrixXd>> dense_factor_;
   bool dense_factor_ok_ = false;              ///< K_h is positive definite (else the Jacobian is factored each time)
   double smallest_eigenvalue_ = 0;
   mutable std::vector<Factorization> kept_ = std::vector<Factorization>(kKeptFactorizations);
