@@ -6,8 +6,8 @@
 
 namespace isosid::run {
 
-/// The closest point of a target to a slave point, filled for every candidate point (free
-/// ones too: the quasistatic solve's linear model needs their shape rows on the target).
+/// The closest point of a target to a slave point. Velocity, body point and Psi are only
+/// filled where the point penetrates (gap < 0): only there does a force act.
 struct TargetPoint {
   double gap = 0;                                       ///< signed distance, m (negative: penetration)
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY();    ///< world unit normal, out of the target

@@ -73,6 +73,7 @@ bool MasterPatchTarget::project(const Eigen::Vector3d& x_world, const double* y,
   // beside the edge of the patch rather than above it: no candidate
   if ((d - out.gap * n).norm() > std::abs(out.gap) + 1e-9 * radius_) return false;
   out.normal = A_ * n;
+  if (out.gap >= 0) return true;  // the rest only matters where a force acts
   out.body_point = point_.C;
   patch_.shape_rows(point_, out.Psi);
   out.velocity = body_.point_velocity(point_.C, out.Psi, y);

@@ -24,8 +24,9 @@ struct QuasistaticTerms {
   bool friction = false;       ///< some point has a friction direction (T in use)
   /// Free points are recorded too where their effective gap g - lambda / c_p is below
   /// window + reach |Psi_h|_F, the most a change of z by `reach` (modal units) can close: the
-  /// active set of the linear model can only grow by points it knows. Points beyond cost the
-  /// outer Newton an iteration when they close after all.
+  /// active set of the linear model can only grow by points it knows. Points beyond (and the
+  /// free points of targets with quasistatic modes) cost the outer Newton an iteration when
+  /// they close after all.
   double window = INFINITY;  ///< m
   double reach = 0;          ///< modal units
   /// Some contact's broad phase found its surface clear and recorded nothing of it: its points

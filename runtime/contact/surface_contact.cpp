@@ -161,10 +161,10 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
     const double lambda = spec_.exact ? multiplier_[std::size_t(g)] : 0.0;
     if (pressure(g, t.gap) <= 0) {
       // free: recorded if a change of z by terms.reach could close its gap (|Psi_h u| <=
-      // |Psi_h|_F |u| on either side), or it is within the window
-      double reach = slave_qs ? quasistatic_row_norms_(g) : 0.0;
-      if (master_qs) reach += t.Psi.rightCols(master->n_quasistatic()).norm();
-      if (t.gap - lambda / spec_.penalty >= terms.window + terms.reach * reach) return;
+      // |Psi_h|_F |u|), or it is within the window; not against a target with quasistatic
+      // modes, whose shape rows at the point are known only where it penetrates
+      if (master_qs) return;
+      if (t.gap - lambda / spec_.penalty >= terms.window + terms.reach * quasistatic_row_norms_(g)) return;
     }
     const Eigen::Index k = terms.add_point(t.gap, lambda, spec_.penalty, surface_.weight(g));
     Eigen::Vector3d direction = Eigen::Vector3d::Zero();
