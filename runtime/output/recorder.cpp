@@ -289,14 +289,15 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     c["intervals"] = list.size();
     // the exact surfaces' first instants of contact, one per impact
     c["touches"] = json::array();
-    for (const auto& [time, touch] : touches_[k]) {
+    for (const auto& entry : touches_[k]) {
+      const Touch& touch = entry.second;  // (a structured binding could not be captured below in C++17)
       auto parameters = [&](const Eigen::Vector2d& u) {
         if (std::isnan(u(0))) return json(nullptr);
-        json list = json::array();
-        for (int a = 0; a < touch.parameter_dim; ++a) list.push_back(u(a));
-        return list;
+        json values = json::array();
+        for (int a = 0; a < touch.parameter_dim; ++a) values.push_back(u(a));
+        return values;
       };
-      c["touches"].push_back({{"time_s", time}, {"gap_m", touch.gap}, {"slave_parameter", parameters(touch.slave_parameter)},
+      c["touches"].push_back({{"time_s", entry.first}, {"gap_m", touch.gap}, {"slave_parameter", parameters(touch.slave_parameter)},
                               {"target_parameter", parameters(touch.target_parameter)},
                               {"point_m", {touch.point.x(), touch.point.y(), touch.point.z()}}});
     }
