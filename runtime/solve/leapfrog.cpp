@@ -48,7 +48,7 @@ void Leapfrog::step(double& t, double dt) {
   ++steps_;
   // contact onset and release within the step, with the static solve of the rhs at these
   // positions (the kick since changed only velocities)
-  system_.gaps_after_rhs(y_.data(), new_gaps_.data());
+  system_.gaps(y_.data(), new_gaps_.data());
   gap_changes_.clear();
   for (std::size_t k = 0; k < gaps_.size(); ++k) {
     const bool was_open = gaps_[k] > 0, is_open = new_gaps_[k] > 0;

@@ -184,7 +184,10 @@ void MultibodySystem::gaps(const double* y, double* g) const {
   // zero gap therefore counts as touching: -1e-30 m, far below any physical gap yet far
   // above the denormals that would overflow the root finder's secant step.
   update_quasistatic(y);
-  gaps_after_rhs(y, g);
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    const double gap = contacts_[k].min_gap(y);
+    g[k] = gap != 0.0 ? gap : -1e-30;
+  }
 }
 
 void MultibodySystem::roots(const double* y, double* g) const {
@@ -210,13 +213,6 @@ void MultibodySystem::rearm_touches(const double* y) const {
 const Touch& MultibodySystem::touch(std::size_t k, const double* y) const {
   update_quasistatic(y);
   return touches_[k].evaluate(y);
-}
-
-void MultibodySystem::gaps_after_rhs(const double* y, double* g) const {
-  for (std::size_t k = 0; k < contacts_.size(); ++k) {
-    const double gap = contacts_[k].min_gap(y);
-    g[k] = gap != 0.0 ? gap : -1e-30;
-  }
 }
 
 std::vector<ContactState> MultibodySystem::contact_states(const double* y) const {

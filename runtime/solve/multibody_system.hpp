@@ -33,10 +33,9 @@ public:
   /// returns that call's result: ARKODE's ERKStep evaluates the start of each step again
   /// although its Dormand-Prince stages ended there (about one call in six).
   void rhs(double t, const double* y, double* ydot) const;
-  /// One gap function per contact (for event location): the smallest signed gap.
+  /// One gap function per contact (for event location): the smallest signed gap. Right after
+  /// rhs(y) the static solve already holds for y and is not repeated.
   void gaps(const double* y, double* g) const;
-  /// The same right after rhs(y), whose static solve already holds for y (not solved again).
-  void gaps_after_rhs(const double* y, double* g) const;
   /// Root functions for event location: gaps() (one per contact), then one per contact for
   /// the touch of its exact surfaces (SurfaceTouch) while that is armed, else a constant 1.
   std::size_t root_count() const { return 2 * contacts_.size(); }
