@@ -1,5 +1,6 @@
-// In-process test of QuasistaticModes: one static solve of the high modes under penalty
-// contact against a dense direct solve of the same equilibrium.
+// In-process tests of QuasistaticModes: one static solve of the high modes under penalty
+// contact against a dense direct solve of the same equilibrium, and a partial contact against
+// the optimality conditions.
 #include "contact/quasistatic_modes.hpp"
 #include "contact/shape_target.hpp"
 #include "support/lumped_sid.hpp"
@@ -9,6 +10,29 @@
 #include <algorithm>
 
 using namespace isosid;
+
+namespace {
+/// The body of `sid` with quasistatic high modes against the fixed plane `plane` at `penalty`:
+/// what QuasistaticModes solves (the body's frame is the world's at its initial state).
+struct PlaneContact {
+  PlaneContact(const format::Sid& sid, const run::ShapeSpec& plane, double penalty) : ground(plane) {
+    run::BodySpec spec;
+    spec.name = "body";
+    spec.high_modes = "quasistatic";
+    bodies.push_back(std::make_unique<run::FloatingBody>(spec, sid, run::Dimension::Solid));
+    const run::ContactSpec contact{"impact", "body", sid.contact_surfaces.front().name, plane.name, "", penalty, 0.0, 1e-6};
+    contacts.emplace_back(contact, body(), ground);
+    modes = std::make_unique<run::QuasistaticModes>(bodies, contacts);
+  }
+  PlaneContact(const PlaneContact&) = delete;  // the contacts refer to the members
+  const run::FloatingBody& body() const { return *bodies.front(); }
+
+  std::vector<std::unique_ptr<run::FloatingBody>> bodies;
+  const run::ShapeTarget ground;
+  std::vector<run::SurfaceContact> contacts;
+  std::unique_ptr<run::QuasistaticModes> modes;
+};
+}  // namespace
 
 TEST_CASE("QuasistaticModes: one static solve equals a dense direct solve", "[runtime][unit]") {
   format::Sid sid = test::lumped_sid(test::random_lumped_body(12, 6, 11));
@@ -20,18 +44,9 @@ TEST_CASE("QuasistaticModes: one static solve equals a dense direct solve", "[ru
   plane.normal = {0, 1, 0};
   plane.point = {0, s.position.col(1).maxCoeff() + 0.1, 0};
   const double penalty = 1e10;
-  const run::ContactSpec contact_spec{"impact", "body", s.name, "ground", "", penalty, 0.0, 1e-6};
-  run::BodySpec spec;
-  spec.name = "body";
-  spec.high_modes = "quasistatic";
-
-  std::vector<std::unique_ptr<run::FloatingBody>> bodies;
-  bodies.push_back(std::make_unique<run::FloatingBody>(spec, sid, run::Dimension::Solid));
-  const run::FloatingBody& body = *bodies.front();
-  const run::ShapeTarget ground(plane);
-  std::vector<run::SurfaceContact> contacts;
-  contacts.emplace_back(contact_spec, body, ground);
-  const run::QuasistaticModes modes(bodies, contacts);
+  const PlaneContact setup(sid, plane, penalty);
+  const run::FloatingBody& body = setup.body();
+  const run::QuasistaticModes& modes = *setup.modes;
   REQUIRE(modes.size() == 4);
   Eigen::VectorXd y(body.state_size());
   body.initial_state(y.data());
@@ -90,17 +105,9 @@ TEST_CASE("QuasistaticModes: a tilted plane that presses part of the surface mee
   // a penalty whose contact stiffness matches the modes' (c_p w |Psi|^2 ~ K): the deformation
   // then moves points across the plane, so the active set is not the one of the rigid body
   const double penalty = K.diagonal().mean() / (s.weight.mean() * s.Psi.rightCols(nh).squaredNorm() / double(s.points()));
-  const run::ContactSpec contact_spec{"impact", "body", s.name, "ground", "", penalty, 0.0, 1e-6};
-  run::BodySpec spec;
-  spec.name = "body";
-  spec.high_modes = "quasistatic";
-  std::vector<std::unique_ptr<run::FloatingBody>> bodies;
-  bodies.push_back(std::make_unique<run::FloatingBody>(spec, sid, run::Dimension::Solid));
-  const run::FloatingBody& body = *bodies.front();
-  const run::ShapeTarget ground(plane);
-  std::vector<run::SurfaceContact> contacts;
-  contacts.emplace_back(contact_spec, body, ground);
-  const run::QuasistaticModes modes(bodies, contacts);
+  const PlaneContact setup(sid, plane, penalty);
+  const run::FloatingBody& body = setup.body();
+  const run::QuasistaticModes& modes = *setup.modes;
   Eigen::VectorXd y(body.state_size());
   body.initial_state(y.data());
   // gaps from the SID: signed distance to the plane of X + Psi_h z shifted by `lift` along the
