@@ -75,7 +75,7 @@ double SurfaceContact::for_each_point(const double* y, F&& f) const {
     for (Eigen::Index g = 0; g < surface_.points(); ++g) {
       P.head(dim_) = surface_.position.row(g).transpose() + displacement_.segment(g * dim_, dim_);
       point_.gap = base + n_body.dot(P);
-      point_.body_point = r + A * P - point_.gap * plane_normal;
+      if (point_.gap < 0) point_.body_point = r + A * P - point_.gap * plane_normal;  // filled where it presses (TargetPoint)
       f(g, surface_.Psi.middleRows(g * dim_, dim_), P, A, point_);
     }
     return clearance;

@@ -41,7 +41,7 @@ const Touch& SurfaceTouch::evaluate(const double* y) const {
   };
 
   // start: the last closest point, else the best of a grid of 9 (or 81) parameters
-  Eigen::Vector2d u = touch_.slave_parameter;
+  Eigen::Vector2d u = Eigen::Vector2d::Constant(NAN);
   double gap = INFINITY;
   Eigen::Vector2d gradient;
   if (std::isnan(last_parameter_(0)) || !distance(y, last_parameter_, gap, gradient)) {

@@ -66,8 +66,9 @@ void Simulation::start(SimulationObserver& observer) {
   for (std::size_t k = 0; k < gap.size(); ++k)
     if (gap[k] < 0) observer.contact_event(int(k), true, t_);  // starts in contact
   for (std::size_t k = 0; k < gap.size(); ++k) {
-    if (!(system_.touch(k, state().data()).gap < 0)) continue;
-    observer.touch(int(k), t_, system_.touch(k, state().data()));  // starts touching
+    const Touch& touch = system_.touch(k, state().data());
+    if (!(touch.gap < 0)) continue;
+    observer.touch(int(k), t_, touch);  // starts touching
     system_.touched(k);
   }
 }

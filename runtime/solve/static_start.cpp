@@ -76,7 +76,6 @@ void settle_static_start(const MultibodySystem& system, const std::vector<bool>&
   const double tolerance = 1e-10 * std::max(F.head(accelerations).cwiseAbs().maxCoeff(), 1e-300);
   Eigen::MatrixXd J(rows, n);
   for (int iteration = 0; iteration < 20; ++iteration) {
-    equations(x, F);
     const double joint_error = rows > accelerations ? F.tail(rows - accelerations).cwiseAbs().maxCoeff() : 0.0;
     if (F.head(accelerations).cwiseAbs().maxCoeff() <= tolerance && joint_error <= 1e-13) {
       place(x);
@@ -93,6 +92,7 @@ void settle_static_start(const MultibodySystem& system, const std::vector<bool>&
     // pendulum's swing) stay as placed
     x += J.completeOrthogonalDecomposition().solve(-F);
     if (!x.allFinite()) break;
+    equations(x, F);
   }
   place(Eigen::VectorXd::Zero(n));  // as placed
   throw format::ComputationError("elastic_start = \"static\": Newton's method found no static equilibrium of the flexible bodies "
