@@ -34,6 +34,36 @@ Vector3d tait_bryan_angles(const Matrix3d& A) {
   return {std::atan2(-A(1, 2), A(2, 2)), beta, std::atan2(-A(0, 1), A(0, 0))};
 }
 
+namespace {
+/// The SID's inertia terms involve only the first m coordinates: every term is exactly zero
+/// in the rows, blocks and first-order coefficients of the others (a massless boundary as
+/// isosid-prep writes it; a SID from elsewhere may not, and is then evaluated in full).
+bool inertia_only_in_leading(const format::Sid& s, Index m) {
+  auto zero_after = [m](const format::Taylor& t, Index row_block, Index col_block) {
+    auto tail_zero = [&](const MatrixXd& A) {
+      return (row_block == 0 || A.bottomRows(A.rows() - row_block * m).isZero(0.0)) &&
+             (col_block == 0 || A.rightCols(A.cols() - col_block * m).isZero(0.0));
+    };
+    if (!tail_zero(t.M0)) return false;
+    for (std::size_t j = 0; j < t.M1.size(); ++j)
+      if (Index(j) >= m ? !t.M1[j].isZero(0.0) : !tail_zero(t.M1[j])) return false;
+    return true;
+  };
+  // row_block / col_block: 1 where rows / columns run over the coordinates (3 per coordinate for 3 x 3nq terms)
+  return zero_after(s.mdCM, 0, 0) && zero_after(s.J, 0, 0) && zero_after(s.Ct, 1, 0) && zero_after(s.Cr, 1, 0) &&
+         zero_after(s.Gr, 0, 3) && zero_after(s.Ge, 1, 3) && zero_after(s.Oe, 1, 0);
+}
+
+/// out = t(q) in its first `rows` rows, from the first-order coefficients of the first m
+/// coordinates (inertia_only_in_leading: the others are zero); the other rows are left alone.
+template <class Out>
+void evaluate_leading(const format::Taylor& t, const VectorXd& q, Index m, Index rows, Out&& out) {
+  out.topRows(rows) = t.M0.topRows(rows);
+  for (Index j = 0; j < std::min<Index>(m, Index(t.M1.size())); ++j)
+    if (q(j) != 0) out.topRows(rows) += t.M1[std::size_t(j)].topRows(rows) * q(j);
+}
+}  // namespace
+
 FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dimension)
     : name_(spec.name), sid_(std::move(sid)), spec_(spec), stiffness_(sid_.Ke.M0), damping_(sid_.De.M0),
       B_(sid_.nq(), 6), Ge_(sid_.nq(), 3), Oe_(sid_.nq(), 6), hq_(sid_.nq()) {
@@ -69,6 +99,10 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
       while (n_dynamic_ < n - massless && sid_.refmod.frequencies_hz(n_dynamic_) <= spec.quasistatic_above_hz) ++n_dynamic_;
     }
   }
+  // the massless boundary carries no inertia: the floating-frame terms (quadratic in nq)
+  // then run over the modes alone (seed 003's beam: 40 of 283 coordinates)
+  n_inertial_ = massless > 0 && inertia_only_in_leading(sid_, n - massless) ? n - massless : n;
+  B_.setZero(), Oe_.setZero();  // rows beyond n_inertial_ stay zero
   q_high_ = VectorXd::Zero(n - n_dynamic_);
   // in the normal form Ke's off-diagonal entries are round-off, dropped as ModalMatrix drops them
   const MatrixXd coupling = sid_.Ke.M0.bottomLeftCorner(n - n_dynamic_, n_dynamic_);
@@ -122,7 +156,7 @@ Eigen::Quaterniond FloatingBody::orientation(const double* y) const {
 }
 
 double FloatingBody::derivatives(const double* y, const GeneralizedForce& applied, const Vector3d& gravity, double* ydot) const {
-  const Index n = nq(), nd = n_dynamic_;
+  const Index nd = n_dynamic_;
   const VectorXd& qv = q(y);
   const VectorXd& qd = qdot(y);
   const Vector3d w = omega(y);
@@ -143,11 +177,12 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   // mass matrix blocks at q (SID Taylor terms), into the preallocated workspace: the
   // right-hand side runs millions of times and must not allocate
   const double m = sid_.refmod.mass;
+  const Index ni = n_inertial_;
   Vector3d mc;
-  sid_.mdCM.evaluate(qv, mc);
+  evaluate_leading(sid_.mdCM, qv, ni, 3, mc);
   MatrixXd& B = B_;  // [Ct, Cr], each evaluated in place
   auto Ct = B.leftCols(3), Cr = B.rightCols(3);
-  sid_.Ct.evaluate(qv, Ct);
+  evaluate_leading(sid_.Ct, qv, ni, ni, Ct);
   Eigen::Matrix<double, 6, 6> A6 = Eigen::Matrix<double, 6, 6>::Zero();
   A6.topLeftCorner<3, 3>() = m * Matrix3d::Identity();
   A6.topRightCorner<3, 3>() = skew(mc).transpose();
@@ -164,21 +199,22 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   damping_.subtract_product(qd, hq);
   hq.noalias() += B.leftCols(3) * gK;  // Ct g: gravity on the modes
   if (rotates_) {
-    sid_.Cr.evaluate(qv, Cr);
+    evaluate_leading(sid_.Cr, qv, ni, ni, Cr);
     Matrix3d J;
-    sid_.J.evaluate(qv, J);
+    evaluate_leading(sid_.J, qv, ni, 3, J);
     A6.bottomRightCorner<3, 3>() = J;
     const Matrix3d W = skew(w);
     Vector3d Ct_qdot;
     Ct_qdot.noalias() = Ct.transpose() * qd;  // into a fixed vector: no temporary
     hr.head<3>() += -W * W * mc - 2 * W * Ct_qdot;
-    // Gr(q, qdot) = sum_k (Gr0_k + sum_j Gr1_kj q_j) qdot_k
-    Matrix3d Gr = Matrix3d::Zero();
-    for (Index kk = 0; kk < n; ++kk) {
-      Matrix3d block = sid_.Gr.M0.middleCols(3 * kk, 3);
-      for (std::size_t j = 0; j < sid_.Gr.M1.size(); ++j) block += sid_.Gr.M1[j].middleCols(3 * kk, 3) * qv(Index(j));
-      Gr += block * qd(kk);
-    }
+    // Gr(q, qdot) = sum_k (Gr0_k + sum_j Gr1_kj q_j) qdot_k. The 3x3 blocks of a 3 x 3nq term
+    // are consecutive 9-vectors, so each sum over k is one 9 x nq matrix-vector product
+    // (the order-1 part reads 9 nq^2 numbers per call: this is the floating frame's largest term)
+    using Blocks = Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic>>;
+    Eigen::Matrix<double, 9, 1> gr = Blocks(sid_.Gr.M0.data(), 9, ni) * qd.head(ni);
+    for (Index j = 0; j < std::min<Index>(ni, Index(sid_.Gr.M1.size())); ++j)
+      if (qv(j) != 0) gr.noalias() += qv(j) * (Blocks(sid_.Gr.M1[std::size_t(j)].data(), 9, ni) * qd.head(ni));
+    const Eigen::Map<const Matrix3d> Gr(gr.data());
     hr.tail<3>() += -W * (J * w) - Gr * w;
     add_rotation_loads(qv, qd, w, hq);
   } else {
@@ -220,11 +256,12 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
 
 void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, const Vector3d& w, Eigen::Ref<VectorXd> out) const {
   if (!rotates_) return;
-  Ge_.setZero();
-  for (Index j = 0; j < nq(); ++j) Ge_ += sid_.Ge.M0.middleCols(3 * j, 3) * qd(j);
+  // Ge(qdot) = sum_j Ge_j qdot_j: the nq x 3 blocks are consecutive, one matrix-vector product
+  const Index ni = n_inertial_;
+  Eigen::Map<VectorXd>(Ge_.data(), Ge_.size()).noalias() = Eigen::Map<const MatrixXd>(sid_.Ge.M0.data(), 3 * nq(), ni) * qd.head(ni);
   Eigen::Matrix<double, 6, 1> wq;
   wq << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
-  sid_.Oe.evaluate(qv, Oe_);
+  evaluate_leading(sid_.Oe, qv, ni, ni, Oe_);
   out.noalias() -= Ge_ * w;
   out.noalias() -= Oe_ * wq;
 }

@@ -137,6 +137,7 @@ private:
   bool rotates_ = true;           ///< false if all rotations are locked: rotational terms vanish
   Eigen::Index offset_ = 0;
   Eigen::Index n_dynamic_ = 0;
+  Eigen::Index n_inertial_ = 0;  ///< leading coordinates the inertia terms involve (all but a massless boundary)
   Eigen::Index quasistatic_offset_ = 0;
   mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
   // workspace of derivatives(): [Ct(q) Cr(q)], Ge(qdot), Oe(q), h_q
