@@ -9,7 +9,14 @@
 namespace isosid::run {
 
 DeformedPatch::DeformedPatch(const format::MasterPatch& patch, int dim)
-    : patch_(patch), dim_(dim), net_(patch.control_points), Phi_transposed_(patch.Phi.transpose()) {
+    : patch_(patch), dim_(dim), net_(patch.control_points), moved_(std::size_t(patch.control_points.rows()), 0),
+      q_(Eigen::VectorXd::Zero(patch.Phi.cols())), Phi_transposed_(patch.Phi.transpose()) {
+  const Eigen::Index ncp = patch.control_points.rows();
+  for (Eigen::Index i = 0; i < ncp; ++i) reference_center_.head(dim) += patch.control_points.row(i).transpose() / double(ncp);
+  for (Eigen::Index i = 0; i < ncp; ++i) {
+    reference_radius_ = std::max(reference_radius_, (patch.control_points.row(i).transpose() - reference_center_.head(dim)).norm());
+    largest_row_norm_ = std::max(largest_row_norm_, Phi_transposed_.middleCols(i * dim, dim).norm());
+  }
   std::vector<std::vector<double>> mids(2, std::vector<double>{0.0});
   for (int d = 0; d < parameter_dim(); ++d) {
     const std::vector<double> k = format::unique_knots(patch.knots[std::size_t(d)]);
@@ -21,10 +28,23 @@ DeformedPatch::DeformedPatch(const format::MasterPatch& patch, int dim)
 }
 
 void DeformedPatch::deform(const Eigen::VectorXd& q) {
-  displacement_.noalias() = patch_.Phi * q;  // row i*dim+a: component a of control point i
-  const Eigen::Index ncp = patch_.control_points.rows();
-  for (Eigen::Index i = 0; i < ncp; ++i)
-    for (int a = 0; a < dim_; ++a) net_(i, a) = patch_.control_points(i, a) + displacement_(i * dim_ + a);
+  q_ = q;
+  ++stamp_;  // every control point is stale
+}
+
+Eigen::Vector3d DeformedPatch::control_point(int i) const {
+  if (moved_[std::size_t(i)] != stamp_) {
+    for (int a = 0; a < dim_; ++a) net_(i, a) = patch_.control_points(i, a) + Phi_transposed_.col(Eigen::Index(i) * dim_ + a).dot(q_);
+    moved_[std::size_t(i)] = stamp_;
+  }
+  Eigen::Vector3d P = Eigen::Vector3d::Zero();
+  P.head(dim_) = net_.row(i).transpose();
+  return P;
+}
+
+void DeformedPatch::bounding_sphere(Eigen::Vector3d& center, double& radius) const {
+  center = reference_center_;
+  radius = reference_radius_ + largest_row_norm_ * q_.norm();
 }
 
 void DeformedPatch::evaluate(const Eigen::Vector2d& u, Point& out) const {
@@ -55,8 +75,7 @@ void DeformedPatch::evaluate(const Eigen::Vector2d& u, Point& out) const {
     for (int a = 0; a <= p[0]; ++a) {
       const int i = (span[0] - p[0] + a) + n_u * (pd > 1 ? span[1] - p[1] + b : 0);
       const double w = patch_.weights(i);
-      Eigen::Vector3d P = Eigen::Vector3d::Zero();
-      P.head(dim_) = net_.row(i).transpose();
+      const Eigen::Vector3d P = control_point(i);
       for (int k = 0; k < (pd > 1 ? 6 : 3); ++k) {
         const int ku = pd > 1 ? order_u[k] : k, kv = pd > 1 ? order_v[k] : 0;
         const double Nk = N[0](ku, a) * N[1](kv, b) * w;

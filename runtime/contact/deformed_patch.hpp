@@ -25,10 +25,14 @@ public:
   int parameter_dim() const { return int(patch_.degrees.size()); }
   double lower(int direction) const { return patch_.knots[std::size_t(direction)](0); }
   double upper(int direction) const { return patch_.knots[std::size_t(direction)](patch_.knots[std::size_t(direction)].size() - 1); }
-  /// Moves the control net to X + Phi q (q: all nq elastic coordinates).
+  /// Moves the control net to X + Phi q (q: all nq elastic coordinates). A control point is
+  /// moved when an evaluation first needs it: projections near a contact visit a few spans of
+  /// a patch that may have hundreds of control points (seed 003's beam face: 893).
   void deform(const Eigen::VectorXd& q);
-  /// The deformed control net, ncp x dim.
-  const Eigen::MatrixXd& net() const { return net_; }
+  /// A sphere (body frame) that holds the deformed patch, which lies in the convex hull of its
+  /// control net: the reference net's bounding sphere grown by a bound of the control points'
+  /// displacement, max_i |Phi_i|_F |q|.
+  void bounding_sphere(Eigen::Vector3d& center, double& radius) const;
   /// Evaluates the patch at parameter u (only the first parameter_dim() entries used).
   void evaluate(const Eigen::Vector2d& u, Point& out) const;
   /// Displacement rows of a point: Psi = sum R_i Phi_i (dim x nq).
@@ -42,11 +46,19 @@ private:
   /// Newton's method for the closest point from u; false if it did not converge.
   bool newton_projection(const Eigen::Vector3d& x, Eigen::Vector2d& u, Point& point) const;
 
+  /// Control point i of the deformed net (z = 0 in 2D), moved for the last deform() if not yet.
+  Eigen::Vector3d control_point(int i) const;
+
   const format::MasterPatch& patch_;
   int dim_;
-  Eigen::MatrixXd net_;
-  Eigen::MatrixXd Phi_transposed_;   ///< nq x (ncp*dim)
-  Eigen::VectorXd displacement_;     ///< Phi q
+  mutable Eigen::MatrixXd net_;       ///< ncp x dim, rows valid where moved_ holds the current stamp
+  mutable std::vector<long> moved_;   ///< per control point: the deform() stamp it was moved for
+  long stamp_ = 0;
+  Eigen::VectorXd q_;                 ///< the elastic coordinates of the last deform()
+  Eigen::MatrixXd Phi_transposed_;   ///< nq x (ncp*dim): each control point's rows are contiguous columns
+  Eigen::Vector3d reference_center_ = Eigen::Vector3d::Zero();
+  double reference_radius_ = 0;
+  double largest_row_norm_ = 0;       ///< max_i |Phi_i|_F
   std::vector<Eigen::Vector2d> midpoints_;  ///< knot-span midpoints: starting guesses of projections
 };
 

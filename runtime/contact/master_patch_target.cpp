@@ -33,12 +33,7 @@ void MasterPatchTarget::update(const double* y) const {
   A_ = body_.orientation(y).toRotationMatrix();
   r_ = body_.r(y);
   patch_.deform(body_.q(y));
-  // the patch lies in the convex hull of its control net, hence in the net's bounding sphere
-  const Eigen::MatrixXd& net = patch_.net();
-  center_.setZero();
-  for (Eigen::Index i = 0; i < net.rows(); ++i) center_.head(dim_) += net.row(i).transpose() / double(net.rows());
-  radius_ = 0;
-  for (Eigen::Index i = 0; i < net.rows(); ++i) radius_ = std::max(radius_, (net.row(i).transpose() - center_.head(dim_)).norm());
+  patch_.bounding_sphere(center_, radius_);
 }
 
 double MasterPatchTarget::clearance(const Eigen::Vector3d& center, double radius) const {
