@@ -7,7 +7,8 @@
 namespace isosid::run {
 
 /// The closest point of a target to a slave point. Velocity, body point and Psi are only
-/// filled where the point penetrates (gap < 0): only there does a force act.
+/// filled where the point penetrates (gap < 0), for a caller that applies loads: only there
+/// does a force act.
 struct TargetPoint {
   double gap = 0;                                       ///< signed distance, m (negative: penetration)
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY();    ///< world unit normal, out of the target
@@ -18,6 +19,10 @@ struct TargetPoint {
 
 class ContactTarget {
 public:
+  /// What a projection is for: the gap and normal alone (onset checks, multipliers, touches),
+  /// or also what the loads of a penetrating point need (velocity, body point, Psi).
+  enum class Fill { Gap, Loads };
+
   virtual ~ContactTarget() = default;
   virtual const std::string& name() const = 0;
   /// The body carrying the target (it receives the reactions), or nullptr for a fixed surface.
@@ -30,7 +35,7 @@ public:
   /// Closest point to the world point x at the state of the last update(). `hint` holds the
   /// warm start of iterative projections (NaN: none yet) and is updated. Returns false when
   /// x is no candidate (far from the target, or beside its edge).
-  virtual bool project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d& hint) const = 0;
+  virtual bool project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d& hint, Fill fill) const = 0;
   /// Principal curvatures (1/m, positive where convex) of the target at its point nearest
   /// the world point x, at the state of the last update(): for the Hertz estimate of an impact.
   virtual Eigen::Vector2d curvatures(const Eigen::Vector3d& x) const = 0;

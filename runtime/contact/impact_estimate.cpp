@@ -50,7 +50,7 @@ std::optional<ImpactEstimate> estimate_impact(const SurfaceContact& contact, con
   for (Eigen::Index g = 0; g < surface.points(); ++g) {
     P.head(dim) = surface.position.row(g).transpose() + surface.Psi.middleRows(g * dim, dim) * q;
     Eigen::Vector2d hint = Eigen::Vector2d::Constant(NAN);
-    if (!target.project(body.r(y) + A * P, y, point, hint)) continue;
+    if (!target.project(body.r(y) + A * P, y, point, hint, ContactTarget::Fill::Gap)) continue;
     if (nearest < 0 || point.gap < best.gap) nearest = g, best = point, best_P = P;
   }
   const format::MasterPatch* master = format::find_master_patch(sid, surface.master_patch);

@@ -18,10 +18,11 @@ QuasistaticJacobian::QuasistaticJacobian(const std::vector<Eigen::MatrixXd>& blo
   dense_stiffness_ = Eigen::MatrixXd::Zero(n, n);
   at = 0;
   for (const Eigen::MatrixXd& K : blocks) dense_stiffness_.block(at, at, K.rows(), K.rows()) = K, at += K.rows();
-  // K_h does not change: factored once, it serves every Woodbury solve (a massless boundary
-  // without contact then costs two triangular solves per Newton step, not a factorization)
-  dense_factor_.emplace(dense_stiffness_);
-  dense_factor_ok_ = dense_factor_->info() == Eigen::Success;
+  // K_h does not change: inverted once, it serves every Woodbury solve (a massless boundary
+  // without contact then costs a matrix-vector product per Newton step, not a factorization)
+  const Eigen::LLT<Eigen::MatrixXd> llt(dense_stiffness_);
+  if (llt.info() == Eigen::Success) dense_inverse_ = llt.solve(Eigen::MatrixXd::Identity(n, n));
+  used_rows_.resize(std::size_t(n));
   if (n) smallest_eigenvalue_ = std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense_stiffness_, Eigen::EigenvaluesOnly).eigenvalues()(0));
 }
 
@@ -91,8 +92,7 @@ const QuasistaticJacobian::Factorization& QuasistaticJacobian::factorization(con
 
 void QuasistaticJacobian::solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   if (dense_stiffness_.size()) {
-    x = b;
-    dense_factor_->solveInPlace(x);
+    x.noalias() = dense_inverse_ * b;
   } else {
     x = b.cwiseQuotient(stiffness_);
   }
@@ -113,10 +113,10 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
   f.rank = r;
   // the n x n Jacobian itself (forming and factoring it: n^2 r + n^3 / 3) when that is cheaper
   // than Woodbury's r x r capacitance: with a diagonal K_h (n r^2 + r^3 / 3) once more contact
-  // terms are active than there are modes; with a dense K_h and its kept Cholesky factor
-  // (2 n^2 r + n r^2) once r passes about n / 4
+  // terms are active than there are modes; with a dense K_h and its kept inverse
+  // (2 n m r + n r^2 for U's m used rows) once r passes about n / 4
   const bool dense = dense_stiffness_.size() > 0;
-  f.direct = dense ? (!dense_factor_ok_ || 4 * r > size()) : r > size();
+  f.direct = dense ? (dense_inverse_.size() == 0 || 4 * r > size()) : r > size();
   if (f.direct) {
     if (f.jacobian.rows() != size()) f.jacobian.resize(size(), size()), f.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(size());
     f.jacobian.noalias() = U * V.transpose();
@@ -129,8 +129,17 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
   if (r == 0) return;
   auto scaled_U = f.scaled_U.leftCols(r);
   if (dense) {
-    scaled_U = U;
-    dense_factor_->solveInPlace(scaled_U);
+    Eigen::Index m = 0;
+    for (Eigen::Index i = 0; i < size(); ++i)
+      if (!U.row(i).isZero(0.0)) used_rows_[std::size_t(m++)] = i;
+    if (gathered_inverse_.cols() < size() || gathered_U_.cols() < capacity)
+      gathered_inverse_.resize(size(), size()), gathered_U_.resize(size(), capacity);
+    for (Eigen::Index k = 0; k < m; ++k) {
+      const Eigen::Index i = used_rows_[std::size_t(k)];
+      gathered_inverse_.col(k) = dense_inverse_.col(i);  // = row i: K^-1 is symmetric
+      gathered_U_.row(k).head(r) = U.row(i);
+    }
+    scaled_U.noalias() = gathered_inverse_.leftCols(m) * gathered_U_.topLeftCorner(m, r);
   } else {
     scaled_U = U.array().colwise() / stiffness_.array();
   }

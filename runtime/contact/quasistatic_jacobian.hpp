@@ -10,7 +10,6 @@
 #pragma once
 #include <Eigen/Dense>
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,10 +59,13 @@ private:
 
   Eigen::VectorXd stiffness_;                 ///< diagonal of K_h
   Eigen::MatrixXd dense_stiffness_;           ///< K_h if it is not diagonal
-  /// its Cholesky factor (engaged for a dense K_h only: a default LLT leaves its status
-  /// uninitialized, which moving this object would read)
-  std::optional<Eigen::LLT<Eigen::MatrixXd>> dense_factor_;
-  bool dense_factor_ok_ = false;              ///< K_h is positive definite (else the Jacobian is factored each time)
+  /// K_h^-1 if K_h is dense and positive definite (else empty: the Jacobian is then factored
+  /// each time). Kept whole: Woodbury's K^-1 U then reads only the columns where U has
+  /// entries, and a contact point moves few coordinates of a massless boundary (its control
+  /// points' rows); a matrix product also runs faster than triangular solves.
+  Eigen::MatrixXd dense_inverse_;
+  mutable std::vector<Eigen::Index> used_rows_;     ///< rows of U with entries
+  mutable Eigen::MatrixXd gathered_inverse_, gathered_U_;  ///< K^-1 and U restricted to them
   double smallest_eigenvalue_ = 0;
   mutable std::vector<Factorization> kept_ = std::vector<Factorization>(kKeptFactorizations);
   mutable long uses_ = 0;

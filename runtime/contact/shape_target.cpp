@@ -14,10 +14,11 @@ double ShapeTarget::clearance(const Eigen::Vector3d& center, double radius) cons
   return shape_distance(shape_, A_.transpose() * (center - r_)).gap - radius;
 }
 
-bool ShapeTarget::project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d&) const {
+bool ShapeTarget::project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d&, Fill fill) const {
   const ShapeDistance d = shape_distance(shape_, A_.transpose() * (x - r_));
   out.gap = d.gap;
   out.normal = A_ * d.normal;
+  if (fill == Fill::Gap) return true;
   out.body_point = d.point;
   if (body_) {
     out.Psi.resize(body_->sid().dim(), 0);

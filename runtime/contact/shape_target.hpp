@@ -17,7 +17,7 @@ public:
   const FloatingBody* body() const override { return body_; }
   void update(const double* y) const override;
   double clearance(const Eigen::Vector3d& center, double radius) const override;
-  bool project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d& hint) const override;
+  bool project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d& hint, Fill fill) const override;
   Eigen::Vector2d curvatures(const Eigen::Vector3d& x) const override;
   bool fixed_plane(Eigen::Vector3d& normal, double& offset) const override;
 

@@ -52,7 +52,7 @@ void SurfaceContact::fit_penalty_to_contact_radius(double contact_radius) {
 }
 
 template <class F>
-double SurfaceContact::for_each_point(const double* y, F&& f) const {
+double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill, F&& f) const {
   target_.update(y);
   const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
   const Eigen::Vector3d r = body_.r(y);
@@ -83,7 +83,7 @@ double SurfaceContact::for_each_point(const double* y, F&& f) const {
   for (Eigen::Index g = 0; g < surface_.points(); ++g) {
     const auto Psi = surface_.Psi.middleRows(g * dim_, dim_);
     P.head(dim_) = surface_.position.row(g).transpose() + displacement_.segment(g * dim_, dim_);
-    if (target_.project(r + A * P, y, point_, hints_[std::size_t(g)])) f(g, Psi, P, A, point_);
+    if (target_.project(r + A * P, y, point_, hints_[std::size_t(g)], fill)) f(g, Psi, P, A, point_);
   }
   return clearance;
 }
@@ -110,7 +110,7 @@ Eigen::Vector3d SurfaceContact::point_force(Eigen::Index g, double p, const Eige
 std::vector<PointLoad> SurfaceContact::point_loads(const double* y) const {
   std::vector<PointLoad> loads;
   const Eigen::Vector3d r = body_.r(y);
-  for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
+  for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
     const double p = pressure(g, t.gap);
     if (p <= 0) return;
     Eigen::Vector3d vt;
@@ -123,7 +123,7 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
   ContactState s;
   const FloatingBody* master = target_.body();
   const Eigen::Matrix3d A_master = master ? master->orientation(y).toRotationMatrix() : Eigen::Matrix3d::Identity();
-  for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
+  for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
     const double p = pressure(g, t.gap);
     if (p <= 0) return;
     const double w = surface_.weight(g);
@@ -157,7 +157,7 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
     if (spec_.friction > 0) add_elastic_force(Psi_h, -(A_master.transpose() * direction), terms.T.col(k).segment(at, nh));
   };
   const Eigen::Index nh = body_.n_quasistatic(), at = body_.quasistatic_offset();
-  const double clearance = for_each_point(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
+  const double clearance = for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
     const double lambda = spec_.exact ? multiplier_[std::size_t(g)] : 0.0;
     if (pressure(g, t.gap) <= 0) {
       // free: recorded if a change of z by terms.reach could close its gap (|Psi_h u| <=
@@ -193,7 +193,7 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
 double SurfaceContact::update_multipliers(const double* y) const {
   std::fill(updated_.begin(), updated_.end(), 0.0);  // points the target does not see carry none
   double violation = 0;
-  for_each_point(y, [&](Eigen::Index g, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) {
+  for_each_point(y, ContactTarget::Fill::Gap, [&](Eigen::Index g, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) {
     const double p = pressure(g, t.gap);
     updated_[std::size_t(g)] = p;
     // pressed points should touch, free ones not penetrate
@@ -207,7 +207,7 @@ double SurfaceContact::min_gap(const double* y) const {
   double smallest = INFINITY;
   // exact contact presses a point at a gap that closes to round-off, of either sign: its
   // effective gap g - lambda / c_p is negative exactly while it carries pressure
-  const double clearance = for_each_point(y, [&](Eigen::Index g, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) {
+  const double clearance = for_each_point(y, ContactTarget::Fill::Gap, [&](Eigen::Index g, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) {
     smallest = std::min(smallest, spec_.exact ? t.gap - multiplier_[std::size_t(g)] / spec_.penalty : t.gap);
   });
   if (clearance > 0) return clearance;

@@ -81,10 +81,10 @@ private:
   }
 
   /// Calls f(g, Psi_g, P, A, target point) for every slave point that is a candidate:
-  /// Psi_g its shape rows, P its body-frame position, A the slave's rotation. Returns the
-  /// broad-phase clearance (> 0: no point was visited).
+  /// Psi_g its shape rows, P its body-frame position, A the slave's rotation; the target
+  /// point filled as `fill` asks. Returns the broad-phase clearance (> 0: no point was visited).
   template <class F>
-  double for_each_point(const double* y, F&& f) const;
+  double for_each_point(const double* y, ContactTarget::Fill fill, F&& f) const;
   /// The world force on slave point g at pressure p: normal, plus friction against the
   /// sliding velocity `vt` it returns (zero without friction).
   Eigen::Vector3d point_force(Eigen::Index g, double p, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Vector3d& P,

@@ -15,7 +15,7 @@ bool SurfaceTouch::distance(const double* y, const Eigen::Vector2d& u, double& g
   patch_->evaluate(u, point_);
   Eigen::Vector3d x = point_.C;
   if (dim_ == 2) x.z() = 0;
-  if (!contact_.target().project(r_ + A_ * x, y, target_point_, target_hint_)) return false;
+  if (!contact_.target().project(r_ + A_ * x, y, target_point_, target_hint_, ContactTarget::Fill::Gap)) return false;
   gap = target_point_.gap;
   // the signed distance's gradient in space is the target's normal (where it is smooth):
   // along the patch, its product with the tangents
