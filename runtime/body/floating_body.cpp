@@ -53,15 +53,6 @@ bool inertia_only_in_leading(const format::Sid& s, Index m) {
   return zero_after(s.mdCM, 0, 0) && zero_after(s.J, 0, 0) && zero_after(s.Ct, 1, 0) && zero_after(s.Cr, 1, 0) &&
          zero_after(s.Gr, 0, 3) && zero_after(s.Ge, 1, 3) && zero_after(s.Oe, 1, 0);
 }
-
-/// out = t(q) in its first `rows` rows, from the first-order coefficients of the first m
-/// coordinates (inertia_only_in_leading: the others are zero); the other rows are left alone.
-template <class Out>
-void evaluate_leading(const format::Taylor& t, const VectorXd& q, Index m, Index rows, Out&& out) {
-  out.topRows(rows) = t.M0.topRows(rows);
-  for (Index j = 0; j < std::min<Index>(m, Index(t.M1.size())); ++j)
-    if (q(j) != 0) out.topRows(rows) += t.M1[std::size_t(j)].topRows(rows) * q(j);
-}
 }  // namespace
 
 FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dimension)
@@ -179,10 +170,10 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   const double m = sid_.refmod.mass;
   const Index ni = n_inertial_;
   Vector3d mc;
-  evaluate_leading(sid_.mdCM, qv, ni, 3, mc);
+  sid_.mdCM.evaluate(qv, mc, ni, 3);
   MatrixXd& B = B_;  // [Ct, Cr], each evaluated in place
   auto Ct = B.leftCols(3), Cr = B.rightCols(3);
-  evaluate_leading(sid_.Ct, qv, ni, ni, Ct);
+  sid_.Ct.evaluate(qv, Ct, ni, ni);
   Eigen::Matrix<double, 6, 6> A6 = Eigen::Matrix<double, 6, 6>::Zero();
   A6.topLeftCorner<3, 3>() = m * Matrix3d::Identity();
   A6.topRightCorner<3, 3>() = skew(mc).transpose();
@@ -199,9 +190,9 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   damping_.subtract_product(qd, hq);
   hq.noalias() += B.leftCols(3) * gK;  // Ct g: gravity on the modes
   if (rotates_) {
-    evaluate_leading(sid_.Cr, qv, ni, ni, Cr);
+    sid_.Cr.evaluate(qv, Cr, ni, ni);
     Matrix3d J;
-    evaluate_leading(sid_.J, qv, ni, 3, J);
+    sid_.J.evaluate(qv, J, ni, 3);
     A6.bottomRightCorner<3, 3>() = J;
     const Matrix3d W = skew(w);
     Vector3d Ct_qdot;
@@ -261,7 +252,7 @@ void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, co
   Eigen::Map<VectorXd>(Ge_.data(), Ge_.size()).noalias() = Eigen::Map<const MatrixXd>(sid_.Ge.M0.data(), 3 * nq(), ni) * qd.head(ni);
   Eigen::Matrix<double, 6, 1> wq;
   wq << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
-  evaluate_leading(sid_.Oe, qv, ni, ni, Oe_);
+  sid_.Oe.evaluate(qv, Oe_, ni, ni);
   out.noalias() -= Ge_ * w;
   out.noalias() -= Oe_ * wq;
 }

@@ -132,8 +132,8 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
     Eigen::Index m = 0;
     for (Eigen::Index i = 0; i < size(); ++i)
       if (!U.row(i).isZero(0.0)) used_rows_[std::size_t(m++)] = i;
-    if (gathered_inverse_.cols() < size() || gathered_U_.cols() < capacity)
-      gathered_inverse_.resize(size(), size()), gathered_U_.resize(size(), capacity);
+    if (gathered_inverse_.cols() != size()) gathered_inverse_.resize(size(), size());
+    if (gathered_U_.cols() < capacity) gathered_U_.resize(size(), capacity);
     for (Eigen::Index k = 0; k < m; ++k) {
       const Eigen::Index i = used_rows_[std::size_t(k)];
       gathered_inverse_.col(k) = dense_inverse_.col(i);  // = row i: K^-1 is symmetric
