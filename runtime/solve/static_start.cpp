@@ -73,14 +73,24 @@ void settle_static_start(const MultibodySystem& system, const std::vector<bool>&
     for (Eigen::Index j = 0; j < nd; ++j) scale(u.first + j) = std::max(std::abs(F(u.first_equation + j)) / u.body->sid().Ke.M0(j, j), 1e-300);
     scale.segment<6>(u.first + nd).setConstant(1e-3);  // h = 1e-9 m and rad
   }
-  const double tolerance = 1e-10 * std::max(F.head(accelerations).cwiseAbs().maxCoeff(), 1e-300);
+  // converged at 1e-10 of the accelerations the solve removes; the residual's own round-off
+  // (the modal accelerations are differences of gravity, frame and elastic terms) can sit above
+  // that: Newton then stalls, and an iterate within 1e-7 of them is that floor, not a failure
+  const double initial = std::max(F.head(accelerations).cwiseAbs().maxCoeff(), 1e-300);
+  const double tolerance = 1e-10 * initial, floor = 1e-7 * initial;
+  double best = INFINITY;
+  Eigen::VectorXd best_x = x;
+  int stalled = 0;
   Eigen::MatrixXd J(rows, n);
   for (int iteration = 0; iteration < 20; ++iteration) {
     const double joint_error = rows > accelerations ? F.tail(rows - accelerations).cwiseAbs().maxCoeff() : 0.0;
-    if (F.head(accelerations).cwiseAbs().maxCoeff() <= tolerance && joint_error <= 1e-13) {
+    const double residual = F.head(accelerations).cwiseAbs().maxCoeff();
+    if (residual <= tolerance && joint_error <= 1e-13) {
       place(x);
       return;
     }
+    if (joint_error <= 1e-13 && residual < 0.5 * best) best = residual, best_x = x, stalled = 0;
+    else if (++stalled >= 3) break;
     for (Eigen::Index j = 0; j < n; ++j) {
       Eigen::VectorXd moved = x;
       const double h = 1e-6 * std::max(std::abs(x(j)), scale(j));
@@ -94,9 +104,13 @@ void settle_static_start(const MultibodySystem& system, const std::vector<bool>&
     if (!x.allFinite()) break;
     equations(x, F);
   }
+  if (best <= floor) {
+    place(best_x);
+    return;
+  }
   place(Eigen::VectorXd::Zero(n));  // as placed
   throw format::ComputationError("elastic_start = \"static\": Newton's method found no static equilibrium of the flexible bodies "
-                                 "at the initial state in 20 steps");
+                                 "at the initial state (accelerations left at " + std::to_string(best / initial) + " of the initial ones)");
 }
 
 }  // namespace isosid::run
