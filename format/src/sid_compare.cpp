@@ -282,6 +282,20 @@ void compare_parts(const Sid& a, const Sid& b, const MatrixXd& Q, const Scales& 
   }
 }
 
+/// Section-translation shares per mode; over a cluster of one frequency their sum (a trace,
+/// unchanged by the cluster's rotation between the two files).
+void compare_section_translation(const RefMod& a, const RefMod& b, const std::vector<ModeCluster>& clusters, Comparer& cmp) {
+  cmp.same("/refmod/section_translation present", a.section_translation.size() ? "yes" : "no",
+           b.section_translation.size() ? "yes" : "no");
+  if (!a.section_translation.size() || !b.section_translation.size()) return;
+  if (a.section_translation.rows() != b.section_translation.rows()) return cmp.values("/refmod/section_translation", a.section_translation, b.section_translation, 1.0);
+  for (const ModeCluster& c : clusters)
+    cmp.values("/refmod/section_translation of mode " + std::to_string(c.first) + (c.size > 1 ? " (cluster of " + std::to_string(c.size) + ")" : ""),
+               a.section_translation.middleRows(c.first, c.size).colwise().sum(),
+               b.section_translation.middleRows(c.first, c.size).colwise().sum(), 1.0);
+  cmp.values("/refmod/long_axis", a.long_axis.cwiseAbs(), b.long_axis.cwiseAbs(), 1.0);  // its sign is arbitrary
+}
+
 /// Same names, counts and sizes of the parts; returns false if terms cannot be compared.
 bool compare_structure(const Sid& a, const Sid& b, Comparer& cmp, const Comparison& out) {
   const std::size_t before = out.differences.size();
@@ -345,6 +359,7 @@ Comparison compare_sids(const Sid& a, const Sid& b, double rtol) {
     cmp.scalar("frequency of mode " + std::to_string(i), fa(i), fb(i), 1e-6 * fmax);
   out.clusters = frequency_clusters(fa, std::max(rtol, 1e-8));
   const MatrixXd Q = align_bases(mode_rows(a, a, s), mode_rows(b, a, s), out.clusters, rtol, out);
+  compare_section_translation(a.refmod, b.refmod, out.clusters, cmp);
   compare_terms(a, b, Q, s, cmp);
   compare_parts(a, b, Q, s, cmp);
   return out;

@@ -119,6 +119,7 @@ const std::vector<const Item*>& items() {
         &body::thickness,
         &refmod::group, &refmod::q_units, &refmod::mass, &refmod::nq, &refmod::mode_names, &refmod::frequencies_hz,
         &refmod::n_low, &refmod::n_high, &refmod::reduction_method, &refmod::interface,
+        &refmod::section_translation, &refmod::long_axis,
         &damping::group, &damping::kappa, &damping::f1_hz, &damping::f2_hz, &damping::alpha1, &damping::alpha2,
         &terms_group};
     for (const Term& t : terms()) v.push_back(&t.item);

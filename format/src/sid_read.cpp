@@ -51,6 +51,12 @@ void read_refmod(const h5::Reader& r, Sid& sid) {
                                     std::to_string(nq - m.n_low));
   m.reduction_method = r.string(refmod::reduction_method.at());
   m.interface_description = r.string(refmod::interface.at());
+  if (r.exists(refmod::section_translation.at())) {
+    m.section_translation = r.matrix(refmod::section_translation.at());
+    const Eigen::VectorXd axis = r.vector(refmod::long_axis.at());
+    if (axis.size() != 3) r.fail(refmod::long_axis.at(), "has " + std::to_string(axis.size()) + " entries, expected 3");
+    m.long_axis = axis;
+  }
   Damping& d = sid.damping;
   d.kappa = r.scalar(damping::kappa.at());
   d.f1_hz = r.scalar(damping::f1_hz.at());

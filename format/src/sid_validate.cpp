@@ -98,6 +98,14 @@ void check_refmod(const Checker& c, const Sid& sid) {
   c.require(Index(r.mode_names.size()) == nq, refmod::mode_names.at(),
             "has " + std::to_string(r.mode_names.size()) + " names for nq = " + std::to_string(nq));
   c.require(r.n_low >= 0 && r.n_low <= nq, refmod::n_low.at(), "must lie in [0, nq]");
+  if (r.section_translation.size()) {
+    c.shape(refmod::section_translation.at(), r.section_translation, nq, 3);
+    // shares of a kinetic energy: within [0, 1] up to the slabs' overlap of consistent mass
+    c.require(r.section_translation.minCoeff() >= 0 && r.section_translation.maxCoeff() <= 1.5,
+              refmod::section_translation.at(), "shares must lie in [0, 1]");
+    c.finite(refmod::long_axis.at(), Eigen::MatrixXd(r.long_axis));
+    c.require(std::abs(r.long_axis.norm() - 1) < 1e-6, refmod::long_axis.at(), "must be a unit vector");
+  }
   // the low modes and the high modes each come in ascending order (the runtime takes the
   // leading ones as the low, and a frequency limit splits at the first one above it)
   for (Index i = 1; i < nq; ++i)

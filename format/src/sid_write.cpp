@@ -63,6 +63,10 @@ void write_refmod(h5::Writer& w, const Sid& sid) {
   put_integer(w, refmod::n_high, r.n_high());
   put(w, refmod::reduction_method, r.reduction_method);
   put(w, refmod::interface, r.interface_description);
+  if (r.section_translation.size()) {
+    put(w, refmod::section_translation, {}, r.section_translation);
+    put(w, refmod::long_axis, {}, Eigen::VectorXd(r.long_axis));
+  }
   const Damping& d = sid.damping;
   put_group(w, damping::group);
   put(w, damping::kappa, d.kappa);

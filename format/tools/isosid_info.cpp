@@ -51,6 +51,10 @@ json describe(const Sid& sid) {
   j["reduction_method"] = sid.refmod.reduction_method;
   j["interface"] = sid.refmod.interface_description;
   j["frequencies_hz"] = vector_json(sid.refmod.frequencies_hz);
+  if (sid.refmod.section_translation.size()) {
+    j["long_axis"] = vector_json(sid.refmod.long_axis);
+    j["section_translation"] = matrix_json(sid.refmod.section_translation);
+  }
   j["damping"] = {{"kappa", sid.damping.kappa}, {"f1_hz", sid.damping.f1_hz}, {"f2_hz", sid.damping.f2_hz},
                   {"alpha1", sid.damping.alpha1}, {"alpha2", sid.damping.alpha2}};
   j["nodes"] = json::array();
@@ -106,6 +110,16 @@ void print_text(const Sid& sid, std::ostream& out) {
   if (!sid.refmod.interface_description.empty()) out << ", interface: " << sid.refmod.interface_description;
   out << "\nfrequencies   [Hz]";
   for (Eigen::Index i = 0; i < sid.nq(); ++i) out << (i % 6 == 0 ? "\n              " : "  ") << number_text(sid.refmod.frequencies_hz(i));
+  if (sid.refmod.section_translation.size()) {
+    // modes whose cross-sections translate along an axis with most of their kinetic energy:
+    // bending across the long axis, axial along it
+    out << "\nsection motion long axis " << vec3(sid.refmod.long_axis) << "; coordinates whose sections translate with at least half their kinetic energy:";
+    for (int a = 0; a < 3; ++a) {
+      out << "\n              along " << "xyz"[a] << ":";
+      for (Eigen::Index k = 0; k < sid.nq(); ++k)
+        if (sid.refmod.section_translation(k, a) >= 0.5) out << " " << k;
+    }
+  }
   out << "\ndamping       kappa = " << number_text(sid.damping.kappa) << ", band " << number_text(sid.damping.f1_hz) << "-"
       << number_text(sid.damping.f2_hz) << " Hz: alpha1 = " << number_text(sid.damping.alpha1) << " 1/s, alpha2 = "
       << number_text(sid.damping.alpha2) << " s\n";

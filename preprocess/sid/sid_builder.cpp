@@ -9,6 +9,7 @@
 #include "sid/joined_surface.hpp"
 #include "sid/master_patch.hpp"
 #include "sid/node_data.hpp"
+#include "sid/section_translation.hpp"
 #include "sid/sid_terms.hpp"
 #include "sid/stress_rows.hpp"
 #include "sid/visual_mesh.hpp"
@@ -66,7 +67,9 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   const Eigen::MatrixXd Phi = nodal_modes(body.dofs, basis.Phi);
   // the inertia terms from the field that carries the mass (MacNeal: the boundary carries none)
   const Eigen::MatrixXd& inertial = basis.mass_carrying();
-  fill_inertia_terms(sid, scalar_mass, body.dofs.node_points(), basis.massless() > 0 ? nodal_modes(body.dofs, inertial) : Phi);
+  const Eigen::MatrixXd inertial_nodal = basis.massless() > 0 ? nodal_modes(body.dofs, inertial) : Eigen::MatrixXd();
+  const Eigen::MatrixXd& moving = basis.massless() > 0 ? inertial_nodal : Phi;
+  fill_inertia_terms(sid, scalar_mass, body.dofs.node_points(), moving);
   sid.Me.M0 = projected(system.M, inertial);
   sid.Ke.M0 = projected(system.K, basis.Phi);
 
@@ -80,6 +83,9 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
     r.mode_names.push_back((k < basis.n_low ? "low mode " : "high mode ") + std::to_string(k + 1) + ": " +
                            std::to_string(r.frequencies_hz(k)) + " Hz");
   for (Eigen::Index k = first_massless; k < basis.Phi.cols(); ++k) r.mode_names.push_back(massless_coordinate_name(body, basis, k));
+  SectionTranslation sections = section_translation(moving, body.dofs.node_points(), scalar_mass);
+  r.section_translation = std::move(sections.shares);
+  r.long_axis = sections.long_axis;
   const double f1 = spec.damping.f1_hz > 0 ? spec.damping.f1_hz : r.frequencies_hz(0);
   const double f2 = spec.damping.f2_hz > 0 ? spec.damping.f2_hz : r.frequencies_hz(std::max(0, basis.n_low - 1));
   sid.damping = rayleigh_damping(spec.damping.kappa, f1, std::max(f2, f1));

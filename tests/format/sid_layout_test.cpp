@@ -68,6 +68,8 @@ TEST_CASE("a written SID holds exactly the items of the layout table", "[format]
   sid.patches = {{"a", sid.material, {"xi1 b.xi0"}}, {"b", {7e10, 0.33, 2700}, {"xi0 a.xi1"}}};
   sid.contact_surfaces[0].patch = "a";
   sid.stress_recovery[0].patch = "b";
+  sid.refmod.section_translation = Eigen::MatrixXd::Constant(sid.nq(), 3, 0.25);  // a beam's modes' shares
+  sid.refmod.long_axis = Eigen::Vector3d::UnitX();
   REQUIRE(sid.transfer);
   REQUIRE(!sid.master_patches.empty());
   REQUIRE(!sid.stress_recovery.empty());
@@ -78,6 +80,8 @@ TEST_CASE("a written SID holds exactly the items of the layout table", "[format]
   REQUIRE(back.patches.size() == 2);
   CHECK(back.patches[1].material.density == 2700);
   CHECK(back.patches[0].interfaces == std::vector<std::string>{"xi1 b.xi0"});
+  CHECK(back.refmod.section_translation == sid.refmod.section_translation);
+  CHECK(back.refmod.long_axis == sid.refmod.long_axis);
   CHECK(back.contact_surfaces[0].patch == "a");
   CHECK(back.stress_recovery[0].patch == "b");
 

@@ -29,6 +29,10 @@ struct RefMod {
   int n_low = 0;                         ///< leading normal (low-frequency) modes; the rest are high
   std::string reduction_method;          ///< "modal", "craig-bampton", "full", "macneal", "craig-bampton-massless"
   std::string interface_description;     ///< e.g. the contact surface and interval of the constraint modes
+  /// nq x 3 (empty: not recorded): share of each coordinate's kinetic energy carried by the
+  /// mean translation of cross-sections across `long_axis`, per body-frame axis
+  Eigen::MatrixXd section_translation;
+  Eigen::Vector3d long_axis = Eigen::Vector3d::Zero();
   Eigen::Index nq() const { return frequencies_hz.size(); }
   int n_high() const { return static_cast<int>(nq()) - n_low; }
   /// Massless-boundary SIDs (MacNeal and the massless Craig-Bampton variant): the high

@@ -107,6 +107,13 @@ inline constexpr Item reduction_method{"/refmod/reduction_method", {}, Kind::Str
                                        "`modal`, `craig-bampton`, `full`, `macneal` or `craig-bampton-massless`"};
 inline constexpr Item interface{"/refmod/interface", {}, Kind::String, kScalar, "", Presence::Required,
                                 "the interface of the constraint modes or the massless boundary, e.g. contact surface and interval"};
+inline constexpr Item section_translation{
+    "/refmod/section_translation", {}, Kind::Float64, matrix(kNq, {3}), "1", Presence::Optional,
+    "per coordinate and body-frame axis: the share of its kinetic energy carried by the mean translation of the body's "
+    "cross-sections (slabs across `long_axis`); a beam's bending modes in direction d have most of theirs along d "
+    "(0 for massless coordinates)"};
+inline constexpr Item long_axis{"/refmod/long_axis", {}, Kind::Float64, vector_of({3}), "1", Presence::Optional,
+                                "unit vector, body frame: the principal axis of the body's mass with the largest second moment"};
 }  // namespace refmod
 
 namespace damping {
