@@ -77,6 +77,10 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
     monitor_bodies_.push_back(&b);
   }
   for (const StressMonitorSpec& s : scene.stress_monitors) stress_monitors_.emplace_back(s, system.body(s.body), scene.file);
+  impact_modes_.resize(nc);
+  for (std::size_t k = 0; k < nc; ++k)
+    if (const FloatingBody* target = system.contacts()[k].target().body())
+      impact_modes_[k].emplace(system, int(k), *target, scene.contacts[k].target_surface);
   monitor_values_.resize(scene.monitors.size());
   monitor_reversal_.assign(scene.monitors.size(), -1);
   monitor_arrival_.assign(scene.monitors.size(), -1);
@@ -94,6 +98,7 @@ void Recorder::sample(double t, const double* y) {
     body_q_[b].insert(body_q_[b].end(), q.data(), q.data() + q.size());
   }
   for (std::size_t k = 0; k < states.size(); ++k) {
+    if (time_.size() == 1 && impact_modes_[k]) impact_modes_[k]->step(t, y, states[k].force.norm(), false);  // the start
     for (int a = 0; a < 3; ++a) contact_force_[k].push_back(states[k].force(a));
     contact_points_[k].push_back(states[k].active_points);
     contact_penetration_[k].push_back(states[k].max_penetration);
@@ -121,7 +126,9 @@ void Recorder::step(double t, const double* y) {
   const double dt = t - last_step_t_;
   for (std::size_t k = 0; k < states.size(); ++k) {
     const double f = states[k].force.norm();
-    if (f > peak_force_[k]) peak_force_[k] = f, points_at_peak_[k] = states[k].active_points;
+    const bool new_peak = f > peak_force_[k];
+    if (new_peak) peak_force_[k] = f, points_at_peak_[k] = states[k].active_points;
+    if (impact_modes_[k]) impact_modes_[k]->step(t, y, f, new_peak);
     impulse_[k] += 0.5 * (f + last_force_[k]) * dt;  // trapezoid over accepted steps
     last_force_[k] = f;
     max_penetration_[k] = std::max(max_penetration_[k], states[k].max_penetration);
@@ -208,6 +215,7 @@ void Recorder::write_results(const std::string& path) const {
       const Spectrum spectrum = force_spectrum(time_, magnitude, scene_.simulation.output_interval);
       w.vector(g + "/spectrum_frequency", spectrum.frequency_hz, "Hz");
       w.vector(g + "/spectrum_amplitude", spectrum.amplitude_ns, "N s");
+      if (const auto report = impact_modes_[k] ? impact_modes_[k]->report() : std::nullopt) write_impact_modes(w, g + "/impact_modes", *report);
     }
     for (std::size_t k = 0; k < joint_force_.size(); ++k) {
       using Rows3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
@@ -313,6 +321,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
                              {"contact_time_s", e->line_contact ? json(nullptr) : json(e->contact_time)},
                              {"contact_element_m", e->element_size},
                              {"elements_per_radius", e->elements_per_radius()}};
+    if (const auto report = impact_modes_[k] ? impact_modes_[k]->report() : std::nullopt) c["impact_modes"] = impact_modes_summary(*report);
     c["impulse_ns"] = impulse_[k];
     c["max_penetration_m"] = max_penetration_[k];
     j["contacts"].push_back(c);

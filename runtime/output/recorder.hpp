@@ -4,6 +4,7 @@
 #pragma once
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
+#include "output/impact_modes.hpp"
 #include "output/stress_monitor.hpp"
 #include "solve/simulation.hpp"
 #include "solve/time_integrator.hpp"
@@ -11,6 +12,7 @@
 #include <array>
 #include <chrono>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,6 +74,7 @@ private:
   std::vector<format::Node> monitor_nodes_;         ///< SID nodes, or master-patch points as nodes
   std::vector<const FloatingBody*> monitor_bodies_;
   std::vector<StressMonitor> stress_monitors_;
+  std::vector<std::optional<ImpactModes>> impact_modes_;  ///< per contact with a flexible target
   double output_s_ = 0;  ///< time spent in sample() and step()
 
   /// Adds the time of its scope to a total.
