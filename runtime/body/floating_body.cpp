@@ -314,10 +314,12 @@ void FloatingBody::apply_force(const Vector3d& F_world, const Vector3d& P, const
   add_elastic_force(Psi, FK, f.elastic);
 }
 
-std::pair<Vector3d, Vector3d> FloatingBody::node_state(const format::Node& node, const double* y) const {
+std::pair<Vector3d, Vector3d> FloatingBody::node_state(const format::Node& node, const double* y, const VectorXd* quasistatic_rate) const {
   const Matrix3d A = orientation(y).toRotationMatrix();
   const Vector3d P = node.origin.M0.col(0) + node.phi * q(y);
-  const Vector3d vel = v(y) + A * (omega(y).cross(P) + node.phi * qdot(y));
+  Vector3d elastic = node.phi * qdot(y);
+  if (quasistatic_rate && quasistatic_rate->size() == n_quasistatic()) elastic += node.phi.rightCols(n_quasistatic()) * *quasistatic_rate;
+  const Vector3d vel = v(y) + A * (omega(y).cross(P) + elastic);
   return {r(y) + A * P, vel};
 }
 

@@ -115,8 +115,10 @@ public:
   void apply_force(const Eigen::Vector3d& F_world, const Eigen::Vector3d& body_point,
                    const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Matrix3d& A, GeneralizedForce& f) const;
 
-  /// Position and velocity (world) of a SID node.
-  std::pair<Eigen::Vector3d, Eigen::Vector3d> node_state(const format::Node& node, const double* y) const;
+  /// Position and velocity (world) of a SID node. The quasistatic coordinates have no velocity
+  /// in the state: `quasistatic_rate` (n_quasistatic entries), if given, is theirs.
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> node_state(const format::Node& node, const double* y,
+                                                         const Eigen::VectorXd* quasistatic_rate = nullptr) const;
   const format::Node* node(const std::string& name) const;
   const format::ContactSurface* contact_surface(const std::string& name) const;
   const std::array<bool, 6>& locked() const { return locked_; }

@@ -75,7 +75,11 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
       monitor_nodes_.push_back(surface_node(b, m, scene.file));
     }
     monitor_bodies_.push_back(&b);
+    for (std::size_t i = 0; i < system.bodies().size(); ++i)
+      if (system.bodies()[i].get() == &b) monitor_body_index_.push_back(i);
   }
+  quasistatic_last_.resize(system.bodies().size());
+  for (const auto& b : system.bodies()) quasistatic_rate_.push_back(Eigen::VectorXd::Zero(b->n_quasistatic()));
   for (const StressMonitorSpec& s : scene.stress_monitors) stress_monitors_.emplace_back(s, system.body(s.body), scene.file);
   impact_modes_.resize(nc);
   for (std::size_t k = 0; k < nc; ++k)
@@ -111,9 +115,9 @@ void Recorder::sample(double t, const double* y) {
   }
   const Energies e = system_.energies(y, states);
   energies_.push_back({e.kinetic, e.elastic, e.gravity, e.penalty, e.dissipated, e.total()});
+  if (time_.size() == 1) update_quasistatic_rates(t, y);  // the start: no rate yet
   for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
-    const auto [pos, vel] = monitor_bodies_[m]->node_state(monitor_nodes_[m], y);
-    const Eigen::Vector3d value = scene_.monitors[m].quantity == "velocity" ? vel : pos;
+    const Eigen::Vector3d value = monitor_value(m, y);
     for (int a = 0; a < 3; ++a) monitor_values_[m].push_back(value(a));
     if (time_.size() == 1) monitor_initial_[m] = monitor_last_[m] = value;
   }
@@ -134,9 +138,10 @@ void Recorder::step(double t, const double* y) {
     max_penetration_[k] = std::max(max_penetration_[k], states[k].max_penetration);
     if (states[k].edge_points > 0 && edge_reached_[k] < 0) edge_reached_[k] = t;
   }
+  update_quasistatic_rates(t, y);
   for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
     if (scene_.monitors[m].quantity != "velocity" || monitor_reversal_[m] >= 0) continue;
-    const Eigen::Vector3d v = monitor_bodies_[m]->node_state(monitor_nodes_[m], y).second;
+    const Eigen::Vector3d v = monitor_value(m, y);
     const Eigen::Vector3d& v0 = monitor_initial_[m];
     const double v0v0 = v0.squaredNorm();
     const double now = v.dot(v0), before = monitor_last_[m].dot(v0);
@@ -150,6 +155,25 @@ void Recorder::step(double t, const double* y) {
   }
   for (StressMonitor& s : stress_monitors_) s.step(t, y);
   last_step_t_ = t;
+}
+
+Eigen::Vector3d Recorder::monitor_value(std::size_t m, const double* y) const {
+  const auto [position, velocity] =
+      monitor_bodies_[m]->node_state(monitor_nodes_[m], y, &quasistatic_rate_[monitor_body_index_[m]]);
+  return scene_.monitors[m].quantity == "velocity" ? velocity : position;
+}
+
+void Recorder::update_quasistatic_rates(double t, const double* y) {
+  // after contact_states(y): the quasistatic coordinates are those solved for y
+  for (std::size_t i = 0; i < system_.bodies().size(); ++i) {
+    const FloatingBody& b = *system_.bodies()[i];
+    if (b.n_quasistatic() == 0) continue;
+    const Eigen::VectorXd now = b.q(y).tail(b.n_quasistatic());
+    if (quasistatic_last_[i].size() == now.size() && t > quasistatic_last_t_)
+      quasistatic_rate_[i] = (now - quasistatic_last_[i]) / (t - quasistatic_last_t_);
+    quasistatic_last_[i] = now;
+  }
+  quasistatic_last_t_ = t;
 }
 
 void Recorder::contact_event(int k, bool closing, double t) {

@@ -47,6 +47,11 @@ public:
   std::vector<std::string> warnings() const;
 
 private:
+  /// Monitor m's node velocity at y, the quasistatic coordinates moving at their last rate.
+  Eigen::Vector3d monitor_value(std::size_t m, const double* y) const;
+  /// Updates the quasistatic rates at an accepted step (the coordinates solved for y).
+  void update_quasistatic_rates(double t, const double* y);
+
   const MultibodySystem& system_;
   const Scene& scene_;
   // time series
@@ -73,6 +78,11 @@ private:
   std::vector<Eigen::Vector3d> monitor_initial_, monitor_last_;
   std::vector<format::Node> monitor_nodes_;         ///< SID nodes, or master-patch points as nodes
   std::vector<const FloatingBody*> monitor_bodies_;
+  std::vector<std::size_t> monitor_body_index_;
+  /// per body: its quasistatic coordinates at the last step and their rate over it (backward
+  /// difference: they are solved, not integrated, so the state holds no velocity for them)
+  std::vector<Eigen::VectorXd> quasistatic_last_, quasistatic_rate_;
+  double quasistatic_last_t_ = 0;
   std::vector<StressMonitor> stress_monitors_;
   std::vector<std::optional<ImpactModes>> impact_modes_;  ///< per contact with a flexible target
   double output_s_ = 0;  ///< time spent in sample() and step()
