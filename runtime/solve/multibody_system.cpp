@@ -37,6 +37,7 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
     }
     slave_body_.push_back(body_index(c.body));
     contacts_.emplace_back(c, *bodies_[slave_body_.back()], *targets_.back());
+    require_boundary_covers(contacts_.back(), targets_.back()->body(), c.target_surface);
     if (c.exact) require_massless_points(contacts_.back());
   } catch (const format::InputError& e) {  // a surface the SID does not have: name the scene file
     throw format::InputError(scene.file, "contact " + c.name + "." + e.field(), e.problem());
@@ -77,15 +78,35 @@ void MultibodySystem::warn_of_many_dynamic_modes(const FloatingBody& body, const
                       " Hz), which makes small steps: " + advice);
 }
 
+namespace {
+/// Contact points' shape rows that move with their leading `columns` coordinates, beyond the
+/// round-off of shape functions that vanish on the side (1e-12 of the largest row entry).
+bool moves_with_leading(const Eigen::MatrixXd& rows, Eigen::Index columns) {
+  if (columns == 0 || rows.size() == 0) return false;
+  return rows.leftCols(columns).cwiseAbs().maxCoeff() > 1e-12 * rows.cwiseAbs().maxCoeff();
+}
+}  // namespace
+
+void MultibodySystem::require_boundary_covers(const SurfaceContact& c, const FloatingBody* target, const std::string& target_surface) {
+  // a massless boundary is the seed's contact model only where it carries the whole surface:
+  // points that also move with mass-carrying modes would hit with mass again
+  auto check = [&](const FloatingBody& b, const format::ContactSurface& surface, const char* field) {
+    const format::RefMod& r = b.sid().refmod;
+    if (!r.massless_boundary() || !moves_with_leading(surface.Psi, r.nq() - r.n_massless())) return;
+    throw format::InputError(c.name(), field,
+                             "the massless boundary of '" + b.name() + "' does not cover its surface '" + surface.name +
+                                 "' (its points move with the mass-carrying modes too; make it the model's boundary_surface)");
+  };
+  check(c.body(), c.surface(), "surface");
+  if (target)
+    if (const format::ContactSurface* surface = target->contact_surface(target_surface)) check(*target, *surface, "target_surface");
+}
+
 void MultibodySystem::require_massless_points(const SurfaceContact& c) {
   // the static solve sees only the quasistatic coordinates: exact contact needs every contact
-  // point to move with them alone (to round-off of shape functions that vanish on the side)
-  auto moves_with_dynamic = [](const FloatingBody& b, const Eigen::MatrixXd& rows) {
-    const double scale = rows.size() ? rows.cwiseAbs().maxCoeff() : 0.0;
-    return b.n_dynamic() > 0 && rows.size() && rows.leftCols(b.n_dynamic()).cwiseAbs().maxCoeff() > 1e-12 * scale;
-  };
+  // point to move with them alone
   const FloatingBody& slave = c.body();
-  if (slave.n_quasistatic() == 0 || moves_with_dynamic(slave, c.surface().Psi))
+  if (slave.n_quasistatic() == 0 || moves_with_leading(c.surface().Psi, slave.n_dynamic()))
     throw format::InputError(c.name(), "enforcement",
                              "exact contact needs a massless boundary under surface '" + c.surface().name + "' of '" + slave.name() +
                                  "' (a macneal or craig-bampton-massless SID with boundary_surface = \"" + c.surface().name + "\")");

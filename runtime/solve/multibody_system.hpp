@@ -89,6 +89,8 @@ public:
 
 private:
   std::size_t body_index(const std::string& name) const;
+  /// Refuses a contact on a massless-boundary body whose surface the boundary does not carry alone.
+  static void require_boundary_covers(const SurfaceContact& c, const FloatingBody* target, const std::string& target_surface);
   /// Refuses exact contact on a surface whose points move with integrated coordinates.
   static void require_massless_points(const SurfaceContact& c);
   void warn_of_many_dynamic_modes(const FloatingBody& body, const BodySpec& spec);

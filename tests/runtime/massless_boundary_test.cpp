@@ -152,7 +152,7 @@ TEST_CASE("exact contact on the massless boundary: the bouncing bar with the lea
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-5);
 }
 
-TEST_CASE("scenes that ask for a fixed step or exact contact wrongly: exit 2, one line", "[runtime][massless][bad-input]") {
+TEST_CASE("scenes that ask for a fixed step or exact contact wrongly, or contact beyond a massless boundary: exit 2, one line", "[runtime][massless][bad-input]") {
   const test::ScratchDir dir("massless-bad");
   test::copy_model_file(dir, "bar_drop_macneal.model.toml");
   const std::string scene = test::model_text("bar_drop.scene.toml");
@@ -167,6 +167,8 @@ TEST_CASE("scenes that ask for a fixed step or exact contact wrongly: exit 2, on
            {"penalty = 1e16", "enforcement = \"rigid\"\npenalty = 1e16", "contact[0].enforcement: must be penalty or exact"},
            // the contact points of a modal body move with its integrated modes
            {"model = \"bar_drop_macneal.model.toml\"", "model = \"modal.model.toml\"", "enforcement: exact contact needs a massless boundary under surface 'bottom'"},
+           // a contact surface of a MacNeal body beyond its boundary: its points move with the modes too
+           {"surface = \"bottom\"", "surface = \"side\"", "surface: the massless boundary of 'bar' does not cover its surface 'side'"},
        }) {
     INFO(c.to);
     std::string text = replace(scene, c.from, c.to);
@@ -176,6 +178,12 @@ TEST_CASE("scenes that ask for a fixed step or exact contact wrongly: exit 2, on
       std::ofstream(dir.path("modal.model.toml")) << model;
       REQUIRE(test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("modal.model.toml")).exit_status == 0);
       text = replace(replace(text, "sid = \"bar_drop_macneal.sid.h5\"", "sid = \"modal.sid.h5\""), "penalty = 1e16", "enforcement = \"exact\"\npenalty = 1e16");
+    }
+    if (c.to == "surface = \"side\"") {  // the bar with a second contact surface along its left side
+      std::string model = test::model_text("bar_drop_macneal.model.toml");
+      model = replace(model, "[reduction]", "[[contact_surface]]\nname = \"side\"\nside = \"xi0\"\n\n[reduction]");
+      std::ofstream(dir.path("bar_drop_macneal.model.toml")) << model;
+      REQUIRE(test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("bar_drop_macneal.model.toml")).exit_status == 0);
     }
     std::ofstream(dir.path("s.scene.toml")) << text;
     const auto r = test::run_program("ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_RUN_EXE + " -q " + dir.path("s.scene.toml") +
