@@ -39,6 +39,9 @@ public:
   /// Principal curvatures (1/m, positive where convex) of the target at its point nearest
   /// the world point x, at the state of the last update(): for the Hertz estimate of an impact.
   virtual Eigen::Vector2d curvatures(const Eigen::Vector3d& x) const = 0;
+  /// How far a target point can move per unit (Euclidean) change of its body's elastic
+  /// coordinates, m per [q]; 0 for targets that do not deform.
+  virtual double displacement_bound() const { return 0; }
   /// A fixed plane {x : n . x = offset} (n its unit normal out of the target): a slave point's
   /// gap is linear in its position, so the static solve's linearized gaps are exact and the
   /// gaps of all points are one product. False for every other target.

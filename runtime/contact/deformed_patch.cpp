@@ -103,11 +103,12 @@ void DeformedPatch::evaluate(const Eigen::Vector2d& u, Point& out) const {
 }
 
 void DeformedPatch::shape_rows(const Point& point, Eigen::MatrixXd& Psi) const {
-  // from the transposed rows: each control point's modal row is a contiguous column
-  Psi.setZero(dim_, patch_.Phi.cols());
+  // summed transposed, where each control point's modal rows are contiguous columns (a row of
+  // Psi is strided), then turned once
+  rows_transposed_.setZero(patch_.Phi.cols(), dim_);
   for (std::size_t j = 0; j < point.R.size(); ++j)
-    for (int a = 0; a < dim_; ++a)
-      Psi.row(a).noalias() += point.R[j] * Phi_transposed_.col(Eigen::Index(point.control_points[j]) * dim_ + a).transpose();
+    rows_transposed_.noalias() += point.R[j] * Phi_transposed_.middleCols(Eigen::Index(point.control_points[j]) * dim_, dim_);
+  Psi = rows_transposed_.transpose();
 }
 
 bool DeformedPatch::newton_projection(const Eigen::Vector3d& x, Eigen::Vector2d& u, Point& point) const {

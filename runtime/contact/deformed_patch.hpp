@@ -33,6 +33,8 @@ public:
   /// control net: the reference net's bounding sphere grown by a bound of the control points'
   /// displacement, max_i |Phi_i|_F |q|.
   void bounding_sphere(Eigen::Vector3d& center, double& radius) const;
+  /// max_i |Phi_i|_F: no point of the patch moves further than this times |q|.
+  double largest_row_norm() const { return largest_row_norm_; }
   /// Evaluates the patch at parameter u (only the first parameter_dim() entries used).
   void evaluate(const Eigen::Vector2d& u, Point& out) const;
   /// Displacement rows of a point: Psi = sum R_i Phi_i (dim x nq).
@@ -56,6 +58,7 @@ private:
   long stamp_ = 0;
   Eigen::VectorXd q_;                 ///< the elastic coordinates of the last deform()
   Eigen::MatrixXd Phi_transposed_;   ///< nq x (ncp*dim): each control point's rows are contiguous columns
+  mutable Eigen::MatrixXd rows_transposed_;  ///< nq x dim: shape_rows' sum
   Eigen::Vector3d reference_center_ = Eigen::Vector3d::Zero();
   double reference_radius_ = 0;
   double largest_row_norm_ = 0;       ///< max_i |Phi_i|_F

@@ -53,6 +53,11 @@ void SurfaceContact::fit_penalty_to_contact_radius(double contact_radius) {
 
 template <class F>
 double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill, F&& f) const {
+  return for_each_point(y, fill, std::forward<F>(f), [](Eigen::Index) { return false; });
+}
+
+template <class F, class Skip>
+double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill, F&& f, Skip&& skip) const {
   target_.update(y);
   const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
   const Eigen::Vector3d r = body_.r(y);
@@ -81,6 +86,7 @@ double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill,
     return clearance;
   }
   for (Eigen::Index g = 0; g < surface_.points(); ++g) {
+    if (skip(g)) continue;
     const auto Psi = surface_.Psi.middleRows(g * dim_, dim_);
     P.head(dim_) = surface_.position.row(g).transpose() + displacement_.segment(g * dim_, dim_);
     if (target_.project(r + A * P, y, point_, hints_[std::size_t(g)], fill)) f(g, Psi, P, A, point_);
@@ -157,8 +163,30 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
     if (spec_.friction > 0) add_elastic_force(Psi_h, -(A_master.transpose() * direction), terms.T.col(k).segment(at, nh));
   };
   const Eigen::Index nh = body_.n_quasistatic(), at = body_.quasistatic_offset();
+  // at the y of the previous evaluation, a free point moves only with the quasistatic
+  // coordinates: skip it while their change cannot bring it where it would be recorded
+  // (exact contact's multipliers change between evaluations: no skipping there)
+  pose_key(y, key_);
+  const bool same_pose = !spec_.exact && key_.size() == free_key_.size() && key_ == free_key_;
+  const auto z_slave = body_.q(y).tail(nh);
+  double slave_move = 0, target_move = 0;
+  if (same_pose) {
+    slave_move = (z_slave - free_z_slave_).norm();
+    if (master_qs) target_move = target_.displacement_bound() * (master->q(y).tail(master->n_quasistatic()) - free_z_target_).norm();
+  } else {
+    free_key_ = key_;
+    free_z_slave_ = z_slave;
+    if (master_qs) free_z_target_ = master->q(y).tail(master->n_quasistatic());
+    free_gap_.assign(std::size_t(surface_.points()), -INFINITY);
+  }
+  auto skip = [&](Eigen::Index g) {
+    if (!same_pose) return false;
+    const double recorded_below = master_qs ? 0.0 : terms.window + terms.reach * quasistatic_row_norms_(g);
+    return free_gap_[std::size_t(g)] - quasistatic_row_norms_(g) * slave_move - target_move >= recorded_below;
+  };
   const double clearance = for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
     const double lambda = spec_.exact ? multiplier_[std::size_t(g)] : 0.0;
+    if (!same_pose && pressure(g, t.gap) <= 0) free_gap_[std::size_t(g)] = t.gap;
     if (pressure(g, t.gap) <= 0) {
       // free: recorded if a change of z by terms.reach could close its gap (|Psi_h u| <=
       // |Psi_h|_F |u|), or it is within the window; not against a target with quasistatic
@@ -186,8 +214,17 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
       }
     }
     if (master_qs) add_target_side(t.Psi, t.normal, direction, k);
-  });
+  }, skip);
   if (clearance > 0) terms.unseen = true;
+}
+
+void SurfaceContact::pose_key(const double* y, Eigen::VectorXd& key) const {
+  // each body's position, orientation and integrated coordinates: the leading 7 + n_dynamic of its state
+  const FloatingBody* master = target_.body();
+  const Eigen::Index ns = 7 + body_.n_dynamic(), nm = master ? 7 + master->n_dynamic() : 0;
+  key.resize(ns + nm);
+  key.head(ns) = Eigen::Map<const Eigen::VectorXd>(y + body_.offset(), ns);
+  if (master) key.tail(nm) = Eigen::Map<const Eigen::VectorXd>(y + master->offset(), nm);
 }
 
 double SurfaceContact::update_multipliers(const double* y) const {

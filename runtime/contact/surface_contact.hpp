@@ -85,6 +85,12 @@ private:
   /// point filled as `fill` asks. Returns the broad-phase clearance (> 0: no point was visited).
   template <class F>
   double for_each_point(const double* y, ContactTarget::Fill fill, F&& f) const;
+  /// The same, leaving out the points for which skip(g) holds (before projecting them).
+  template <class F, class Skip>
+  double for_each_point(const double* y, ContactTarget::Fill fill, F&& f, Skip&& skip) const;
+  /// What the poses and integrated coordinates of both bodies are at y: the quasistatic solve
+  /// evaluates its terms many times at one y, changing only the quasistatic coordinates.
+  void pose_key(const double* y, Eigen::VectorXd& key) const;
   /// The world force on slave point g at pressure p: normal, plus friction against the
   /// sliding velocity `vt` it returns (zero without friction).
   Eigen::Vector3d point_force(Eigen::Index g, double p, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Vector3d& P,
@@ -113,6 +119,12 @@ private:
   mutable std::vector<double> multiplier_, updated_;  ///< exact contact: lambda per point, Pa
   mutable TargetPoint point_;
   mutable Eigen::VectorXd displacement_;         ///< Psi q of all points
+  /// Free points of the quasistatic solve at one y: each point's gap at its first evaluation
+  /// (-inf: pressed, or not seen), and the poses and quasistatic coordinates it was taken at.
+  /// Later evaluations at that y skip a point that the change of the quasistatic coordinates
+  /// since cannot close (gaps move by at most the points' displacement bounds).
+  mutable std::vector<double> free_gap_;
+  mutable Eigen::VectorXd free_key_, key_, free_z_slave_, free_z_target_;
   Eigen::MatrixXd quasistatic_rows_;             ///< the quasistatic columns of Psi, transposed (n_h x dim points)
   Eigen::VectorXd quasistatic_row_norms_;        ///< per point: the Frobenius norm of its quasistatic rows
 };
