@@ -100,9 +100,10 @@ void check_refmod(const Checker& c, const Sid& sid) {
   c.require(r.n_low >= 0 && r.n_low <= nq, refmod::n_low.at(), "must lie in [0, nq]");
   if (r.section_translation.size()) {
     c.shape(refmod::section_translation.at(), r.section_translation, nq, 3);
-    // shares of a kinetic energy: within [0, 1] up to the slabs' overlap of consistent mass
-    c.require(r.section_translation.minCoeff() >= 0 && r.section_translation.maxCoeff() <= 1.5,
-              refmod::section_translation.at(), "shares must lie in [0, 1]");
+    // shares of one kinetic energy among orthogonal projections: each in [0, 1], their sum
+    // at most 1 (to round-off)
+    c.require(r.section_translation.minCoeff() >= -1e-12 && r.section_translation.rowwise().sum().maxCoeff() <= 1 + 1e-9,
+              refmod::section_translation.at(), "shares must lie in [0, 1] and sum to at most 1 per coordinate");
     c.finite(refmod::long_axis.at(), Eigen::MatrixXd(r.long_axis));
     c.require(std::abs(r.long_axis.norm() - 1) < 1e-6, refmod::long_axis.at(), "must be a unit vector");
   }

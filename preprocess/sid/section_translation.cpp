@@ -11,7 +11,7 @@ namespace isosid::prep {
 SectionTranslation section_translation(const Eigen::MatrixXd& modes, const Eigen::MatrixXd& node_points,
                                        const Eigen::SparseMatrix<double>& scalar_mass, int sections) {
   const Eigen::Index nodes = node_points.rows(), dim = node_points.cols(), n = modes.cols();
-  if (nodes == 0) return {};
+  if (nodes == 0 || sections < 1) return {};
   // the mass lumped to the control points (row sums: the functions form a partition of unity)
   const Eigen::VectorXd lumped = scalar_mass * Eigen::VectorXd::Ones(nodes);
   const double mass = lumped.sum();
@@ -61,8 +61,10 @@ SectionTranslation section_translation(const Eigen::MatrixXd& modes, const Eigen
     const Eigen::MatrixXd b = fields.transpose() * Mu;
     out.shares.col(a) = b.cwiseProduct(gram_ldlt.solve(b)).colwise().sum().transpose();
   }
+  // shares of projections lie in [0, 1]: clamped against round-off
   for (Eigen::Index k = 0; k < n; ++k)
-    out.shares.row(k) = kinetic(k) > 0 ? Eigen::RowVector3d(out.shares.row(k) / kinetic(k)) : Eigen::RowVector3d::Zero();
+    out.shares.row(k) = kinetic(k) > 0 ? Eigen::RowVector3d((out.shares.row(k) / kinetic(k)).cwiseMax(0.0).cwiseMin(1.0))
+                                       : Eigen::RowVector3d::Zero();
   return out;
 }
 

@@ -3,6 +3,7 @@
 
 #include <Eigen/Cholesky>
 #include <cmath>
+#include <exception>
 
 namespace isosid::run {
 
@@ -17,8 +18,19 @@ void ImpactModes::step(double t, const double* y, double force, bool new_peak) {
   else if (phase_ == Phase::In && force <= 0) phase_ = Phase::Done, after_.assign(y, y + n), t_after_ = t;
 }
 
-std::optional<ImpactModes::Report> ImpactModes::report() const {
-  if (phase_ != Phase::Done || before_.empty()) return std::nullopt;
+const std::optional<ImpactModes::Report>& ImpactModes::report() const {
+  if (phase_ != Phase::Done || evaluated_) return report_;
+  evaluated_ = true;
+  try {
+    report_ = evaluate();
+  } catch (const std::exception&) {  // the quasistatic solve of a kept state failed: no report
+    report_.reset();
+  }
+  return report_;
+}
+
+std::optional<ImpactModes::Report> ImpactModes::evaluate() const {
+  if (before_.empty()) return std::nullopt;
   const SurfaceContact& contact = system_.contacts()[std::size_t(contact_)];
   const FloatingBody& slave = contact.body();
   const format::ContactSurface* surface = target_.contact_surface(target_surface_);
@@ -34,8 +46,8 @@ std::optional<ImpactModes::Report> ImpactModes::report() const {
   if (approach.norm() == 0) return std::nullopt;
   out.direction = approach.normalized();
   out.approach_speed = slave.v(before_.data()).dot(out.direction);
+  if (!(out.approach_speed > 0)) return std::nullopt;  // a target running into a receding slave
   out.kinetic_energy_j = 0.5 * slave.sid().refmod.mass * out.approach_speed * out.approach_speed;
-  if (out.kinetic_energy_j <= 0) return std::nullopt;
 
   // at the peak: the force centroid, and the target's contact point nearest to it
   system_.contact_states(peak_.data());  // solves the quasistatic coordinates for the point loads

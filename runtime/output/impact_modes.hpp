@@ -1,15 +1,16 @@
 // Seed 003's modal view of an impact on a flexible body. At the end of a contact's first
 // interval (t_E) it reports, for each integrated mode k of the target:
-//   E_k / E_0 with E_k = 1/2 (eta_dot_k^2 + omega_k^2 eta_k^2) and E_0 the slave's translational
-//   kinetic energy relative to the target just before the onset (t_S);
-//   r_k = -(v_S(t_E) - phi_k(P) eta_dot_k(t_E)) / v_S(t_S), the modal coefficient of restitution,
-//   velocities along the impact direction d (the slave's approach velocity relative to the
-//   target's frame at t_S), P the target's contact point nearest the force centroid at the peak
-//   force, phi_k(P) the mode's displacement there with the target's quasistatic or massless
-//   coordinates following it statically;
+//   E_k / E_0 with E_k = 1/2 (eta_dot_k^2 + omega_k^2 eta_k^2) and E_0 = 1/2 m v_S(t_S)^2;
+//   r_k = -(v_S(t_E) - phi_k(P) eta_dot_k(t_E)) / v_S(t_S), the modal coefficient of restitution;
+//   v_S the slave's frame velocity along the impact direction d (world; seed 003's target is at
+//   rest before the impact), d the direction of the slave's approach relative to the target's
+//   frame at t_S, t_S the last step before the onset; P the target's contact point nearest the
+//   force centroid at the peak force, phi_k(P) the mode's displacement there along d with the
+//   target's quasistatic or massless coordinates following it statically;
 // and labels the target's bending modes in d 1F, 2F, ... in ascending frequency: modes whose
-// cross-sections translate along d with at least half their kinetic energy (the SID's
-// section-translation shares; d across the target's long axis). SIDs without the shares get no labels.
+// cross-sections translate along d with at least half their kinetic energy (the SID's shares
+// per body axis, weighted by d's components: exact for d along a body axis; d across the
+// target's long axis). SIDs without the shares get no labels.
 #pragma once
 #include "isosid/format/hdf5_file.hpp"
 #include "solve/multibody_system.hpp"
@@ -47,8 +48,10 @@ public:
     Eigen::Vector3d point = Eigen::Vector3d::Zero();      ///< P, target body frame (reference)
     std::vector<Mode> modes;
   };
-  /// Once the first contact has ended; evaluates the kept states (solving the quasistatic coordinates).
-  std::optional<Report> report() const;
+  /// Once the first contact has ended: evaluated from the kept states at the first call
+  /// (solving their quasistatic coordinates again), then kept; none if that solve fails or the
+  /// slave did not approach.
+  const std::optional<Report>& report() const;
 
 private:
   const MultibodySystem& system_;
@@ -58,6 +61,10 @@ private:
   enum class Phase { Before, In, Done } phase_ = Phase::Before;
   std::vector<double> before_, peak_, after_;
   double t_before_ = 0, t_after_ = 0;
+  mutable bool evaluated_ = false;
+  mutable std::optional<Report> report_;
+  /// The report from the kept states (throws where their quasistatic solve fails).
+  std::optional<Report> evaluate() const;
 };
 
 /// summary.json's "impact_modes" of a contact.

@@ -239,7 +239,7 @@ void Recorder::write_results(const std::string& path) const {
       const Spectrum spectrum = force_spectrum(time_, magnitude, scene_.simulation.output_interval);
       w.vector(g + "/spectrum_frequency", spectrum.frequency_hz, "Hz");
       w.vector(g + "/spectrum_amplitude", spectrum.amplitude_ns, "N s");
-      if (const auto report = impact_modes_[k] ? impact_modes_[k]->report() : std::nullopt) write_impact_modes(w, g + "/impact_modes", *report);
+      if (impact_modes_[k] && impact_modes_[k]->report()) write_impact_modes(w, g + "/impact_modes", *impact_modes_[k]->report());
     }
     for (std::size_t k = 0; k < joint_force_.size(); ++k) {
       using Rows3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
@@ -345,7 +345,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
                              {"contact_time_s", e->line_contact ? json(nullptr) : json(e->contact_time)},
                              {"contact_element_m", e->element_size},
                              {"elements_per_radius", e->elements_per_radius()}};
-    if (const auto report = impact_modes_[k] ? impact_modes_[k]->report() : std::nullopt) c["impact_modes"] = impact_modes_summary(*report);
+    if (impact_modes_[k] && impact_modes_[k]->report()) c["impact_modes"] = impact_modes_summary(*impact_modes_[k]->report());
     c["impulse_ns"] = impulse_[k];
     c["max_penetration_m"] = max_penetration_[k];
     j["contacts"].push_back(c);

@@ -75,22 +75,27 @@ void settle_static_start(const MultibodySystem& system, const std::vector<bool>&
   }
   // converged at 1e-10 of the accelerations the solve removes; the residual's own round-off
   // (the modal accelerations are differences of gravity, frame and elastic terms) can sit above
-  // that: Newton then stalls, and an iterate within 1e-7 of them is that floor, not a failure
+  // that: Newton then stalls with the joints held, and the best iterate, if within 1e-7 of
+  // those accelerations, is that floor, not a failure
   const double initial = std::max(F.head(accelerations).cwiseAbs().maxCoeff(), 1e-300);
   const double tolerance = 1e-10 * initial, floor = 1e-7 * initial;
   double best = INFINITY;
   Eigen::VectorXd best_x = x;
   int stalled = 0;
   Eigen::MatrixXd J(rows, n);
-  for (int iteration = 0; iteration < 20; ++iteration) {
+  for (int iteration = 0;; ++iteration) {
     const double joint_error = rows > accelerations ? F.tail(rows - accelerations).cwiseAbs().maxCoeff() : 0.0;
     const double residual = F.head(accelerations).cwiseAbs().maxCoeff();
     if (residual <= tolerance && joint_error <= 1e-13) {
       place(x);
       return;
     }
-    if (joint_error <= 1e-13 && residual < 0.5 * best) best = residual, best_x = x, stalled = 0;
-    else if (++stalled >= 3) break;
+    if (joint_error <= 1e-13) {  // a stall: three iterations in a row that do not halve the best residual
+      stalled = residual < 0.5 * best ? 0 : stalled + 1;
+      if (residual < best) best = residual, best_x = x;
+      if (stalled >= 3) break;
+    }
+    if (iteration == 20) break;  // 20 updates, the last one checked above
     for (Eigen::Index j = 0; j < n; ++j) {
       Eigen::VectorXd moved = x;
       const double h = 1e-6 * std::max(std::abs(x(j)), scale(j));

@@ -105,14 +105,21 @@ quantity = "velocity"
   CHECK(balance == Approx(1.0).epsilon(1e-3));
 
   std::map<std::string, json> bending;
+  int at_rest = 0;
   for (const json& m : im["modes"]) {
-    // after the release each mode vibrates freely: its energy at the end of the run is the one reported
+    // after the release each mode vibrates freely: its energy at the end of the run is the one
+    // reported, to the leapfrog's beat of a modal energy, (omega dt)^2 / 4 < 1e-4 up to 47 kHz
+    const double reported = m["energy_ratio"].get<double>() * E0;
     const double final_energy = beam["final_modal_energy_j"][m["index"].get<std::size_t>()].get<double>();
-    CHECK(std::abs(m["energy_ratio"].get<double>() * E0 - final_energy) < 2e-4 * E0);
+    CHECK(std::abs(reported - final_energy) <= 2e-4 * final_energy + 1e-15 * E0);
     // a mode left at rest returns the sphere's own rebound: r_k = -v(t_E) / v(t_S)
-    if (m["energy_ratio"].get<double>() < 1e-20) CHECK(m["restitution"].get<double>() == Approx(-v_after / v0).epsilon(1e-12));
+    if (m["energy_ratio"].get<double>() < 1e-20) {
+      ++at_rest;
+      CHECK(m["restitution"].get<double>() == Approx(-v_after / v0).epsilon(1e-12));
+    }
     if (!m["label"].is_null()) bending[m["label"].get<std::string>()] = m;
   }
+  CHECK(at_rest >= 4);  // the antisymmetric modes of a centric impact (2F and 4F among them)
   // the lowest mode bends in y, the impact direction (Euler-Bernoulli 5.34 kHz; shear and rotary
   // inertia lower it by ~3 % at L/h = 10); the next one bends in z (15 mm) and is no 'F' mode
   REQUIRE(bending.count("1F"));
