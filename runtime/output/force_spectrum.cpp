@@ -23,21 +23,27 @@ Spectrum force_spectrum(const std::vector<double>& t, const std::vector<double>&
   const C i(0.0, 1.0);
   for (Eigen::Index k = 0; k < m; ++k) {
     const double w = 2 * M_PI * s.frequency_hz(k);
-    C sum = 0;
+    // exp(-i w (t_j - t_0)) by rotation from sample to sample, with one exponential per distinct
+    // step (the samples are evenly spaced but for events); rotations drift by round-off, so
+    // every 256th sample takes the exponential afresh
+    C sum = 0, phase = 1, e = 1;
+    double last_h = -1;
     for (std::size_t j = 0; j + 1 < n; ++j) {
+      if (j % 256 == 0) phase = std::exp(-i * w * (t[j] - t[0]));
       const double h = t[j + 1] - t[j];
       if (h <= 0) continue;
+      if (h != last_h) e = std::exp(-i * w * h), last_h = h;
       const double a = force[j], b = (force[j + 1] - force[j]) / h;  // f = a + b s on s in [0, h]
       const double wh = w * h;
       C segment;
       if (std::abs(wh) < 1e-4) {  // series of the closed form: no cancellation at small w h
         segment = h * (a + b * h / 2) - i * w * h * h * (a / 2 + b * h / 3);
       } else {
-        const C e = std::exp(-i * wh);
-        // int_0^h (a + b s) exp(-i w s) ds
-        segment = a * (1.0 - e) / (i * w) - b * ((1.0 - e * (1.0 + i * wh)) / (w * w));
+        // int_0^h (a + b s) exp(-i w s) ds, with 1 / (i w) = -i / w
+        segment = a * (1.0 - e) * (-i / w) - b * (1.0 - e * (1.0 + i * wh)) / (w * w);
       }
-      sum += std::exp(-i * w * (t[j] - t[0])) * segment;
+      sum += phase * segment;
+      phase *= e;
     }
     s.amplitude_ns(k) = std::abs(sum);
   }
