@@ -69,6 +69,27 @@ TEST_CASE("a perturbed frequency is reported", "[format][diff]") {
   CHECK(c.differences[0].what == "frequency of mode 3");
 }
 
+TEST_CASE("section shares: equal within a cluster whatever its rotation, a changed share reported", "[format][diff]") {
+  const auto body = test::random_lumped_body(12, 5, 21);  // modes 1 and 2 share a frequency
+  auto a = test::lumped_sid(body), b = a;
+  a.refmod.section_translation = MatrixXd::Constant(5, 3, 0.1);
+  a.refmod.long_axis = Eigen::Vector3d::UnitX();
+  b.refmod.section_translation = a.refmod.section_translation;
+  b.refmod.long_axis = -a.refmod.long_axis;  // the axis' sign is arbitrary
+  // a rotation within the cluster moves its shares between its modes and keeps their sum
+  b.refmod.section_translation.row(1) << 0.15, 0.0, 0.1;
+  b.refmod.section_translation.row(2) << 0.05, 0.2, 0.1;
+  auto c = format::compare_sids(a, b, 1e-6);
+  INFO(listing(c));
+  CHECK(c.equal());
+  b.refmod.section_translation(4, 2) = 0.3;  // a mode of its own frequency
+  c = format::compare_sids(a, b, 1e-6);
+  REQUIRE_FALSE(c.equal());
+  CHECK(c.differences[0].what == "/refmod/section_translation of mode 4");
+  b.refmod.section_translation.resize(0, 3);  // one file without shares
+  CHECK_FALSE(format::compare_sids(a, b, 1e-6).equal());
+}
+
 TEST_CASE("a perturbed inertia is reported", "[format][diff]") {
   const auto body = test::random_lumped_body(12, 5, 21);
   auto a = test::lumped_sid(body), b = a;
