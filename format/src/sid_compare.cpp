@@ -288,7 +288,10 @@ void compare_section_translation(const RefMod& a, const RefMod& b, const std::ve
   cmp.same("/refmod/section_translation present", a.section_translation.size() ? "yes" : "no",
            b.section_translation.size() ? "yes" : "no");
   if (!a.section_translation.size() || !b.section_translation.size()) return;
-  if (a.section_translation.rows() != b.section_translation.rows()) return cmp.values("/refmod/section_translation", a.section_translation, b.section_translation, 1.0);
+  if (a.section_translation.rows() != b.section_translation.rows()) {
+    cmp.values("/refmod/section_translation", a.section_translation, b.section_translation, 1.0);  // reports the shapes
+    return;
+  }
   for (const ModeCluster& c : clusters)
     cmp.values("/refmod/section_translation of mode " + std::to_string(c.first) + (c.size > 1 ? " (cluster of " + std::to_string(c.size) + ")" : ""),
                a.section_translation.middleRows(c.first, c.size).colwise().sum(),

@@ -179,20 +179,19 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
     if (master_qs) free_z_target_ = master->q(y).tail(master->n_quasistatic());
     free_gap_.assign(std::size_t(surface_.points()), -INFINITY);
   }
+  // a free point is left out where its gap (less lambda / c_p) reaches this: at once against a
+  // target with quasistatic modes, whose shape rows at the point are known only where it
+  // penetrates; else beyond the window and what a change of z by terms.reach could close
+  // (|Psi_h u| <= |Psi_h|_F |u|)
+  auto left_out_from = [&](Eigen::Index g) { return master_qs ? 0.0 : terms.window + terms.reach * quasistatic_row_norms_(g); };
   auto skip = [&](Eigen::Index g) {
-    if (!same_pose) return false;
-    const double recorded_below = master_qs ? 0.0 : terms.window + terms.reach * quasistatic_row_norms_(g);
-    return free_gap_[std::size_t(g)] - quasistatic_row_norms_(g) * slave_move - target_move >= recorded_below;
+    return same_pose && free_gap_[std::size_t(g)] - quasistatic_row_norms_(g) * slave_move - target_move >= left_out_from(g);
   };
   const double clearance = for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
     const double lambda = spec_.exact ? multiplier_[std::size_t(g)] : 0.0;
-    if (!same_pose && pressure(g, t.gap) <= 0) free_gap_[std::size_t(g)] = t.gap;
     if (pressure(g, t.gap) <= 0) {
-      // free: recorded if a change of z by terms.reach could close its gap (|Psi_h u| <=
-      // |Psi_h|_F |u|), or it is within the window; not against a target with quasistatic
-      // modes, whose shape rows at the point are known only where it penetrates
-      if (master_qs) return;
-      if (t.gap - lambda / spec_.penalty >= terms.window + terms.reach * quasistatic_row_norms_(g)) return;
+      if (!same_pose) free_gap_[std::size_t(g)] = t.gap;
+      if (t.gap - lambda / spec_.penalty >= left_out_from(g)) return;
     }
     const Eigen::Index k = terms.add_point(t.gap, lambda, spec_.penalty, surface_.weight(g));
     Eigen::Vector3d direction = Eigen::Vector3d::Zero();

@@ -75,8 +75,7 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
       monitor_nodes_.push_back(surface_node(b, m, scene.file));
     }
     monitor_bodies_.push_back(&b);
-    for (std::size_t i = 0; i < system.bodies().size(); ++i)
-      if (system.bodies()[i].get() == &b) monitor_body_index_.push_back(i);
+    monitor_body_index_.push_back(system.body_index(m.body));
   }
   quasistatic_last_.resize(system.bodies().size());
   for (const auto& b : system.bodies()) quasistatic_rate_.push_back(Eigen::VectorXd::Zero(b->n_quasistatic()));
@@ -168,10 +167,10 @@ void Recorder::update_quasistatic_rates(double t, const double* y) {
   for (std::size_t i = 0; i < system_.bodies().size(); ++i) {
     const FloatingBody& b = *system_.bodies()[i];
     if (b.n_quasistatic() == 0) continue;
-    const Eigen::VectorXd now = b.q(y).tail(b.n_quasistatic());
+    const auto now = b.q(y).tail(b.n_quasistatic());
     if (quasistatic_last_[i].size() == now.size() && t > quasistatic_last_t_)
       quasistatic_rate_[i] = (now - quasistatic_last_[i]) / (t - quasistatic_last_t_);
-    quasistatic_last_[i] = now;
+    quasistatic_last_[i] = now;  // resized once, then in place
   }
   quasistatic_last_t_ = t;
 }

@@ -70,6 +70,8 @@ public:
   /// bodies do not approach or the contact is not of Hertz type).
   const std::vector<std::optional<ImpactEstimate>>& impact_estimates() const { return impact_estimates_; }
   const FloatingBody& body(const std::string& name) const;
+  /// Position of a body in bodies() (refused as input if the scene has none of that name).
+  std::size_t body_index(const std::string& name) const;
   /// What the user should know about the set-up (e.g. hundreds of dynamically integrated modes).
   const std::vector<std::string>& warnings() const { return warnings_; }
   /// Newton iterations of the quasistatic modes so far.
@@ -88,7 +90,6 @@ public:
   static constexpr Eigen::Index kManyDynamicModes = 200;
 
 private:
-  std::size_t body_index(const std::string& name) const;
   /// Refuses a contact on a massless-boundary body whose surface the boundary does not carry alone.
   static void require_boundary_covers(const SurfaceContact& c, const FloatingBody* target, const std::string& target_surface);
   /// Refuses exact contact on a surface whose points move with integrated coordinates.
