@@ -586,4 +586,39 @@ void set_contact_radius(ModelSpec& model, double radius, const std::string& sour
     if (resolution.hierarchical && p.refinement.hierarchical) p.refinement.hierarchical->smallest = resolution.element_size();
 }
 
+void set_refinement_point(ModelSpec& model, const std::string& surface, const std::vector<double>& at, double width,
+                          const std::string& source) {
+  const auto s = std::find_if(model.contact_surfaces.begin(), model.contact_surfaces.end(),
+                              [&](const ContactSurfaceSpec& c) { return c.name == surface; });
+  if (s == model.contact_surfaces.end()) throw format::InputError(model.file, source, "no contact_surface named '" + surface + "'");
+  if (!s->continued.empty())
+    throw format::InputError(model.file, source, "contact surface '" + surface + "' spans several patches; a refinement point lies on one");
+  PatchSpec& patch = model.patches[std::size_t(s->patch)];
+  if (!patch.refinement.hierarchical)
+    throw format::InputError(model.file, source,
+                             "the patch of contact surface '" + surface + "' has no [refinement.hierarchical] to place");
+  if (!(width > 0) || !std::isfinite(width)) throw format::InputError(model.file, source, "the width must be a positive length in metres");
+  const NurbsPatch& geometry = patch.patch;
+  const PatchSide side = *geometry.side(s->side);  // the model reader resolved it
+  if (int(at.size()) != geometry.param_dim() - 1)
+    throw format::InputError(model.file, source,
+                             "needs " + std::to_string(geometry.param_dim() - 1) + " tangential parameter(s) of surface '" + surface + "'");
+  std::vector<double> point;
+  for (int d = 0, t = 0; d < geometry.param_dim(); ++d) {
+    if (d == side.direction) {
+      point.push_back(side.end == 0 ? geometry.lower(d) : geometry.upper(d));
+      continue;
+    }
+    const double u = at[std::size_t(t++)];
+    if (!(u >= geometry.lower(d) && u <= geometry.upper(d)))
+      throw format::InputError(model.file, source, std::string("outside the parameter range of ") + direction_name(d));
+    point.push_back(u);
+  }
+  HierarchicalRequest& request = *patch.refinement.hierarchical;
+  request.box.clear();
+  request.point = point;
+  request.width = width;
+  if (model.reduction.interface_surface == surface) model.reduction.interface_center = Eigen::Map<const Eigen::VectorXd>(at.data(), Eigen::Index(at.size()));
+}
+
 }  // namespace isosid::prep

@@ -5,6 +5,8 @@
 #include "pipeline/prepare.hpp"
 #include "tools/prep_report.hpp"
 
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 namespace {
@@ -14,6 +16,26 @@ std::string default_output(const std::string& model) {
   if (model.size() > suffix.size() && model.compare(model.size() - suffix.size(), suffix.size(), suffix) == 0)
     return model.substr(0, model.size() - suffix.size()) + ".sid.h5";
   return model + ".sid.h5";
+}
+
+/// "SURFACE:U[,V]" -> the surface's name and its tangential parameter(s).
+std::pair<std::string, std::vector<double>> parse_refinement_point(const std::string& text, const std::string& model_file) {
+  const std::size_t colon = text.rfind(':');
+  const auto refuse = [&] { throw isosid::format::InputError(model_file, "--refine-at", "must be SURFACE:U or SURFACE:U,V, not '" + text + "'"); };
+  if (colon == std::string::npos || colon == 0) refuse();
+  std::vector<double> at;
+  std::size_t begin = colon + 1;
+  while (true) {
+    const std::size_t comma = text.find(',', begin);
+    const std::string number = text.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
+    char* end = nullptr;
+    const double u = std::strtod(number.c_str(), &end);
+    if (number.empty() || *end != '\0' || !std::isfinite(u)) refuse();
+    at.push_back(u);
+    if (comma == std::string::npos) break;
+    begin = comma + 1;
+  }
+  return {text.substr(0, colon), at};
 }
 
 }  // namespace
@@ -43,10 +65,22 @@ int main(int argc, char** argv) {
     app.add_flag("--coarse", coarse,
                  "build the coarse model of a hierarchically refined body instead: the model without its "
                  "[refinement.hierarchical], reduced to its normal modes (what the refined SID's transfer maps from)");
+    std::string refine_at;
+    double refine_width = 0;
+    app.add_option("--refine-at", refine_at,
+                   "SURFACE:U[,V]: centre the model's [refinement.hierarchical] (and a Craig-Bampton interface on that "
+                   "surface) at tangential parameter(s) U[,V] of contact surface SURFACE (isosid-run asks so at an impact)");
+    app.add_option("--refine-width", refine_width, "with --refine-at: physical width of the refined region, m");
     if (auto status = common::parse_command_line(app, argc, argv)) return *status;
 
     prep::ModelSpec spec = prep::read_model_file(model_file);  // progress starts on valid input (a meshed body is meshed here: gmsh takes well under a second)
     if (app.count("--contact-radius")) prep::set_contact_radius(spec, contact_radius, "--contact-radius");
+    if (app.count("--refine-at") != app.count("--refine-width"))
+      throw format::InputError(model_file, "--refine-at", "goes with --refine-width (the refined region's width, m)");
+    if (app.count("--refine-at")) {
+      const auto [surface, at] = parse_refinement_point(refine_at, model_file);
+      prep::set_refinement_point(spec, surface, at, refine_width, "--refine-at");
+    }
     if (coarse) spec = prep::coarse_model_spec(std::move(spec));
     prep::StderrProgress progress("isosid-prep");
     prep::StageObserver& observer = quiet ? prep::no_progress() : progress;
