@@ -1,0 +1,96 @@
+// The adaptive loop's SID cache (seed 001 Sect. 4): fine models refined where an impact
+// happens, built once by isosid-prep and read back on a repeated request.
+#include "adapt/model_cache.hpp"
+#include "isosid/format/error.hpp"
+#include "isosid/format/sid_io.hpp"
+#include "support/run_program.hpp"
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+using namespace isosid;
+
+namespace {
+
+/// Gauss points of the sphere's contact surface whose tangential parameter (xi; the surface
+/// is the side eta = 0) lies within `half` of `xi`.
+int points_near(const format::Sid& sid, double xi, double half) {
+  const format::ContactSurface& s = sid.contact_surfaces.at(0);
+  int n = 0;
+  for (Eigen::Index g = 0; g < s.points(); ++g) n += std::abs(s.parameter(g, 0) - xi) <= half;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("model cache: a fine model is refined where asked, built once, and its transfer starts from the coarse model",
+          "[runtime][unit][adaptive]") {
+  ::setenv("ISOSID_PREP", ISOSID_PREP_EXE, 1);
+  const test::ScratchDir dir("model_cache");
+  const std::string model = dir.path("sphere.model.toml");
+  std::filesystem::copy_file(std::string(ISOSID_MODELS_DIR) + "/sphere_axisym_thb.model.toml", model);
+  run::ModelCache cache(dir.path("cache"), true);
+
+  // two impact points on the lower arc, 0.5 mm wide regions (xi 0.05 is 2.4 mm from the pole)
+  const run::RefinementRequest off_pole{"contact", {0.05}, 0.5e-3}, at_pole{"contact", {0.0}, 0.5e-3};
+  const run::CachedSid first = cache.fine(model, off_pole);
+  CHECK_FALSE(first.hit);
+  CHECK(first.seconds > 0);
+  const format::Sid fine = format::read_sid(first.file);
+  const format::Sid pole = format::read_sid(cache.fine(model, at_pole).file);
+  // the refinement follows the point: the 25 um elements put many more Gauss points within
+  // 0.1 mm of it than the model refined at the other point does (the coarse elements there
+  // are ~0.4 mm long, so without refinement at most a few points fall within)
+  const double half = 0.1e-3 / (M_PI * 0.01 / 2);  // 0.1 mm as a parameter of the quarter arc
+  CHECK(points_near(fine, 0.05, half) >= 4 * points_near(pole, 0.05, half));
+  CHECK(points_near(pole, 0.0, half) >= 4 * points_near(fine, 0.0, half));
+
+  // the same request again: read from the cache, the file untouched
+  const auto stamp = std::filesystem::last_write_time(first.file);
+  const run::CachedSid again = cache.fine(model, off_pole);
+  CHECK(again.hit);
+  CHECK(again.file == first.file);
+  CHECK(std::filesystem::last_write_time(again.file) == stamp);
+  CHECK(cache.hits() == 1);
+  CHECK(cache.builds() == 2);
+
+  // the coarse model it transfers from: the same model file, its normal modes only
+  const run::CachedSid coarse_file = cache.coarse(model);
+  const format::Sid coarse = format::read_sid(coarse_file.file);
+  REQUIRE(fine.transfer.has_value());
+  CHECK(fine.transfer->coarse_model_sha256 == coarse.provenance.model_sha256);
+  CHECK(fine.transfer->coarse_to_fine.cols() == coarse.nq());
+  CHECK(coarse.nq() < fine.nq());
+
+  // another width, or a changed model file, is another request
+  CHECK_FALSE(cache.fine(model, {"contact", {0.05}, 0.6e-3}).hit);
+  std::ofstream(model, std::ios::app) << "\n# edited\n";
+  CHECK_FALSE(cache.fine(model, off_pole).hit);
+}
+
+TEST_CASE("model cache: a request isosid-prep refuses is an input error naming the model file", "[runtime][unit][adaptive][bad-input]") {
+  ::setenv("ISOSID_PREP", ISOSID_PREP_EXE, 1);
+  const test::ScratchDir dir("model_cache_refused");
+  run::ModelCache cache(dir.path("cache"), true);
+  const std::string thb = std::string(ISOSID_MODELS_DIR) + "/sphere_axisym_thb.model.toml";
+  const std::string graded = std::string(ISOSID_MODELS_DIR) + "/sphere_axisym.model.toml";
+  const auto refused = [&](const std::string& model, const run::RefinementRequest& request, const std::string& problem) {
+    try {
+      cache.fine(model, request);
+      FAIL("accepted");
+    } catch (const format::InputError& e) {
+      INFO(e.what());
+      CHECK(std::string(e.what()).find(model) != std::string::npos);
+      CHECK(std::string(e.what()).find(problem) != std::string::npos);
+    }
+  };
+  refused(thb, {"contact", {1.5}, 0.5e-3}, "outside the parameter range");
+  refused(thb, {"rim", {0.1}, 0.5e-3}, "no contact_surface named 'rim'");
+  refused(thb, {"contact", {0.1, 0.2}, 0.5e-3}, "tangential parameter");
+  refused(graded, {"contact", {0.1}, 0.5e-3}, "no [refinement.hierarchical]");
+  CHECK(cache.builds() == 0);
+  const bool empty = !std::filesystem::exists(dir.path("cache")) || std::filesystem::is_empty(dir.path("cache"));
+  CHECK(empty);  // nothing half-built is left for a later run to find
+}
