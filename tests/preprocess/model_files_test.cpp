@@ -504,3 +504,30 @@ TEST_CASE("contact elements sized from the expected contact radius", "[model][co
   CHECK(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);
 }
 
+
+TEST_CASE("isosid-prep --refine-at moves a hierarchical refinement and its Craig-Bampton interface; malformed requests exit 2", "[model][thb]") {
+  const std::string thb = std::string(ISOSID_MODELS_DIR) + "/sphere_axisym_thb.model.toml";
+  auto spec = prep::read_model_file(thb);
+  prep::set_refinement_point(spec, "contact", {0.05}, 0.5e-3, "test");
+  const auto& request = *spec.patches[0].refinement.hierarchical;
+  CHECK(request.box.empty());
+  CHECK(request.point == std::vector<double>{0.05, 0.0});  // the lower arc is the side eta = 0
+  CHECK(request.width == 0.5e-3);
+  REQUIRE(spec.reduction.interface_center.size() == 1);
+  CHECK(spec.reduction.interface_center(0) == 0.05);
+
+  const test::ScratchDir dir("refine-at");
+  const auto refused = [&](const std::string& options, const std::string& problem) {
+    const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + options + " " + thb + " -o " + dir.path("s.sid.h5"));
+    CHECK(r.exit_status == 2);
+    CHECK_THAT(r.err, Contains("sphere_axisym_thb.model.toml") && Contains("--refine-at") && Contains(problem));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(std::filesystem::exists(dir.path("s.sid.h5")));
+  };
+  refused("--refine-at contact:0.05", "goes with --refine-width");
+  refused("--refine-at contact0.05 --refine-width 1e-3", "must be SURFACE:U");
+  refused("--refine-at contact:0.05, --refine-width 1e-3", "must be SURFACE:U");
+  refused("--refine-at contact:nan --refine-width 1e-3", "must be SURFACE:U");
+  refused("--refine-at contact:0.05 --refine-width 0", "positive length");
+  refused("--refine-at contact:1.5 --refine-width 1e-3", "outside the parameter range of xi");
+}
