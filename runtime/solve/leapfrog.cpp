@@ -5,14 +5,14 @@
 
 namespace isosid::run {
 
-Leapfrog::Leapfrog(const MultibodySystem& system, double step, Eigen::VectorXd& y)
+Leapfrog::Leapfrog(const MultibodySystem& system, double step, Eigen::VectorXd& y, double t0)
     : system_(system), step_(step), y_(y), ydot_(Eigen::VectorXd::Zero(y.size())) {
   for (const auto& b : system_.bodies()) {
     // a body's state: r (3), quaternion (4), q (nd), then v (3), omega (3), qdot (nd)
     const Eigen::Index velocities = b->offset() + 7 + b->n_dynamic();
     for (Eigen::Index i = 0; i < 6 + b->n_dynamic(); ++i) velocities_.push_back(velocities + i);
   }
-  system_.rhs(0.0, y_.data(), ydot_.data());
+  system_.rhs(t0, y_.data(), ydot_.data());
   ++evaluations_;
   gaps_.resize(system_.contacts().size());
   new_gaps_.resize(gaps_.size());

@@ -16,7 +16,7 @@ namespace isosid::run {
 
 class Leapfrog {
 public:
-  Leapfrog(const MultibodySystem& system, double step, Eigen::VectorXd& y);
+  Leapfrog(const MultibodySystem& system, double step, Eigen::VectorXd& y, double t0 = 0);
 
   /// One step of at most `dt` from (t, y): y and t are updated in place.
   void step(double& t, double dt);

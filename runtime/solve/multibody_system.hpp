@@ -51,6 +51,8 @@ public:
   /// At an accepted step (never inside the root finder's search, which goes back and forth in
   /// time): released contacts whose surfaces are apart at y are armed again.
   void rearm_touches(const double* y) const;
+  /// Contact k waits for its next touch (its last impact, if any, is over: opened and apart).
+  bool touch_armed(std::size_t k) const { return touch_state_[k] == TouchState::Armed; }
   /// Contact states at y (for output); also brings the quasistatic modes up to date for y.
   std::vector<ContactState> contact_states(const double* y) const;
   /// Energies at y, given `states` = contact_states(y) (evaluated once for both).

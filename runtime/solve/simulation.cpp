@@ -37,11 +37,26 @@ Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
     : scene_(std::move(scene)),
       system_(scene_, std::move(sids)),
       integrator_(system_, scene_.simulation, initial_state(system_, scene_)) {
+  report_steps();
+  if (!scene_.simulation.allow_initial_penetration) refuse_initial_penetration();
+}
+
+Simulation::Simulation(Scene scene, std::vector<format::Sid> sids, double t0, const StartState& start_state)
+    : scene_(std::move(scene)), system_(scene_, std::move(sids)), integrator_(system_, scene_.simulation, start_state(system_), t0), t_(t0) {
+  if (integrator_.y().size() != system_.size())
+    throw format::ComputationError("a phase's start state has " + std::to_string(integrator_.y().size()) + " entries, its system " +
+                                   std::to_string(system_.size()));
+  // the next output time after t0 (outputs stay on the scene's grid of multiples of the interval)
+  const double dt_out = scene_.simulation.output_interval;
+  next_output_ = std::max(1L, long(std::floor(t0 / dt_out * (1 + 1e-12))) + 1);
+  report_steps();
+}
+
+void Simulation::report_steps() {
   integrator_.on_step([this](double t, const double* y) {
     system_.rearm_touches(y);
     if (observer_) observer_->step(t, y);
   });
-  if (!scene_.simulation.allow_initial_penetration) refuse_initial_penetration();
 }
 
 void Simulation::refuse_initial_penetration() const {

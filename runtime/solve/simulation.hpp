@@ -6,6 +6,7 @@
 #include "solve/multibody_system.hpp"
 #include "solve/time_integrator.hpp"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,11 @@ public:
   /// `sids`: one per flexible body of the scene, in order. The scene is kept by value.
   /// Bodies that start interpenetrating are refused (InputError) unless the scene allows it.
   Simulation(Scene scene, std::vector<format::Sid> sids);
+  /// A later phase of a run (seed 001's phases on other models of the bodies): starts at time
+  /// t0 in the state `start_state` makes for this scene's system, without a static start, and
+  /// takes contacts that are closed there as they are.
+  using StartState = std::function<Eigen::VectorXd(const MultibodySystem&)>;
+  Simulation(Scene scene, std::vector<format::Sid> sids, double t0, const StartState& start_state);
 
   const Scene& scene() const { return scene_; }
   const MultibodySystem& system() const { return system_; }
@@ -63,6 +69,8 @@ public:
   RunOutcome run(SimulationObserver& observer);
 
 private:
+  /// Accepted steps rearm the touches and go to the observer of advance_to.
+  void report_steps();
   /// InputError naming the contact, the bodies and the depth if any contact starts closed.
   void refuse_initial_penetration() const;
 

@@ -122,20 +122,21 @@ void check(int flag, const char* what) {
 }
 }  // namespace
 
-TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSettings& s, Eigen::VectorXd y0)
+TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSettings& s, Eigen::VectorXd y0, double t0)
     : impl_(std::make_unique<Impl>(system, s.integrator == IntegratorKind::Implicit)), y_(std::move(y0)), max_steps_(s.max_steps) {
   Impl& m = *impl_;
   m.owner = this;
   if (s.integrator == IntegratorKind::Leapfrog) {
-    leapfrog_ = std::make_unique<Leapfrog>(system, s.step, y_);
+    leapfrog_ = std::make_unique<Leapfrog>(system, s.step, y_, t0);
     return;
   }
   check(SUNContext_Create(nullptr, &m.context), "context");
   m.y = N_VMake_Serial(y_.size(), y_.data(), m.context);  // shares y_'s storage
-  m.accepted_y = y_;  // restarts go back to the initial state until a step is accepted (t = 0)
+  m.accepted_y = y_;  // restarts go back to the initial state until a step is accepted
+  m.accepted_t = t0;
   const int n_roots = int(system.root_count());
   if (m.implicit) {
-    m.memory = ARKStepCreate(nullptr, Impl::rhs, 0.0, m.y, m.context);
+    m.memory = ARKStepCreate(nullptr, Impl::rhs, t0, m.y, m.context);
     if (!m.memory) throw format::ComputationError("SUNDIALS: ARKStepCreate failed");
     check(ARKStepSetUserData(m.memory, &m), "user data");
     check(ARKStepSetErrHandlerFn(m.memory, Impl::record_message, &m), "error handler");
@@ -154,7 +155,7 @@ TimeIntegrator::TimeIntegrator(const MultibodySystem& system, const SimulationSe
       check(ARKStepSetNoInactiveRootWarn(m.memory), "root warnings");
     }
   } else {
-    m.memory = ERKStepCreate(Impl::rhs, 0.0, m.y, m.context);
+    m.memory = ERKStepCreate(Impl::rhs, t0, m.y, m.context);
     if (!m.memory) throw format::ComputationError("SUNDIALS: ERKStepCreate failed");
     check(ERKStepSetUserData(m.memory, &m), "user data");
     check(ERKStepSetErrHandlerFn(m.memory, Impl::record_message, &m), "error handler");

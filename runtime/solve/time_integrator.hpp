@@ -23,7 +23,8 @@ constexpr int kMaxStepRetries = 8;
 
 class TimeIntegrator {
 public:
-  TimeIntegrator(const MultibodySystem& system, const SimulationSettings& settings, Eigen::VectorXd y0);
+  /// Starts at y0 at time t0 (a later phase of a run starts where the one before ended).
+  TimeIntegrator(const MultibodySystem& system, const SimulationSettings& settings, Eigen::VectorXd y0, double t0 = 0);
   ~TimeIntegrator();
   TimeIntegrator(const TimeIntegrator&) = delete;
   TimeIntegrator& operator=(const TimeIntegrator&) = delete;
