@@ -6,6 +6,7 @@
 #include "isosid/format/hdf5_file.hpp"
 #include "contact/deformed_patch.hpp"
 #include "output/force_spectrum.hpp"
+#include "output/reference_comparison.hpp"
 #include "isosid/common/number_text.hpp"
 
 #include <cmath>
@@ -396,38 +397,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     j["monitors"].push_back(mon);
   }
   for (const StressMonitor& s : stress_monitors_) j["monitors"].push_back(s.summary());
-  // comparison with [reference]
-  json cmp = json::object();
-  auto measured = [&](const std::string& key) -> std::optional<double> {
-    const auto& c = j["contacts"];
-    const auto& b = j["bodies"][0];
-    if (key == "peak_force_n" && !c.empty()) return c[0]["peak_force_n"].get<double>();
-    if (key == "contact_time_s" && !c.empty() && !c[0]["duration_s"].is_null()) return c[0]["duration_s"].get<double>();
-    if (key == "contact_end_s" && !c.empty() && !c[0]["end_s"].is_null()) return c[0]["end_s"].get<double>();
-    if (key == "rebound_velocity_m_s") return Eigen::Vector3d(b["final_velocity"][0], b["final_velocity"][1], b["final_velocity"][2]).norm();
-    if (key == "final_velocity_x_m_s") return b["final_velocity"][0].get<double>();
-    if (key == "final_velocity_y_m_s") return b["final_velocity"][1].get<double>();
-    if (key == "final_velocity_z_m_s") return b["final_velocity"][2].get<double>();
-    if (key == "final_angular_velocity_rad_s") return b["final_angular_velocity"][2].get<double>();
-    if (key == "wave_arrival_s" && !j["monitors"].empty() && !j["monitors"][0]["arrival_s"].is_null())
-      return j["monitors"][0]["arrival_s"].get<double>();
-    if (key == "peak_von_mises_pa" && !stress_monitors_.empty()) return stress_monitors_[0].summary()["peak_von_mises_pa"].get<double>();
-    if (key == "peak_von_mises_depth_m" && !stress_monitors_.empty()) {
-      const json stress = stress_monitors_[0].summary();
-      if (stress.contains("peak_depth_m")) return stress["peak_depth_m"].get<double>();
-    }
-    return std::nullopt;
-  };
-  for (const auto& [key, ref] : scene_.reference) {
-    const auto value = measured(key);
-    json entry = {{"reference", ref}};
-    entry["value"] = value ? json(*value) : json(nullptr);
-    // signed: positive where the run measures more than the reference
-    entry["rel_error"] = value && ref != 0 ? json((*value - ref) / std::abs(ref)) : json(nullptr);
-    if (value && ref == 0) entry["abs_error"] = *value;
-    cmp[key] = entry;
-  }
-  j["reference"] = cmp;
+  j["reference"] = compare_with_reference(j, scene_.reference);
   return j;
 }
 
