@@ -60,6 +60,15 @@ struct BodySpec {
   /// "static": in their static deflection under everything acting at the start, the frame
   /// moved with it so that the joints hold (solve/static_start; seed 001 §6)
   std::string elastic_start = "rest";
+  /// seed 001's adaptive impacts: the body runs on its model's coarse model between impacts
+  /// and on a model refined around each impact during it (needs `model_file`; no `sid_file`)
+  bool adaptive = false;
+};
+
+/// [adaptive]: how the adaptive bodies' models are found and refined (seed 001 Sect. 4).
+struct AdaptiveSettings {
+  std::string cache;            ///< folder of the SIDs built for the run (default: .isosid-cache beside the scene)
+  double interval_width = 0;    ///< m, the first impact's refined region; 0: from the impact's Hertz estimate
 };
 
 /// An analytic surface: fixed in the world, or the surface of a rigid body (in its frame).
@@ -124,6 +133,7 @@ struct Scene {
   std::string file;
   SimulationSettings simulation;
   OutputSettings output;
+  AdaptiveSettings adaptive;
   std::vector<BodySpec> bodies;        ///< flexible bodies first, then rigid ones
   std::vector<ShapeSpec> fixed_surfaces;
   std::vector<ContactSpec> contacts;
@@ -132,6 +142,7 @@ struct Scene {
   std::vector<StressMonitorSpec> stress_monitors;  ///< [[monitor]] tables with `stress`
   const BodySpec* body(const std::string& name) const;
   const ShapeSpec* fixed_surface(const std::string& name) const;
+  bool has_adaptive_bodies() const;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   std::map<std::string, double> reference;  ///< [reference] values, e.g. peak_force_n
 };

@@ -187,7 +187,7 @@ Scene read_scene_file(const std::string& path) {
   const toml::table root = common::parse_toml_file(path);
   const TomlView top(root, path);
   top.allow_only({"simulation", "flexible_body", "rigid_body", "fixed_plane", "fixed_sphere", "fixed_cylinder", "contact",
-                  "joint", "monitor", "reference", "output"});
+                  "joint", "monitor", "reference", "output", "adaptive"});
   Scene scene;
   scene.file = path;
   scene.simulation = read_simulation(top.table("simulation"));
@@ -210,12 +210,15 @@ Scene read_scene_file(const std::string& path) {
   };
   for (const TomlView& b : top.tables("flexible_body")) {
     b.allow_only({"name", "sid", "model", "position", "orientation", "velocity", "angular_velocity", "q0", "qdot0", "locked",
-                  "high_modes", "quasistatic_above_hz", "elastic_start"});
+                  "high_modes", "quasistatic_above_hz", "elastic_start", "adaptive"});
     BodySpec f = read_motion(b, unique(b), scene.simulation.dimension);
-    f.sid_file = resolve(path, b.string("sid"));
+    f.adaptive = b.boolean("adaptive", false);
+    if (f.adaptive && b.has("sid")) b.fail("sid", "an adaptive body's SIDs are built from its model (drop sid)");
+    f.sid_file = f.adaptive ? "" : resolve(path, b.string("sid"));
     f.model_file = resolve(path, b.string("model", ""));
+    if (f.adaptive && f.model_file.empty()) b.fail("model", "an adaptive body needs its model file (with [refinement.hierarchical])");
     if (!f.model_file.empty() && !fs::is_regular_file(f.model_file)) b.fail("model", "file not found: " + f.model_file);
-    if (f.model_file.empty() && !fs::is_regular_file(f.sid_file)) b.fail("sid", "file not found: " + f.sid_file);
+    if (!f.adaptive && f.model_file.empty() && !fs::is_regular_file(f.sid_file)) b.fail("sid", "file not found: " + f.sid_file);
     if (b.has("q0")) {
       const auto v = b.numbers("q0");
       f.q0 = Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(v.size()));
@@ -370,7 +373,18 @@ Scene read_scene_file(const std::string& path) {
       scene.reference["final_velocity_z_m_s"] = v.z();
     }
   }
+  if (auto a = top.optional_table("adaptive")) {
+    a->allow_only({"cache", "interval_width"});
+    scene.adaptive.cache = resolve(path, a->string("cache", ""));
+    scene.adaptive.interval_width = a->positive("interval_width", 0);
+    if (!scene.has_adaptive_bodies()) a->fail("cache", "no flexible_body is adaptive");
+  }
+  if (scene.adaptive.cache.empty()) scene.adaptive.cache = resolve(path, ".isosid-cache");
   return scene;
+}
+
+bool Scene::has_adaptive_bodies() const {
+  return std::any_of(bodies.begin(), bodies.end(), [](const BodySpec& b) { return b.adaptive; });
 }
 
 }  // namespace isosid::run
