@@ -2,6 +2,7 @@
 // contact and writes results.h5 and summary.json (the work is run::Simulation's).
 #include "isosid/common/cli_parse.hpp"
 #include "isosid/common/progress_line.hpp"
+#include "adapt/adaptive_run.hpp"
 #include "output/paraview_series.hpp"
 #include "output/recorder.hpp"
 #include "output/run_report.hpp"
@@ -61,6 +62,32 @@ std::string default_output(const std::string& scene_file) {
   return (std::filesystem::path("out") / name.substr(0, name.find('.'))).string();
 }
 
+/// A scene with adaptive bodies: phase by phase (run::AdaptiveRun), with the same report,
+/// exit codes and interruption as a plain run.
+int run_adaptive(run::Scene scene, const std::string& scene_file, const std::string& out_dir, bool as_json, bool quiet) {
+  run::AdaptiveRun adaptive(std::move(scene), out_dir, quiet);
+  run::mark_run_started(out_dir, scene_file);
+  const run::AdaptiveRun::Result result = adaptive.run([] { return g_stop_signal != 0; });
+  const nlohmann::json& summary = result.summary;
+  if (as_json) std::cout << summary.dump(2) << "\n";
+  if (!quiet && result.outcome.completed())
+    for (const auto& warning : summary["warnings"]) std::cerr << "isosid-run: warning: " << warning.get<std::string>() << "\n";
+  if (!quiet)
+    std::fprintf(stderr, "isosid-run: %s in %.3f s wall, %lld steps, %zu phases -> %s\n%s", result.outcome.status.c_str(),
+                 summary["wall_time_s"].get<double>(), summary["steps"].get<long long>(), summary["adaptive"]["phases"].size(),
+                 out_dir.c_str(), run::reference_lines(summary).c_str());
+  if (result.outcome.status == "interrupted") {
+    std::fprintf(stderr, "isosid-run: interrupted by %s at t = %.6g s; results so far are in %s\n", strsignal(g_stop_signal),
+                 result.end_time, out_dir.c_str());
+    return 128 + int(g_stop_signal);
+  }
+  if (!result.outcome.completed()) {
+    std::cerr << "isosid-run: failed: " << result.outcome.failure << "; results so far are in " << out_dir << "\n";
+    return common::kExitFailure;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -79,6 +106,7 @@ int main(int argc, char** argv) {
     run::Scene scene = run::read_scene_file(scene_file);
     if (paraview_flag) scene.output.paraview = true;
     if (out_dir.empty()) out_dir = default_output(scene_file);
+    if (scene.has_adaptive_bodies()) return run_adaptive(std::move(scene), scene_file, out_dir, as_json, quiet);
     std::vector<format::Sid> sids = run::load_sids(scene, quiet);
     run::fit_contact_resolution(scene, sids, quiet);
     run::Simulation simulation(std::move(scene), std::move(sids));

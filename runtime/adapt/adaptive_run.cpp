@@ -1,0 +1,370 @@
+// The adaptive run's phases; see adaptive_run.hpp.
+#include "adapt/adaptive_run.hpp"
+
+#include "adapt/model_cache.hpp"
+#include "adapt/phase_results.hpp"
+#include "adapt/state_transfer.hpp"
+#include "contact/deformed_patch.hpp"
+#include "contact/impact_estimate.hpp"
+#include "isosid/format/atomic_output.hpp"
+#include "isosid/format/error.hpp"
+#include "isosid/format/hdf5_file.hpp"
+#include "isosid/format/sid_io.hpp"
+#include "output/recorder.hpp"
+#include "output/reference_comparison.hpp"
+#include "output/run_report.hpp"
+#include "scene/sid_provider.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <tuple>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+namespace isosid::run {
+
+namespace {
+
+using nlohmann::json;
+
+/// Seed 001 Sect. 4.2: the contact interval is used best at 70 % (the first impact's width
+/// makes the Hertz contact diameter 70 % of it).
+constexpr double kTargetUtilization = 0.7, kMinUtilization = 0.5;
+/// Tries of one impact before the last one is taken as it is.
+constexpr int kMaxTries = 4;
+
+/// A phase's observer: records like a plain run and ends a coarse phase at the first touch of
+/// a contact with an adaptive body, an impact phase once its contact's surfaces are apart
+/// again, or as soon as its load reaches beyond the refined region (seed 001: an edge element
+/// in contact makes the rest of the impact pointless).
+class PhaseRecorder : public Recorder {
+public:
+  struct Found {
+    int contact;
+    double time;
+    Touch touch;
+  };
+  /// The impact of an impact phase: its contact, where its surfaces touched (world, at the
+  /// phase's start state y0) and the width of the region refined around it.
+  struct Impact {
+    int contact = -1;
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();
+    double width = 0;
+  };
+  /// An impact phase starts where its contact's surfaces touch: that touch is taken as found,
+  /// so the phase ends once they have been apart again after the contact opened.
+  PhaseRecorder(const Simulation& simulation, const std::vector<bool>& adaptive_contact, const Impact& impact,
+                const std::function<bool()>& stop_requested)
+      : Recorder(simulation.system(), simulation.scene()), system_(simulation.system()), adaptive_contact_(adaptive_contact),
+        impact_(impact), stop_requested_(stop_requested), start_(simulation.time()) {
+    if (impact_.contact < 0) return;
+    system_.touched(std::size_t(impact_.contact));
+    const FloatingBody& body = system_.contacts()[std::size_t(impact_.contact)].body();
+    const double* y0 = simulation.state().data();
+    touch_in_body_ = body.orientation(y0).conjugate() * (impact_.point - Eigen::Vector3d(body.r(y0)));
+  }
+
+  void touch(int k, double t, const Touch& touch) override {
+    if (k == impact_.contact && t == start_) return;  // the touch that started the phase: the coarse phase reported it
+    Recorder::touch(k, t, touch);
+    if (impact_.contact < 0 && adaptive_contact_[std::size_t(k)] && !found_) found_ = Found{k, t, touch};
+  }
+  void step(double t, const double* y) override {
+    Recorder::step(t, y);
+    if (impact_.contact < 0) return;
+    // the farthest loaded point from the touch, in the slave's frame (seed 001's utilization
+    // of the contact interval, measured as a length: contact radius over half the width)
+    const SurfaceContact& contact = system_.contacts()[std::size_t(impact_.contact)];
+    const Eigen::Quaterniond frame = contact.body().orientation(y);
+    const Eigen::Vector3d origin = contact.body().r(y);
+    for (const PointLoad& p : contact.point_loads(y))
+      reach_ = std::max(reach_, (frame.conjugate() * (p.position - origin) - touch_in_body_).norm());
+    if (utilization() > 1) beyond_ = true;
+    if (system_.touch_armed(std::size_t(impact_.contact))) impact_over_ = true;
+  }
+  bool stop_requested() const override { return phase_over() || stop_requested_(); }
+  bool phase_over() const { return found_.has_value() || impact_over_ || beyond_; }
+  const std::optional<Found>& found() const { return found_; }
+  /// Impact phases: the largest distance of a loaded point from the touch over half the width.
+  double utilization() const { return reach_ / (impact_.width / 2); }
+  /// The load reached beyond the refined region (the phase stopped there).
+  bool beyond() const { return beyond_; }
+
+private:
+  const MultibodySystem& system_;
+  const std::vector<bool>& adaptive_contact_;
+  Impact impact_;
+  const std::function<bool()>& stop_requested_;
+  double start_;  ///< s, the phase's start time
+  std::optional<Found> found_;
+  Eigen::Vector3d touch_in_body_ = Eigen::Vector3d::Zero();
+  double reach_ = 0;
+  bool impact_over_ = false, beyond_ = false;
+};
+
+std::vector<format::Sid> read_sids(const Scene& scene) {
+  std::vector<format::Sid> sids;
+  for (const BodySpec& b : scene.bodies)
+    if (!b.rigid) sids.push_back(format::read_sid(b.sid_file, sid_read_options(scene)));
+  return sids;
+}
+
+double total_energy(const MultibodySystem& system, const double* y) { return system.energies(y, system.contact_states(y)).total(); }
+
+/// Where the impact of contact k refines: the slave body on its surface at the touch, and a
+/// flexible target on its own surface at the touch's parameter there; adaptive bodies only.
+struct Refinement {
+  std::size_t body;
+  RefinementRequest request;
+};
+
+/// Requests land on a grid, so that impacts at nearly the same place ask for the same model
+/// (a cache hit): the point moves by at most 1/32 of the width, the width by at most 4.5 %.
+constexpr double kPointGridPerWidth = 16, kWidthStepsPerOctave = 8;
+
+double snapped_width(double width) { return std::exp2(std::round(std::log2(width) * kWidthStepsPerOctave) / kWidthStepsPerOctave); }
+
+/// The touch parameter u on `surface` of `body`, snapped to a grid of width / 16 (physical,
+/// through the surface's parametric derivatives there), inside the patch.
+std::vector<double> snapped_point(const FloatingBody& body, const std::string& surface, const Eigen::Vector2d& u, int dim, double width) {
+  const format::ContactSurface* s = body.contact_surface(surface);
+  const format::MasterPatch* patch = s ? format::find_master_patch(body.sid(), s->master_patch) : nullptr;
+  std::vector<double> at(u.data(), u.data() + dim);
+  if (!patch) return at;
+  const DeformedPatch geometry(*patch, body.sid().dim());
+  DeformedPatch::Point point;
+  geometry.evaluate(u, point);
+  for (int d = 0; d < dim; ++d) {
+    const double speed = point.dC[d].norm();  // m per unit parameter
+    if (!(speed > 0)) continue;
+    const double step = width / kPointGridPerWidth / speed;
+    at[std::size_t(d)] = std::clamp(std::round(u(d) / step) * step, geometry.lower(d), geometry.upper(d));
+  }
+  return at;
+}
+
+std::vector<Refinement> refinements(const Scene& scene, const MultibodySystem& system, int k, const Touch& touch, double width) {
+  const ContactSpec& c = scene.contacts[std::size_t(k)];
+  std::vector<Refinement> out;
+  auto add = [&](const std::string& body, const std::string& surface, const Eigen::Vector2d& u) {
+    const std::size_t i = system.body_index(body);
+    if (!scene.bodies[i].adaptive) return;
+    out.push_back({i, {surface, snapped_point(*system.bodies()[i], surface, u, touch.parameter_dim, width), width}});
+  };
+  add(c.body, c.surface, touch.slave_parameter);
+  if (!c.target_surface.empty()) add(c.target, c.target_surface, touch.target_parameter);
+  return out;
+}
+
+/// Seed 001 Alg. 2: whether an impact's refined region fits its contact, and the width for the
+/// next try or the next impact of that contact. Over 1: the load reached beyond the region
+/// (widen by half); under kMinUtilization the region wastes its elements (narrow toward the
+/// target); in between the model is acceptable and the width still moves toward the target,
+/// by at most half.
+struct IntervalDecision {
+  bool acceptable = false;
+  double next_width = 0;
+  std::string reason;
+};
+
+IntervalDecision decide_interval(double utilization, bool beyond, double width) {
+  IntervalDecision d;
+  const double toward_target = width * std::clamp(utilization / kTargetUtilization, 0.5, 1.5);
+  if (beyond) {
+    d.next_width = 1.5 * width;
+    d.reason = "load beyond the refined region";
+  } else if (utilization < kMinUtilization) {
+    d.next_width = toward_target;
+    d.reason = "region too wide";
+  } else {
+    d.acceptable = true;
+    d.next_width = toward_target;
+    d.reason = "acceptable";
+  }
+  return d;
+}
+
+}  // namespace
+
+AdaptiveRun::AdaptiveRun(Scene scene, std::string out_dir, bool quiet)
+    : scene_(std::move(scene)), out_dir_(std::move(out_dir)), quiet_(quiet) {
+  if (scene_.output.paraview)
+    throw format::InputError(scene_.file, "output.paraview", "ParaView output of runs with adaptive bodies is not available yet");
+}
+
+AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested) {
+  ModelCache cache(scene_.adaptive.cache, quiet_);
+  Scene coarse = scene_;
+  for (BodySpec& b : coarse.bodies)
+    if (b.adaptive) b.sid_file = cache.coarse(b.model_file).file;
+  const std::vector<format::Sid> coarse_sids = read_sids(coarse);
+  std::vector<bool> adaptive_contact;
+  for (const ContactSpec& c : scene_.contacts) {
+    const BodySpec* slave = scene_.body(c.body);
+    const BodySpec* target = scene_.body(c.target);
+    adaptive_contact.push_back((slave && slave->adaptive) || (target && target->adaptive && !c.target_surface.empty()));
+  }
+  std::vector<double> width(scene_.contacts.size(), scene_.adaptive.interval_width);  // learned per contact
+
+  std::vector<json> summaries;        // of the phases that make up the run
+  std::vector<std::string> files;
+  json log = json::array();           // every phase run, tries included
+  Result result;
+  int phase = 0;
+  // runs one phase and writes its folder; true if it ended as the loop asked (a touch, an impact over)
+  auto run_phase = [&](Simulation& simulation, const PhaseRecorder::Impact& impact, const std::string& label, json& entry,
+                       std::optional<PhaseRecorder::Found>& found, double& utilization, bool& beyond) {
+    PhaseRecorder recorder(simulation, adaptive_contact, impact, stop_requested);
+    const double start = simulation.time();
+    RunOutcome outcome = simulation.run(recorder);
+    const bool over = recorder.phase_over() && outcome.status == "interrupted";
+    if (over) outcome.status = "completed";
+    char name[96];
+    std::snprintf(name, sizeof name, "%02d-%s", phase++, label.c_str());
+    const std::string folder = (std::filesystem::path(out_dir_) / "phases" / name).string();
+    std::filesystem::create_directories(folder);
+    json summary = write_run_report(folder, recorder, simulation, outcome);
+    entry.update({{"folder", folder}, {"start_s", start}, {"end_s", simulation.time()}, {"status", outcome.status},
+                  {"steps", summary["steps"]}, {"cpu_time_s", outcome.cpu_time_s},
+                  {"energy_start_j", summary["energy"]["initial_j"]}, {"energy_end_j", summary["energy"]["final_j"]}});
+    if (impact.contact >= 0) entry["utilization"] = recorder.utilization();
+    if (!quiet_)
+      std::fprintf(stderr, "isosid-run: phase %s from %.6g to %.6g s: %s, %ld steps\n", name, start, simulation.time(),
+                   outcome.status.c_str(), summary["steps"].get<long>());
+    found = recorder.found();
+    utilization = recorder.utilization();
+    beyond = recorder.beyond();
+    if (!over) result.outcome = outcome;
+    return std::make_tuple(over, std::move(summary), (std::filesystem::path(folder) / "results.h5").string());
+  };
+  // the coarse phases' contacts are meant to be coarse: their resolution warnings say nothing
+  auto drop_resolution_warnings = [](const MultibodySystem& system, json& summary) {
+    for (std::size_t k = 0; k < system.contacts().size(); ++k)
+      if (const auto& e = system.impact_estimates()[k]) {
+        const std::string w = resolution_warning(system.contacts()[k], *e);
+        auto& list = summary["warnings"];
+        list.erase(std::remove(list.begin(), list.end(), json(w)), list.end());
+      }
+  };
+
+  auto simulation = std::make_unique<Simulation>(coarse, coarse_sids);
+  double switch_energy = 0;  // of the switch into the phase about to run
+  std::exception_ptr refused;  // bad input met between phases: reported after the results so far
+  for (;;) try {
+    json entry = {{"kind", "coarse"}, {"switch_energy_change", switch_energy}};
+    std::optional<PhaseRecorder::Found> found;
+    double utilization = 0;
+    bool beyond = false;
+    auto [over, summary, file] = run_phase(*simulation, {}, "coarse", entry, found, utilization, beyond);
+    drop_resolution_warnings(simulation->system(), summary);
+    summaries.push_back(summary);
+    files.push_back(file);
+    log.push_back(entry);
+    if (!over) break;
+
+    // a touch: the impact on models refined there, tried until the refined region fits
+    const int k = found->contact;
+    const std::string contact = scene_.contacts[std::size_t(k)].name;
+    const double t = simulation->time();
+    const Eigen::VectorXd y = simulation->state();
+    const double before = total_energy(simulation->system(), y.data());
+    if (!(width[std::size_t(k)] > 0)) {
+      const auto estimate = estimate_impact(simulation->system().contacts()[std::size_t(k)], y.data());
+      if (!estimate)
+        throw format::InputError(scene_.file, "adaptive.interval_width", "needed: contact '" + contact + "' has no Hertz estimate at its touch");
+      width[std::size_t(k)] = snapped_width(2 * estimate->contact_radius / kTargetUtilization);
+    }
+    std::unique_ptr<Simulation> fine;
+    std::vector<format::Sid> fine_sids;
+    std::vector<std::size_t> refined;
+    bool impact_over = false;
+    for (int attempt = 1; attempt <= kMaxTries; ++attempt) {
+      const double w = width[std::size_t(k)];
+      Scene fine_scene = coarse;
+      std::vector<ElasticMap> maps(simulation->system().bodies().size());
+      json requests = json::array();
+      refined.clear();
+      for (const Refinement& r : refinements(scene_, simulation->system(), k, found->touch, w)) {
+        const CachedSid sid = cache.fine(scene_.bodies[r.body].model_file, r.request);
+        fine_scene.bodies[r.body].sid_file = sid.file;
+        refined.push_back(r.body);
+        requests.push_back({{"body", scene_.bodies[r.body].name}, {"surface", r.request.surface}, {"at", r.request.at},
+                            {"cache_hit", sid.hit}, {"preprocessing_s", sid.seconds}, {"sid", sid.file}});
+      }
+      fine_sids = read_sids(fine_scene);
+      for (std::size_t i : refined) {
+        const format::Sid& f = fine_sids[i];
+        if (!f.transfer || f.transfer->coarse_model_sha256 != coarse_sids[i].provenance.model_sha256)
+          throw format::ComputationError("the refined SID of '" + scene_.bodies[i].name + "' does not transfer from its coarse model");
+        maps[i] = f.transfer->coarse_to_fine;
+      }
+      double after = 0;
+      fine = std::make_unique<Simulation>(fine_scene, fine_sids, t, [&](const MultibodySystem& to) {
+        Eigen::VectorXd moved = transfer_state(simulation->system(), y.data(), to, maps);
+        after = total_energy(to, moved.data());
+        return moved;
+      });
+      json try_entry = {{"kind", "impact"}, {"contact", contact}, {"try", attempt}, {"touch_s", found->time},
+                        {"width_m", w}, {"refined", requests},
+                        {"switch_energy_change", before != 0 ? (after - before) / std::abs(before) : after - before}};
+      std::optional<PhaseRecorder::Found> unused;
+      auto [ended, impact_summary, impact_file] =
+          run_phase(*fine, {k, found->touch.point, w}, "impact-" + contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""),
+                    try_entry, unused, utilization, beyond);
+      IntervalDecision d = decide_interval(utilization, beyond, w);
+      if (!ended) d = {true, w, "the run ended during the impact"};  // it keeps what it has
+      const bool accepted = d.acceptable || attempt == kMaxTries;
+      try_entry.update({{"decision", d.reason}, {"accepted", accepted}, {"next_width_m", d.next_width}});
+      log.push_back(try_entry);
+      width[std::size_t(k)] = snapped_width(d.next_width);  // the next try, or the contact's next impact, starts from it
+      if (accepted) {
+        summaries.push_back(impact_summary);
+        files.push_back(impact_file);
+        impact_over = ended;
+        break;
+      }
+    }
+    if (!impact_over) break;
+
+    // the impact is over: back to the coarse models
+    const double t_end = fine->time();
+    const Eigen::VectorXd y_end = fine->state();
+    const double before_back = total_energy(fine->system(), y_end.data());
+    std::vector<ElasticMap> maps(fine->system().bodies().size());
+    for (std::size_t i : refined) maps[i] = fine_sids[i].transfer->fine_to_coarse;
+    double after = 0;
+    simulation = std::make_unique<Simulation>(coarse, coarse_sids, t_end, [&](const MultibodySystem& to) {
+      Eigen::VectorXd moved = transfer_state(fine->system(), y_end.data(), to, maps);
+      after = total_energy(to, moved.data());
+      return moved;
+    });
+    switch_energy = before_back != 0 ? (after - before_back) / std::abs(before_back) : after - before_back;
+  } catch (const format::InputError& e) {  // e.g. a model isosid-prep cannot refine
+    result.outcome = {"failed", e.what()};
+    refused = std::current_exception();
+    break;
+  } catch (const format::ComputationError& e) {
+    result.outcome = {"failed", e.what()};
+    break;
+  }
+
+  // the run's results from its phases
+  const std::string results = (std::filesystem::path(out_dir_) / "results.h5").string();
+  join_phase_results(files, results, scene_.simulation.output_interval);
+  const Eigen::VectorXd total = format::h5::Reader(results).vector("/energy/total");
+  json summary = join_phase_summaries(summaries, std::vector<double>(total.data(), total.data() + total.size()));
+  summary["status"] = result.outcome.status;
+  if (!result.outcome.failure.empty()) summary["failure"] = result.outcome.failure;
+  summary["adaptive"] = {{"cache", scene_.adaptive.cache}, {"builds", cache.builds()}, {"cache_hits", cache.hits()}, {"phases", log}};
+  summary["reference"] = compare_with_reference(summary, scene_.reference);
+  format::write_text_atomically((std::filesystem::path(out_dir_) / "summary.json").string(), summary.dump(2) + "\n");
+  result.summary = summary;
+  result.end_time = summary["end_time_s"].get<double>();
+  if (refused) std::rethrow_exception(refused);  // exit 2, with the results so far written
+  return result;
+}
+
+}  // namespace isosid::run

@@ -1,0 +1,24 @@
+// Moving a run's state from one multibody system to another that models the same bodies
+// differently (seed 001 Sect. 4.4): a body changes between its coarse model and a model
+// refined around an impact. The frames keep their position, orientation and velocities; the
+// elastic coordinates map through the refined SID's /transfer.
+#pragma once
+#include "solve/multibody_system.hpp"
+
+#include <Eigen/Dense>
+#include <vector>
+
+namespace isosid::run {
+
+/// How one body's elastic coordinates map: q_to = map q_from (all of the from-body's nq, its
+/// quasistatic ones as last solved), and the to-body keeps its integrated ones. Empty: the
+/// body is the same model in both systems.
+using ElasticMap = Eigen::MatrixXd;
+
+/// y_from (a state of `from`, its quasistatic coordinates solved for it) in the layout of `to`,
+/// whose bodies are `from`'s in order; `maps[b]` for each body b. The dissipated energy carries
+/// over. Elastic velocities of quasistatic coordinates are taken as zero (they carry no mass).
+Eigen::VectorXd transfer_state(const MultibodySystem& from, const double* y_from, const MultibodySystem& to,
+                               const std::vector<ElasticMap>& maps);
+
+}  // namespace isosid::run
