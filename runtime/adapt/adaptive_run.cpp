@@ -16,6 +16,8 @@
 #include "scene/sid_provider.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -196,6 +198,8 @@ AdaptiveRun::AdaptiveRun(Scene scene, std::string out_dir, bool quiet)
 }
 
 AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const std::clock_t cpu0 = std::clock();
   ModelCache cache(scene_.adaptive.cache, quiet_);
   Scene coarse = scene_;
   for (BodySpec& b : coarse.bodies)
@@ -318,6 +322,12 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       if (!ended) d = {true, w, "the run ended during the impact"};  // it keeps what it has
       const bool accepted = d.acceptable || attempt == kMaxTries;
       try_entry.update({{"decision", d.reason}, {"accepted", accepted}, {"next_width_m", d.next_width}});
+      if (!quiet_) {  // seed 001's Table 1, one line per try
+        bool built = false;
+        for (const auto& r : requests) built = built || !r["cache_hit"].get<bool>();
+        std::fprintf(stderr, "isosid-run:   try %d: width %.4g mm (%s), utilization %.0f %%, %s%s\n", attempt, 1e3 * w,
+                     built ? "built" : "cached", 100 * utilization, d.reason.c_str(), accepted ? "" : ": again");
+      }
       log.push_back(try_entry);
       width[std::size_t(k)] = snapped_width(d.next_width);  // the next try, or the contact's next impact, starts from it
       if (accepted) {
@@ -358,7 +368,19 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   json summary = join_phase_summaries(summaries, std::vector<double>(total.data(), total.data() + total.size()));
   summary["status"] = result.outcome.status;
   if (!result.outcome.failure.empty()) summary["failure"] = result.outcome.failure;
-  summary["adaptive"] = {{"cache", scene_.adaptive.cache}, {"builds", cache.builds()}, {"cache_hits", cache.hits()}, {"phases", log}};
+  // the whole run's times: refused tries and the wait for isosid-prep count too (the joined
+  // phases' own times are in their folders and the log)
+  double preprocessing = 0, refused_tries = 0;
+  for (const auto& p : log) {
+    if (p.contains("refined"))
+      for (const auto& r : p["refined"]) preprocessing += r["preprocessing_s"].get<double>();
+    if (p.contains("accepted") && !p["accepted"].get<bool>()) refused_tries += p["cpu_time_s"].get<double>();
+  }
+  summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  summary["cpu_time_s"] = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  summary["adaptive"] = {{"cache", scene_.adaptive.cache},   {"builds", cache.builds()},
+                         {"cache_hits", cache.hits()},       {"preprocessing_wall_s", preprocessing},
+                         {"refused_tries_cpu_s", refused_tries}, {"phases", log}};
   summary["reference"] = compare_with_reference(summary, scene_.reference);
   format::write_text_atomically((std::filesystem::path(out_dir_) / "summary.json").string(), summary.dump(2) + "\n");
   result.summary = summary;
