@@ -12,7 +12,6 @@
 namespace isosid::prep {
 namespace {
 
-using SparseRow = std::vector<std::pair<int, double>>;  ///< (column, value), sorted by column
 
 void add_scaled(SparseRow& into, const SparseRow& row, double scale) {
   SparseRow out;
@@ -111,11 +110,9 @@ private:
       if (c < coarse.size() && std::abs(coarse(c) - fine(i)) <= 1e-14 * (1 + std::abs(fine(i)))) ++c;
       else X.push_back(fine(i));
     }
-    const Eigen::MatrixXd T = knot_insertion_matrix(coarse, p, X);
-    std::vector<SparseRow> rows(std::size_t(T.rows()));
-    for (Eigen::Index j = 0; j < T.rows(); ++j)
-      for (Eigen::Index k = 0; k < T.cols(); ++k)
-        if (T(j, k) != 0.0) rows[j].emplace_back(int(k), T(j, k));
+    std::vector<SparseRow> rows = knot_insertion_rows(coarse, p, X);
+    for (SparseRow& row : rows)  // exact zeros (a knot of full multiplicity) carry nothing
+      row.erase(std::remove_if(row.begin(), row.end(), [](const auto& e) { return e.second == 0.0; }), row.end());
     return rows;
   }
 
