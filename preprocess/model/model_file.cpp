@@ -618,7 +618,11 @@ void set_refinement_point(ModelSpec& model, const std::string& surface, const st
   request.box.clear();
   request.point = point;
   request.width = width;
-  if (model.reduction.interface_surface == surface) model.reduction.interface_center = Eigen::Map<const Eigen::VectorXd>(at.data(), Eigen::Index(at.size()));
+  // a Craig-Bampton interface goes where the contact is (on another surface it would stiffen nothing)
+  if (!model.reduction.interface_surface.empty()) {
+    model.reduction.interface_surface = surface;
+    model.reduction.interface_center = Eigen::Map<const Eigen::VectorXd>(at.data(), Eigen::Index(at.size()));
+  }
 }
 
 }  // namespace isosid::prep

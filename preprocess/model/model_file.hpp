@@ -145,7 +145,7 @@ void set_contact_radius(ModelSpec& model, double radius, const std::string& sour
 /// Centres the model's hierarchical refinement on a point of a contact surface (seed 001
 /// Sect. 4.3: the runtime asks for a fine model where an impact happens): the refined region
 /// becomes `width` (m) wide around the surface's tangential parameter(s) `at`, and a
-/// Craig-Bampton interface on that surface is centred there too. Throws InputError(model file,
+/// Craig-Bampton interface moves to that surface, centred there too. Throws InputError(model file,
 /// `source`) for a model without [refinement.hierarchical] on the surface's patch, an unknown
 /// or multi-patch surface, or a parameter outside the side.
 void set_refinement_point(ModelSpec& model, const std::string& surface, const std::vector<double>& at, double width,
