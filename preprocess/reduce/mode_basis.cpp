@@ -87,7 +87,34 @@ Eigen::VectorXd orthonormalize(Eigen::MatrixXd& Phi, const Eigen::SparseMatrix<d
   // 3) one re-orthonormalization pass against round-off growth in the products above
   Eigen::LLT<Eigen::MatrixXd> llt(projected(M, Phi));
   Phi = llt.matrixU().solve(Phi.transpose()).transpose();
+  canonicalize_modes(Phi, k.eigenvalues());
   return k.eigenvalues();
+}
+
+void canonicalize_modes(Eigen::MatrixXd& Phi, const Eigen::VectorXd& omega2) {
+  // fixed, generic directions of the DOF space: a mode's sign (or a repeated frequency's
+  // basis) is whatever the eigensolver's start made of it, and differs from run to run
+  const auto generic = [&](Eigen::Index columns) {
+    Eigen::MatrixXd G(Phi.rows(), columns);
+    for (Eigen::Index j = 0; j < columns; ++j)
+      for (Eigen::Index i = 0; i < Phi.rows(); ++i) G(i, j) = std::sin(0.7 + 1.37 * double(i) + 2.11 * double(j));
+    return G;
+  };
+  const double scale = omega2.size() ? omega2.cwiseAbs().maxCoeff() : 0.0;
+  for (Eigen::Index first = 0; first < Phi.cols();) {
+    Eigen::Index last = first + 1;  // a cluster: frequencies equal to round-off
+    while (last < Phi.cols() && std::abs(omega2(last) - omega2(first)) <= 1e-9 * std::max(std::abs(omega2(first)), 1e-12 * scale)) ++last;
+    const Eigen::Index k = last - first;
+    // Q with (Phi Q)^T G upper triangular, positive diagonal: unique for any basis of the cluster
+    const Eigen::MatrixXd A = Phi.middleCols(first, k).transpose() * generic(k);
+    Eigen::HouseholderQR<Eigen::MatrixXd> qr(A);
+    Eigen::MatrixXd Q = qr.householderQ();
+    const Eigen::MatrixXd R = Q.transpose() * A;
+    for (Eigen::Index j = 0; j < k; ++j)
+      if (R(j, j) < 0) Q.col(j) *= -1;
+    Phi.middleCols(first, k) = (Phi.middleCols(first, k) * Q).eval();
+    first = last;
+  }
 }
 
 }  // namespace isosid::prep

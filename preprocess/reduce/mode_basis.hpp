@@ -48,4 +48,11 @@ void remove_rigid_content(Eigen::MatrixXd& Phi, const Eigen::SparseMatrix<double
 Eigen::VectorXd orthonormalize(Eigen::MatrixXd& Phi, const Eigen::SparseMatrix<double>& K,
                                const Eigen::SparseMatrix<double>& M, double rank_tolerance = 1e-10);
 
+/// Makes the modes independent of the eigensolver's start (orthonormalize does it): each
+/// mode's sign, and the basis of each repeated frequency (omega2 equal to 1e-9), are fixed by
+/// the modes' projections on fixed generic vectors of the DOF space. Two runs on the same
+/// model then give the same modes, and a refined model's transfer from its coarse model holds
+/// for the coarse SID built by another run.
+void canonicalize_modes(Eigen::MatrixXd& Phi, const Eigen::VectorXd& omega2);
+
 }  // namespace isosid::prep
