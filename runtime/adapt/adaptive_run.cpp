@@ -34,7 +34,7 @@ using nlohmann::json;
 
 /// Seed 001 Sect. 4.2: the contact interval is used best at 70 % (the first impact's width
 /// makes the Hertz contact diameter 70 % of it).
-constexpr double kTargetUtilization = 0.7, kMinUtilization = 0.5;
+constexpr double kTargetUtilization = 0.7, kMinUtilization = 0.5, kMaxUtilization = 0.9;
 /// Tries of one impact before the last one is taken as it is.
 constexpr int kMaxTries = 4;
 
@@ -50,11 +50,13 @@ public:
     Touch touch;
   };
   /// The impact of an impact phase: its contact, where its surfaces touched (world, at the
-  /// phase's start state y0) and the width of the region refined around it.
+  /// phase's start state y0) and the width of the region refined around it. A coarse phase
+  /// after an impact names that impact's contact in `after`.
   struct Impact {
     int contact = -1;
     Eigen::Vector3d point = Eigen::Vector3d::Zero();
     double width = 0;
+    int after = -1;
   };
   /// An impact phase starts where its contact's surfaces touch: that touch is taken as found,
   /// so the phase ends once they have been apart again after the contact opened.
@@ -62,6 +64,10 @@ public:
                 const std::function<bool()>& stop_requested)
       : Recorder(simulation.system(), simulation.scene()), system_(simulation.system()), adaptive_contact_(adaptive_contact),
         impact_(impact), stop_requested_(stop_requested), start_(simulation.time()) {
+    if (impact_.after >= 0) {  // its surfaces just parted: the next touch is a new impact once they are apart
+      system_.touched(std::size_t(impact_.after));
+      system_.released(std::size_t(impact_.after));
+    }
     if (impact_.contact < 0) return;
     system_.touched(std::size_t(impact_.contact));
     const FloatingBody& body = system_.contacts()[std::size_t(impact_.contact)].body();
@@ -74,9 +80,15 @@ public:
     Recorder::touch(k, t, touch);
     if (impact_.contact < 0 && adaptive_contact_[std::size_t(k)] && !found_) found_ = Found{k, t, touch};
   }
+  void contact_event(int k, bool closing, double t) override {
+    Recorder::contact_event(k, closing, t);
+    if (k == impact_.contact && closing) loaded_ = true;
+  }
   void step(double t, const double* y) override {
     Recorder::step(t, y);
     if (impact_.contact < 0) return;
+    // a touch without load (grazing) is over once the surfaces are apart
+    if (!loaded_ && system_.touch(std::size_t(impact_.contact), y).gap > 0) impact_over_ = true;
     // the farthest loaded point from the touch, in the slave's frame (seed 001's utilization
     // of the contact interval, measured as a length: contact radius over half the width)
     const SurfaceContact& contact = system_.contacts()[std::size_t(impact_.contact)];
@@ -104,7 +116,7 @@ private:
   std::optional<Found> found_;
   Eigen::Vector3d touch_in_body_ = Eigen::Vector3d::Zero();
   double reach_ = 0;
-  bool impact_over_ = false, beyond_ = false;
+  bool loaded_ = false, impact_over_ = false, beyond_ = false;
 };
 
 std::vector<format::Sid> read_sids(const Scene& scene) {
@@ -163,9 +175,10 @@ std::vector<Refinement> refinements(const Scene& scene, const MultibodySystem& s
 
 /// Seed 001 Alg. 2: whether an impact's refined region fits its contact, and the width for the
 /// next try or the next impact of that contact. Over 1: the load reached beyond the region
-/// (widen by half); under kMinUtilization the region wastes its elements (narrow toward the
-/// target); in between the model is acceptable and the width still moves toward the target,
-/// by at most half.
+/// (widen by half); over kMaxUtilization the load came within a tenth of its edge, where the
+/// seed's edge elements are (widen toward the target); under kMinUtilization the region wastes
+/// its elements (narrow toward the target); in between the model is acceptable and the width
+/// still moves toward the target, by at most half.
 struct IntervalDecision {
   bool acceptable = false;
   double next_width = 0;
@@ -178,6 +191,9 @@ IntervalDecision decide_interval(double utilization, bool beyond, double width) 
   if (beyond) {
     d.next_width = 1.5 * width;
     d.reason = "load beyond the refined region";
+  } else if (utilization > kMaxUtilization) {
+    d.next_width = toward_target;
+    d.reason = "region too narrow";
   } else if (utilization < kMinUtilization) {
     d.next_width = toward_target;
     d.reason = "region too wide";
@@ -255,6 +271,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   };
 
   auto simulation = std::make_unique<Simulation>(coarse, coarse_sids);
+  int last_impact = -1;      // the contact of the impact before the coarse phase about to run
   double switch_energy = 0;  // of the switch into the phase about to run
   std::exception_ptr refused;  // bad input met between phases: reported after the results so far
   for (;;) try {
@@ -262,7 +279,9 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     std::optional<PhaseRecorder::Found> found;
     double utilization = 0;
     bool beyond = false;
-    auto [over, summary, file] = run_phase(*simulation, {}, "coarse", entry, found, utilization, beyond);
+    PhaseRecorder::Impact coarse_phase;
+    coarse_phase.after = last_impact;
+    auto [over, summary, file] = run_phase(*simulation, coarse_phase, "coarse", entry, found, utilization, beyond);
     drop_resolution_warnings(simulation->system(), summary);
     summaries.push_back(summary);
     files.push_back(file);
@@ -352,6 +371,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       return moved;
     });
     switch_energy = before_back != 0 ? (after - before_back) / std::abs(before_back) : after - before_back;
+    last_impact = k;
   } catch (const format::InputError& e) {  // e.g. a model isosid-prep cannot refine
     result.outcome = {"failed", e.what()};
     refused = std::current_exception();

@@ -163,15 +163,10 @@ json join_phase_summaries(const std::vector<json>& phases, const std::vector<dou
   }
   for (std::size_t m = 0; m < j["monitors"].size(); ++m) {
     json& mon = j["monitors"][m];
-    for (const char* key : {"arrival_s", "reversal_s"}) {
-      if (!mon.contains(key)) continue;
-      mon[key] = nullptr;
-      for (const json& p : phases)
-        if (!p["monitors"][m][key].is_null()) {
-          mon[key] = p["monitors"][m][key];
-          break;
-        }
-    }
+    // measured against the value at the run's start: the first phase's (a later phase would
+    // measure against its own start)
+    for (const char* key : {"arrival_s", "reversal_s"})
+      if (mon.contains(key)) mon[key] = first["monitors"][m][key];
     if (mon.contains("peak_von_mises_pa"))
       for (const json& p : phases)
         if (p["monitors"][m]["peak_von_mises_pa"].get<double>() > mon["peak_von_mises_pa"].get<double>()) mon = p["monitors"][m];

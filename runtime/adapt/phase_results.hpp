@@ -16,8 +16,9 @@ namespace isosid::run {
 void join_phase_results(const std::vector<std::string>& phase_files, const std::string& path, double output_interval);
 
 /// The run's summary from its phases' summaries, in order: sums of times and counts, each
-/// contact's first onset and last release, largest peak and summed impulse, every touch; the
-/// first arrival and reversal of each monitor; the final state of the last phase; the energy
+/// contact's first onset and last release, largest peak and summed impulse, every touch; each
+/// monitor's arrival and reversal as the first phase saw them (they are measured against the
+/// value at the start), its largest stress; the final state of the last phase; the energy
 /// from the first phase's start to the last phase's end, its largest relative change taken
 /// from `energy_total` (the joined series). The caller adds the reference comparison.
 nlohmann::json join_phase_summaries(const std::vector<nlohmann::json>& phases, const std::vector<double>& energy_total);
