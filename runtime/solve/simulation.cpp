@@ -42,7 +42,8 @@ Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
 }
 
 Simulation::Simulation(Scene scene, std::vector<format::Sid> sids, double t0, const StartState& start_state)
-    : scene_(std::move(scene)), system_(scene_, std::move(sids)), integrator_(system_, scene_.simulation, start_state(system_), t0), t_(t0) {
+    : scene_(std::move(scene)), system_(scene_, std::move(sids)), integrator_(system_, scene_.simulation, start_state(system_), t0), t_(t0),
+      continued_(true) {
   if (integrator_.y().size() != system_.size())
     throw format::ComputationError("a phase's start state has " + std::to_string(integrator_.y().size()) + " entries, its system " +
                                    std::to_string(system_.size()));
@@ -80,6 +81,7 @@ void Simulation::start(SimulationObserver& observer) {
   system_.gaps(state().data(), gap.data());
   for (std::size_t k = 0; k < gap.size(); ++k)
     if (gap[k] < 0) observer.contact_event(int(k), true, t_);  // starts in contact
+  if (continued_) return;  // the phase before saw its touches; the caller sets their state
   for (std::size_t k = 0; k < gap.size(); ++k) {
     const Touch& touch = system_.touch(k, state().data());
     if (!(touch.gap < 0)) continue;

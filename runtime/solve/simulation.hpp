@@ -45,7 +45,9 @@ public:
   Simulation(Scene scene, std::vector<format::Sid> sids);
   /// A later phase of a run (seed 001's phases on other models of the bodies): starts at time
   /// t0 in the state `start_state` makes for this scene's system, without a static start, and
-  /// takes contacts that are closed there as they are.
+  /// takes contacts that are closed there as they are. Its start reports no touches: where
+  /// surfaces touch there, the phase before has seen it (MultibodySystem::touched/released
+  /// set what the new phase should expect).
   using StartState = std::function<Eigen::VectorXd(const MultibodySystem&)>;
   Simulation(Scene scene, std::vector<format::Sid> sids, double t0, const StartState& start_state);
 
@@ -80,6 +82,7 @@ private:
   double t_ = 0;
   long next_output_ = 1;   ///< index of the next output time (multiples of output_interval)
   SimulationObserver* observer_ = nullptr;  ///< receives the accepted steps of advance_to
+  bool continued_ = false;  ///< a later phase of a run
 };
 
 }  // namespace isosid::run
