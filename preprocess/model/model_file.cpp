@@ -618,10 +618,13 @@ void set_refinement_point(ModelSpec& model, const std::string& surface, const st
   request.box.clear();
   request.point = point;
   request.width = width;
-  // a Craig-Bampton interface goes where the contact is (on another surface it would stiffen nothing)
+  // a Craig-Bampton interface goes where the contact is (on another surface it would stiffen
+  // nothing), and spans the refined region: a fixed number of nodes shrinks with the elements
+  // and would leave part of the contact on fixed-interface modes
   if (!model.reduction.interface_surface.empty()) {
     model.reduction.interface_surface = surface;
     model.reduction.interface_center = Eigen::Map<const Eigen::VectorXd>(at.data(), Eigen::Index(at.size()));
+    model.reduction.interface_radius = width / 2;
   }
 }
 

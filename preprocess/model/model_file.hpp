@@ -41,6 +41,7 @@ struct ReductionSpec {
   std::string interface_surface;         ///< contact surface whose side holds the interface nodes
   std::string boundary_surface;          ///< massless-boundary methods: the contact surface whose control points are the boundary
   int interface_points = 0;              ///< that many side nodes nearest to the point at interface_center
+  double interface_radius = 0;           ///< m, > 0: also every side node within this distance of it (isosid-prep --refine-at)
   Eigen::VectorXd interface_center;      ///< tangential parameter(s) on that side
   std::optional<Eigen::VectorXd> interface_point;  ///< or the centre in metres (meshed bodies)
 };

@@ -40,12 +40,14 @@ std::vector<int> interface_dofs(const BodyModel& body, std::string& description)
   if (int(ranked.size()) < r.interface_points)
     throw format::InputError(body.spec.file, "reduction.interface_points",
                              std::to_string(r.interface_points) + " requested, the side has " + std::to_string(ranked.size()) + " nodes");
+  std::size_t count = std::size_t(r.interface_points);
+  while (count < ranked.size() && ranked[count].first <= r.interface_radius) ++count;
   std::vector<int> dofs;
-  for (int k = 0; k < r.interface_points; ++k)
+  for (std::size_t k = 0; k < count; ++k)
     for (int a = 0; a < body.dofs.dim(); ++a)
-      if (const int i = body.dofs.free_index(ranked[std::size_t(k)].second, a); i >= 0) dofs.push_back(i);
+      if (const int i = body.dofs.free_index(ranked[k].second, a); i >= 0) dofs.push_back(i);
   std::sort(dofs.begin(), dofs.end());
-  description = std::to_string(r.interface_points) + " control points of '" + surface->name + "' nearest to (" +
+  description = std::to_string(count) + " control points of '" + surface->name + "' nearest to (" +
                 std::to_string(centre(0)) + ", " + std::to_string(centre(1)) + (centre.size() > 2 ? ", " + std::to_string(centre(2)) : "") +
                 ") m (" + std::to_string(dofs.size()) + " DOFs)";
   return dofs;
