@@ -53,12 +53,24 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   std::vector<double> y0(size_);
   initial_state(y0.data());
   joints_ = std::make_unique<JointConstraints>(scene, bodies_, size_, y0.data());
+  estimate_impacts(y0.data());
+}
+
+void MultibodySystem::estimate_impacts(const double* y) {
+  impact_estimates_.clear();
+  resolution_warnings_.clear();
   for (SurfaceContact& c : contacts_) {
-    impact_estimates_.push_back(estimate_impact(c, y0.data()));
+    impact_estimates_.push_back(estimate_impact(c, y));
     if (!impact_estimates_.back()) continue;
     c.fit_penalty_to_contact_radius(impact_estimates_.back()->contact_radius);
-    if (std::string w = resolution_warning(c, *impact_estimates_.back()); !w.empty()) warnings_.push_back(w);
+    if (std::string w = resolution_warning(c, *impact_estimates_.back()); !w.empty()) resolution_warnings_.push_back(w);
   }
+}
+
+std::vector<std::string> MultibodySystem::warnings() const {
+  std::vector<std::string> all = warnings_;
+  all.insert(all.end(), resolution_warnings_.begin(), resolution_warnings_.end());
+  return all;
 }
 
 void MultibodySystem::warn_of_many_dynamic_modes(const FloatingBody& body, const BodySpec& spec) {

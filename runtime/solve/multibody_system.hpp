@@ -75,7 +75,11 @@ public:
   /// Position of a body in bodies() (refused as input if the scene has none of that name).
   std::size_t body_index(const std::string& name) const;
   /// What the user should know about the set-up (e.g. hundreds of dynamically integrated modes).
-  const std::vector<std::string>& warnings() const { return warnings_; }
+  std::vector<std::string> warnings() const;
+  /// The Hertz estimate of every contact at state y (impact_estimates()), the derived penalties
+  /// fitted to it and the resolution warnings: at the initial state, and again where a later
+  /// phase of a run starts (an impact long after t = 0).
+  void estimate_impacts(const double* y);
   /// Newton iterations of the quasistatic modes so far.
   long quasistatic_iterations() const { return quasistatic_iterations_; }
   /// Where the right-hand side's time went so far (bench/cost_model.py sets it against the
@@ -124,6 +128,7 @@ private:
   mutable Eigen::VectorXd solved_y_;          ///< the state the quasistatic modes were last solved for
   mutable bool solved_valid_ = false;         ///< that solve completed
   std::vector<std::string> warnings_;
+  std::vector<std::string> resolution_warnings_;  ///< of the last estimate_impacts
   std::vector<std::optional<ImpactEstimate>> impact_estimates_;
 };
 

@@ -42,8 +42,8 @@ Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
 }
 
 Simulation::Simulation(Scene scene, std::vector<format::Sid> sids, double t0, const StartState& start_state)
-    : scene_(std::move(scene)), system_(scene_, std::move(sids)), integrator_(system_, scene_.simulation, start_state(system_), t0), t_(t0),
-      continued_(true) {
+    : scene_(std::move(scene)), system_(scene_, std::move(sids)), integrator_(system_, scene_.simulation, estimated(start_state(system_)), t0),
+      t_(t0), continued_(true) {
   if (integrator_.y().size() != system_.size())
     throw format::ComputationError("a phase's start state has " + std::to_string(integrator_.y().size()) + " entries, its system " +
                                    std::to_string(system_.size()));
@@ -51,6 +51,11 @@ Simulation::Simulation(Scene scene, std::vector<format::Sid> sids, double t0, co
   const double dt_out = scene_.simulation.output_interval;
   next_output_ = std::max(1L, long(std::floor(t0 / dt_out * (1 + 1e-12))) + 1);
   report_steps();
+}
+
+Eigen::VectorXd Simulation::estimated(Eigen::VectorXd y) {
+  if (y.size() == system_.size()) system_.estimate_impacts(y.data());  // (a wrong size is refused below)
+  return y;
 }
 
 void Simulation::report_steps() {

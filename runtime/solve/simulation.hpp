@@ -71,6 +71,9 @@ public:
   RunOutcome run(SimulationObserver& observer);
 
 private:
+  /// A continued phase's start state, with the contacts' impact estimates (and derived
+  /// penalties) taken there.
+  Eigen::VectorXd estimated(Eigen::VectorXd y);
   /// Accepted steps rearm the touches and go to the observer of advance_to.
   void report_steps();
   /// InputError naming the contact, the bodies and the depth if any contact starts closed.
