@@ -4,6 +4,8 @@
 #include "isosid/common/number_text.hpp"
 #include "isosid/format/error.hpp"
 
+#include <Eigen/Eigenvalues>
+
 namespace isosid::run {
 
 JointConstraints::JointConstraints(const Scene& scene, const std::vector<std::unique_ptr<FloatingBody>>& bodies,
@@ -26,6 +28,49 @@ JointConstraints::JointConstraints(const Scene& scene, const std::vector<std::un
   loaded_.setZero(state_size);
   lambda_.setZero(rows_);
   response_.setZero(rows_, rows_);
+  refuse_redundant_rows(bodies, y0, scene.gravity, scene.file);
+}
+
+void JointConstraints::refuse_redundant_rows(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const double* y0,
+                                             const Eigen::Vector3d& gravity, const std::string& scene_file) const {
+  if (joints_.empty()) return;
+  std::vector<GeneralizedForce> none(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) none[i].reset(bodies[i]->nq());
+  for (const Joint& j : joints_)
+    for (int s = 0; s < 2; ++s)
+      if (const FloatingBody* b = j.side(s).body) b->derivatives(y0, none[j.side(s).index], gravity, base_.data());
+  assemble_response(y0, gravity, none);
+  // rows no body can move (a planar scene's out-of-plane rows) are left out; among the others a
+  // dependent row is one the other joints already impose: their reactions would not be unique
+  const double largest = response_.diagonal().cwiseAbs().maxCoeff();
+  std::vector<Eigen::Index> moving;
+  for (Eigen::Index r = 0; r < rows_; ++r)
+    if (std::abs(response_(r, r)) > 1e-12 * largest) moving.push_back(r);
+  Eigen::MatrixXd W(Eigen::Index(moving.size()), Eigen::Index(moving.size()));
+  for (std::size_t a = 0; a < moving.size(); ++a)
+    for (std::size_t b = 0; b < moving.size(); ++b) W(Eigen::Index(a), Eigen::Index(b)) = response_(moving[a], moving[b]);
+  // scaled to unit diagonal: rows of forces and of torques compare alike
+  const Eigen::VectorXd scale = W.diagonal().cwiseAbs().cwiseSqrt().cwiseInverse();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(scale.asDiagonal() * (0.5 * (W + W.transpose())) * scale.asDiagonal());
+  const Eigen::VectorXd& values = eig.eigenvalues();
+  if (values.size() == 0 || values(0) > 1e-9 * values(values.size() - 1)) return;
+  // the joints with a share in the dependent combination
+  const Eigen::VectorXd null = eig.eigenvectors().col(0).cwiseAbs();
+  std::string names, first;
+  for (std::size_t k = 0; k < joints_.size(); ++k) {
+    double share = 0;
+    for (std::size_t a = 0; a < moving.size(); ++a)
+      if (moving[a] >= first_row_[k] && moving[a] < first_row_[k] + joints_[k].rows()) share = std::max(share, null(Eigen::Index(a)));
+    if (share <= 1e-3) continue;
+    names += (names.empty() ? "'" : ", '") + joints_[k].name() + "'";
+    if (first.empty()) first = joints_[k].name();
+  }
+  Eigen::Index rank = 0;
+  for (Eigen::Index i = 0; i < values.size(); ++i) rank += values(i) > 1e-9 * values(values.size() - 1);
+  throw format::InputError(scene_file, "joint " + first,
+                           "the mechanism is over-constrained: joints " + names + " impose the same motion twice (their " +
+                               std::to_string(values.size()) + " constraint rows have rank " + std::to_string(rank) +
+                               " at the start); drop or loosen one");
 }
 
 void JointConstraints::apply(const double* y, const Eigen::Vector3d& gravity, std::vector<GeneralizedForce>& forces) const {
@@ -37,7 +82,18 @@ void JointConstraints::apply(const double* y, const Eigen::Vector3d& gravity, st
   Eigen::VectorXd residual(rows_);
   for (std::size_t k = 0; k < joints_.size(); ++k)
     residual.segment(first_row_[k], joints_[k].rows()) = joints_[k].stabilized_acceleration(y, base_.data(), rate_);
-  // the rows' response to each row's unit reaction, through the bodies it loads
+  assemble_response(y, gravity, forces);
+  // rows no body can move (a planar scene's out-of-plane rows) have no response: least squares
+  lambda_ = response_.completeOrthogonalDecomposition().solve(-residual);
+  for (std::size_t k = 0; k < joints_.size(); ++k)
+    for (int row = 0; row < joints_[k].rows(); ++row)
+      for (int s = 0; s < 2; ++s)
+        if (joints_[k].side(s).body) joints_[k].add_load(s, row, lambda_(first_row_[k] + row), y, forces[joints_[k].side(s).index]);
+}
+
+void JointConstraints::assemble_response(const double* y, const Eigen::Vector3d& gravity, const std::vector<GeneralizedForce>& forces) const {
+  // the rows' response to each row's unit reaction, through the bodies it loads (base_ holds
+  // the accelerations without it)
   response_.setZero();
   for (std::size_t k = 0; k < joints_.size(); ++k)
     for (int row = 0; row < joints_[k].rows(); ++row)
@@ -56,12 +112,6 @@ void JointConstraints::apply(const double* y, const Eigen::Vector3d& gravity, st
               response_.block(first_row_[i], first_row_[k] + row, joints_[i].rows(), 1) +=
                   (t == 0 ? 1.0 : -1.0) * joints_[i].row_acceleration(t, y, loaded_.data());
       }
-  // rows no body can move (a planar scene's out-of-plane rows) have no response: least squares
-  lambda_ = response_.completeOrthogonalDecomposition().solve(-residual);
-  for (std::size_t k = 0; k < joints_.size(); ++k)
-    for (int row = 0; row < joints_[k].rows(); ++row)
-      for (int s = 0; s < 2; ++s)
-        if (joints_[k].side(s).body) joints_[k].add_load(s, row, lambda_(first_row_[k] + row), y, forces[joints_[k].side(s).index]);
 }
 
 std::pair<Eigen::Vector3d, Eigen::Vector3d> JointConstraints::reaction(std::size_t k, const double* y) const {

@@ -10,6 +10,7 @@ namespace isosid::run {
 
 class JointConstraints {
 public:
+  /// Refuses (InputError) an over-constrained mechanism at y0.
   JointConstraints(const Scene& scene, const std::vector<std::unique_ptr<FloatingBody>>& bodies, Eigen::Index state_size,
                    const double* y0);
 
@@ -21,6 +22,14 @@ public:
   std::pair<Eigen::Vector3d, Eigen::Vector3d> reaction(std::size_t k, const double* y) const;
 
 private:
+  /// response_ = the rows' accelerations per unit reaction of each row at y (base_ holding the
+  /// accelerations under `forces` alone).
+  void assemble_response(const double* y, const Eigen::Vector3d& gravity, const std::vector<GeneralizedForce>& forces) const;
+  /// InputError naming the joints if, at the start, some rows repeat what others impose (a
+  /// rank-deficient constraint Jacobian: an over-constrained mechanism, reactions not unique).
+  void refuse_redundant_rows(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const double* y0,
+                             const Eigen::Vector3d& gravity, const std::string& scene_file) const;
+
   std::vector<Joint> joints_;
   std::vector<Eigen::Index> first_row_;   ///< joint k's rows start here in the stacked multipliers
   Eigen::Index rows_ = 0;

@@ -350,6 +350,20 @@ body = "bob"
 point = [0.0, 0.0, 0.0]
 )", 2);
   }
+  SECTION("an over-constrained mechanism: a second joint repeats what the first imposes") {
+    // a fixed joint holds all six motions; a spherical joint elsewhere repeats three of them
+    refused("[[joint]]\nname = \"weld\"\ntype = \"fixed\"\nbody = \"bob\"\npoint = [0.0, 0.0, 0.0]\n"
+            "[[joint]]\nname = \"pin\"\ntype = \"spherical\"\nbody = \"bob\"\npoint = [0.0, -1.0, 0.0]\n");
+  }
+  SECTION("an over-constrained mechanism: two pins at one point") {
+    refused("[[joint]]\nname = \"a\"\ntype = \"spherical\"\nbody = \"bob\"\npoint = [0.0, 0.0, 0.0]\n"
+            "[[joint]]\nname = \"b\"\ntype = \"spherical\"\nbody = \"bob\"\npoint = [0.0, 0.0, 0.0]\n");
+  }
+  SECTION("a joint at a node the SID does not have") {
+    run_scene(dir, simulation(1.0) + "[[flexible_body]]\nname = \"beam\"\nsid = \"" + kGolden +
+                       "/beam_small.sid.h5\"\n[[joint]]\nname = \"j\"\ntype = \"spherical\"\nbody = \"beam\"\nnode = \"tip\"\n",
+              2);
+  }
   SECTION("a flexible body's node away from the joint's point") {
     run_scene(dir, simulation(1.0) + R"(
 [[flexible_body]]
