@@ -220,6 +220,8 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   Scene coarse = scene_;
   for (BodySpec& b : coarse.bodies)
     if (b.adaptive) b.sid_file = cache.coarse(b.model_file).file;
+  coarse.simulation.integrator = scene_.adaptive.coarse_integrator;
+  coarse.simulation.max_step = scene_.adaptive.coarse_max_step;
   const std::vector<format::Sid> coarse_sids = read_sids(coarse);
   std::vector<bool> adaptive_contact;
   for (const ContactSpec& c : scene_.contacts) {
@@ -307,6 +309,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     for (int attempt = 1; attempt <= kMaxTries; ++attempt) {
       const double w = width[std::size_t(k)];
       Scene fine_scene = coarse;
+      fine_scene.simulation = scene_.simulation;  // the impact under the scene's own integrator
       std::vector<ElasticMap> maps(simulation->system().bodies().size());
       json requests = json::array();
       refined.clear();

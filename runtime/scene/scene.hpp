@@ -69,6 +69,10 @@ struct BodySpec {
 struct AdaptiveSettings {
   std::string cache;            ///< folder of the SIDs built for the run (default: .isosid-cache beside the scene)
   double interval_width = 0;    ///< m, the first impact's refined region; 0: from the impact's Hertz estimate
+  /// the phases between impacts (coarse models, no contact): the scene's integrator and
+  /// max_step unless given (seed 001 takes an implicit method with larger steps there)
+  IntegratorKind coarse_integrator = IntegratorKind::DormandPrince;
+  double coarse_max_step = 0;   ///< s
 };
 
 /// An analytic surface: fixed in the world, or the surface of a rigid body (in its frame).

@@ -104,6 +104,15 @@ std::string resolve(const std::string& scene_file, const std::string& path) {
   return (fs::path(scene_file).parent_path() / path).lexically_normal().string();
 }
 
+IntegratorKind read_integrator(const TomlView& t, const std::string& key, IntegratorKind fallback) {
+  if (!t.has(key)) return fallback;
+  const std::string name = t.string(key);
+  if (name == "dopri5") return IntegratorKind::DormandPrince;
+  if (name == "implicit") return IntegratorKind::Implicit;
+  if (name == "leapfrog") return IntegratorKind::Leapfrog;
+  t.fail(key, "unknown integrator '" + name + "' (dopri5, implicit, leapfrog)");
+}
+
 SimulationSettings read_simulation(const TomlView& s) {
   s.allow_only({"dimension", "end_time", "integrator", "step", "rtol", "atol", "max_step", "max_steps", "output_interval", "gravity",
                 "allow_initial_penetration", "joint_stabilization"});
@@ -118,15 +127,7 @@ SimulationSettings read_simulation(const TomlView& s) {
   else
     s.fail("dimension", "unknown dimension '" + dim + "' (planar, axisymmetric, 3d)");
   out.end_time = s.positive("end_time");
-  const std::string integrator = s.string("integrator", "dopri5");
-  if (integrator == "dopri5")
-    out.integrator = IntegratorKind::DormandPrince;
-  else if (integrator == "implicit")
-    out.integrator = IntegratorKind::Implicit;
-  else if (integrator == "leapfrog")
-    out.integrator = IntegratorKind::Leapfrog;
-  else
-    s.fail("integrator", "unknown integrator '" + integrator + "' (dopri5, implicit, leapfrog)");
+  out.integrator = read_integrator(s, "integrator", IntegratorKind::DormandPrince);
   if (out.integrator == IntegratorKind::Leapfrog) {
     // fixed steps: the step-size control's keys have nothing to control
     out.step = s.positive("step");
@@ -374,12 +375,20 @@ Scene read_scene_file(const std::string& path) {
     }
   }
   if (auto a = top.optional_table("adaptive")) {
-    a->allow_only({"cache", "interval_width"});
+    a->allow_only({"cache", "interval_width", "coarse_integrator", "coarse_max_step"});
     scene.adaptive.cache = resolve(path, a->string("cache", ""));
     scene.adaptive.interval_width = a->positive("interval_width", 0);
+    scene.adaptive.coarse_integrator = read_integrator(*a, "coarse_integrator", scene.simulation.integrator);
+    if ((scene.adaptive.coarse_integrator == IntegratorKind::Leapfrog) != (scene.simulation.integrator == IntegratorKind::Leapfrog))
+      a->fail("coarse_integrator", "the leapfrog's fixed step and the adaptive integrators' tolerances do not mix between phases");
+    scene.adaptive.coarse_max_step = a->positive("coarse_max_step", scene.simulation.max_step);
     if (!scene.has_adaptive_bodies()) a->fail("cache", "no flexible_body is adaptive");
   }
   if (scene.adaptive.cache.empty()) scene.adaptive.cache = resolve(path, ".isosid-cache");
+  if (!top.optional_table("adaptive")) {
+    scene.adaptive.coarse_integrator = scene.simulation.integrator;
+    scene.adaptive.coarse_max_step = scene.simulation.max_step;
+  }
   return scene;
 }
 

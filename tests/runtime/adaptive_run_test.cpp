@@ -134,6 +134,8 @@ TEST_CASE("adaptive: bad adaptive input is refused with exit 2 and one line", "[
   CHECK_THAT(summary["failure"].get<std::string>(), Contains("no [refinement.hierarchical]"));
   CHECK(summary["adaptive"]["phases"].size() == 1);
   refused(scene + "[output]\nparaview = true\n", "ParaView output of runs with adaptive bodies");
+  refused(scene + "[adaptive]\ncoarse_integrator = \"leapfrog\"\n", "do not mix between phases");
+  refused(scene + "[adaptive]\ncoarse_integrator = \"rk4\"\n", "unknown integrator 'rk4'");
 }
 
 TEST_CASE("adaptive: scene D, the wave through the rod between two sphere impacts (REFERENCE.md D, seed 001 example I)",
