@@ -41,7 +41,7 @@ std::vector<int> interface_dofs(const BodyModel& body, std::string& description)
     throw format::InputError(body.spec.file, "reduction.interface_points",
                              std::to_string(r.interface_points) + " requested, the side has " + std::to_string(ranked.size()) + " nodes");
   std::size_t count = std::size_t(r.interface_points);
-  while (count < ranked.size() && ranked[count].first <= r.interface_radius) ++count;
+  while (r.interface_radius > 0 && count < ranked.size() && ranked[count].first <= r.interface_radius) ++count;
   std::vector<int> dofs;
   for (std::size_t k = 0; k < count; ++k)
     for (int a = 0; a < body.dofs.dim(); ++a)

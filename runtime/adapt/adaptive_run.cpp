@@ -56,6 +56,7 @@ public:
     int contact = -1;
     Eigen::Vector3d point = Eigen::Vector3d::Zero();
     double width = 0;
+    bool stop_beyond = true;  ///< stop once the load leaves the refined region (not on the last try)
     int after = -1;
   };
   /// An impact phase starts where its contact's surfaces touch: that touch is taken as found,
@@ -63,7 +64,7 @@ public:
   PhaseRecorder(const Simulation& simulation, const std::vector<bool>& adaptive_contact, const Impact& impact,
                 const std::function<bool()>& stop_requested)
       : Recorder(simulation.system(), simulation.scene()), system_(simulation.system()), adaptive_contact_(adaptive_contact),
-        impact_(impact), stop_requested_(stop_requested), start_(simulation.time()) {
+        impact_(impact), stop_requested_(stop_requested) {
     if (impact_.after >= 0) {  // its surfaces just parted: the next touch is a new impact once they are apart
       system_.touched(std::size_t(impact_.after));
       system_.released(std::size_t(impact_.after));
@@ -76,7 +77,6 @@ public:
   }
 
   void touch(int k, double t, const Touch& touch) override {
-    if (k == impact_.contact && t == start_) return;  // the touch that started the phase: the coarse phase reported it
     Recorder::touch(k, t, touch);
     if (impact_.contact < 0 && adaptive_contact_[std::size_t(k)] && !found_) found_ = Found{k, t, touch};
   }
@@ -87,8 +87,9 @@ public:
   void step(double t, const double* y) override {
     Recorder::step(t, y);
     if (impact_.contact < 0) return;
-    // a touch without load (grazing) is over once the surfaces are apart
-    if (!loaded_ && system_.touch(std::size_t(impact_.contact), y).gap > 0) impact_over_ = true;
+    // a touch without load (grazing) is over once the surfaces are clearly apart (the phase
+    // starts with them touching, the gap within round-off of zero)
+    if (!loaded_ && system_.touch(std::size_t(impact_.contact), y).gap > 1e-3 * impact_.width) impact_over_ = true;
     // the farthest loaded point from the touch, in the slave's frame (seed 001's utilization
     // of the contact interval, measured as a length: contact radius over half the width)
     const SurfaceContact& contact = system_.contacts()[std::size_t(impact_.contact)];
@@ -100,11 +101,11 @@ public:
     if (system_.touch_armed(std::size_t(impact_.contact))) impact_over_ = true;
   }
   bool stop_requested() const override { return phase_over() || stop_requested_(); }
-  bool phase_over() const { return found_.has_value() || impact_over_ || beyond_; }
+  bool phase_over() const { return found_.has_value() || impact_over_ || (beyond_ && impact_.stop_beyond); }
   const std::optional<Found>& found() const { return found_; }
   /// Impact phases: the largest distance of a loaded point from the touch over half the width.
   double utilization() const { return reach_ / (impact_.width / 2); }
-  /// The load reached beyond the refined region (the phase stopped there).
+  /// The load reached beyond the refined region (the phase stopped there unless it was the last try).
   bool beyond() const { return beyond_; }
 
 private:
@@ -112,19 +113,12 @@ private:
   const std::vector<bool>& adaptive_contact_;
   Impact impact_;
   const std::function<bool()>& stop_requested_;
-  double start_;  ///< s, the phase's start time
   std::optional<Found> found_;
   Eigen::Vector3d touch_in_body_ = Eigen::Vector3d::Zero();
   double reach_ = 0;
   bool loaded_ = false, impact_over_ = false, beyond_ = false;
 };
 
-std::vector<format::Sid> read_sids(const Scene& scene) {
-  std::vector<format::Sid> sids;
-  for (const BodySpec& b : scene.bodies)
-    if (!b.rigid) sids.push_back(format::read_sid(b.sid_file, sid_read_options(scene)));
-  return sids;
-}
 
 double total_energy(const MultibodySystem& system, const double* y) { return system.energies(y, system.contact_states(y)).total(); }
 
@@ -222,7 +216,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     if (b.adaptive) b.sid_file = cache.coarse(b.model_file).file;
   coarse.simulation.integrator = scene_.adaptive.coarse_integrator;
   coarse.simulation.max_step = scene_.adaptive.coarse_max_step;
-  const std::vector<format::Sid> coarse_sids = read_sids(coarse);
+  const std::vector<format::Sid> coarse_sids = load_sids(coarse, quiet_);
   std::vector<bool> adaptive_contact;
   for (const ContactSpec& c : scene_.contacts) {
     const BodySpec* slave = scene_.body(c.body);
@@ -273,6 +267,10 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   };
 
   auto simulation = std::make_unique<Simulation>(coarse, coarse_sids);
+  // the scene, its models and monitors are accepted: the folder now holds this run (and no
+  // phases of an earlier one)
+  mark_run_started(out_dir_, scene_.file);
+  std::filesystem::remove_all(std::filesystem::path(out_dir_) / "phases");
   int last_impact = -1;      // the contact of the impact before the coarse phase about to run
   double switch_energy = 0;  // of the switch into the phase about to run
   std::exception_ptr refused;  // bad input met between phases: reported after the results so far
@@ -320,7 +318,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
         requests.push_back({{"body", scene_.bodies[r.body].name}, {"surface", r.request.surface}, {"at", r.request.at},
                             {"cache_hit", sid.hit}, {"preprocessing_s", sid.seconds}, {"sid", sid.file}});
       }
-      fine_sids = read_sids(fine_scene);
+      fine_sids = load_sids(fine_scene, quiet_);
       for (std::size_t i : refined) {
         const format::Sid& f = fine_sids[i];
         if (!f.transfer || f.transfer->coarse_model_sha256 != coarse_sids[i].provenance.model_sha256)
@@ -338,11 +336,15 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                         {"switch_energy_change", before != 0 ? (after - before) / std::abs(before) : after - before}};
       std::optional<PhaseRecorder::Found> unused;
       auto [ended, impact_summary, impact_file] =
-          run_phase(*fine, {k, found->touch.point, w}, "impact-" + contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""),
+          run_phase(*fine, {k, found->touch.point, w, attempt < kMaxTries}, "impact-" + contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""),
                     try_entry, unused, utilization, beyond);
       IntervalDecision d = decide_interval(utilization, beyond, w);
       if (!ended) d = {true, w, "the run ended during the impact"};  // it keeps what it has
       const bool accepted = d.acceptable || attempt == kMaxTries;
+      if (accepted && !d.acceptable)  // the last try ran the whole impact, beyond its region or not
+        impact_summary["warnings"].push_back("contact '" + contact + "': the refined region did not fit after " + std::to_string(kMaxTries) +
+                                             " tries (utilization " + std::to_string(int(std::lround(100 * utilization))) +
+                                             " %, " + d.reason + "): forces beyond it are not modelled");
       try_entry.update({{"decision", d.reason}, {"accepted", accepted}, {"next_width_m", d.next_width}});
       if (!quiet_) {  // seed 001's Table 1, one line per try
         bool built = false;
@@ -376,10 +378,12 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     switch_energy = before_back != 0 ? (after - before_back) / std::abs(before_back) : after - before_back;
     last_impact = k;
   } catch (const format::InputError& e) {  // e.g. a model isosid-prep cannot refine
+    if (files.empty()) throw;                  // nothing to keep
     result.outcome = {"failed", e.what()};
     refused = std::current_exception();
     break;
   } catch (const format::ComputationError& e) {
+    if (files.empty()) throw;
     result.outcome = {"failed", e.what()};
     break;
   }
@@ -387,20 +391,18 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   // the run's results from its phases
   const std::string results = (std::filesystem::path(out_dir_) / "results.h5").string();
   join_phase_results(files, results, scene_.simulation.output_interval);
-  const Eigen::VectorXd total = format::h5::Reader(results).vector("/energy/total");
-  json summary = join_phase_summaries(summaries, std::vector<double>(total.data(), total.data() + total.size()));
+  json summary = join_phase_summaries(summaries, results, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(),
+                                      double(std::clock() - cpu0) / CLOCKS_PER_SEC);
   summary["status"] = result.outcome.status;
   if (!result.outcome.failure.empty()) summary["failure"] = result.outcome.failure;
-  // the whole run's times: refused tries and the wait for isosid-prep count too (the joined
-  // phases' own times are in their folders and the log)
+  // what refused tries and the wait for isosid-prep took of the run's time (each phase's own
+  // times are in its folder and the log)
   double preprocessing = 0, refused_tries = 0;
   for (const auto& p : log) {
     if (p.contains("refined"))
       for (const auto& r : p["refined"]) preprocessing += r["preprocessing_s"].get<double>();
     if (p.contains("accepted") && !p["accepted"].get<bool>()) refused_tries += p["cpu_time_s"].get<double>();
   }
-  summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  summary["cpu_time_s"] = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   summary["adaptive"] = {{"cache", scene_.adaptive.cache},   {"builds", cache.builds()},
                          {"cache_hits", cache.hits()},       {"preprocessing_wall_s", preprocessing},
                          {"refused_tries_cpu_s", refused_tries}, {"phases", log}};

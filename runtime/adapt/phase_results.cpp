@@ -5,6 +5,7 @@
 #include "isosid/format/error.hpp"
 #include "isosid/format/hdf5_file.hpp"
 #include "output/force_spectrum.hpp"
+#include "output/velocity_events.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -106,20 +107,30 @@ void join_phase_results(const std::vector<std::string>& phase_files, const std::
   out.commit();
 }
 
-json join_phase_summaries(const std::vector<json>& phases, const std::vector<double>& energy_total) {
+json join_phase_summaries(const std::vector<json>& phases, const std::string& joined_results, double wall_time_s, double cpu_time_s) {
   if (phases.empty()) throw format::ComputationError("no phase summaries to join");
   const json& first = phases.front();
   const json& last = phases.back();
   json j = last;  // scene, status, failure, bodies (final state), penalties of the last phase
-  for (const char* key : {"wall_time_s", "cpu_time_s", "steps", "rejected_steps", "restarted_steps", "rhs_evaluations",
-                          "newton_iterations", "jacobian_setups"}) {
+  for (const char* key : {"steps", "rejected_steps", "restarted_steps", "rhs_evaluations", "newton_iterations", "jacobian_setups"}) {
     double sum = 0;
     for (const json& p : phases) sum += p[key].get<double>();
     j[key] = sum;
   }
   for (const char* key : {"steps", "rejected_steps", "restarted_steps", "rhs_evaluations", "newton_iterations", "jacobian_setups"})
     j[key] = (long long)std::llround(j[key].get<double>());
-  j["time_per_step_s"] = j["steps"].get<long long>() ? j["wall_time_s"].get<double>() / double(j["steps"].get<long long>()) : 0.0;
+  j["wall_time_s"] = wall_time_s;
+  j["cpu_time_s"] = cpu_time_s;
+  j["time_per_step_s"] = j["steps"].get<long long>() ? wall_time_s / double(j["steps"].get<long long>()) : 0.0;
+  long long evaluations = 0, repeated = 0;
+  double active = 0;
+  for (const json& p : phases) {
+    const long long n = p["rhs_cost"]["evaluations"].get<long long>();
+    evaluations += n;
+    repeated += p["rhs_cost"]["repeated"].get<long long>();
+    active += p["rhs_cost"]["mean_active_points"].get<double>() * double(n);
+  }
+  j["rhs_cost"] = {{"evaluations", evaluations}, {"repeated", repeated}, {"mean_active_points", evaluations ? active / double(evaluations) : 0.0}};
   for (auto& [part, value] : j["time_split_s"].items()) {
     double sum = 0;
     for (const json& p : phases) sum += p["time_split_s"][part].get<double>();
@@ -136,14 +147,17 @@ json join_phase_summaries(const std::vector<json>& phases, const std::vector<dou
     double peak = 0, impulse = 0, penetration = 0;
     long long intervals = 0;
     json touches = json::array(), at_peak = 0, edge = nullptr;
-    for (const json& p : phases) {
-      const json& pc = p["contacts"][k];
+    const json* loudest = &last["contacts"][k];  // the phase of the largest force: its penalty and estimate
+    for (std::size_t i = 0; i < phases.size(); ++i) {
+      const json& pc = phases[i]["contacts"][k];
       if (start.is_null()) start = pc["start_s"];
       if (!pc["end_s"].is_null()) end = pc["end_s"];
-      if (pc["peak_force_n"].get<double>() > peak) peak = pc["peak_force_n"], at_peak = pc["points_at_peak"];
+      if (pc["peak_force_n"].get<double>() > peak) peak = pc["peak_force_n"], at_peak = pc["points_at_peak"], loudest = &pc;
       impulse = add_nullable(impulse, pc["impulse_ns"]);
       penetration = std::max(penetration, pc["max_penetration_m"].get<double>());
       intervals += pc["intervals"].get<long long>();
+      // a contact closed across a switch: the later phase reports it as starting at its start
+      if (i > 0 && !pc["start_s"].is_null() && pc["start_s"] == phases[i - 1]["end_time_s"]) --intervals;
       for (const json& t : pc["touches"]) touches.push_back(t);
       if (edge.is_null()) edge = pc["edge_reached_s"];
     }
@@ -159,21 +173,38 @@ json join_phase_summaries(const std::vector<json>& phases, const std::vector<dou
     c["impulse_ns"] = impulse;
     c["max_penetration_m"] = penetration;
     c["edge_reached_s"] = edge;
+    for (const char* key : {"penalty_n_m3", "penalty_source", "hertz_estimate"})
+      if (loudest->contains(key)) c[key] = (*loudest)[key];
     c.erase("impact_modes");  // a report of one phase's model: in that phase's summary
   }
+  for (std::size_t k = 0; k < j["joints"].size(); ++k)
+    for (const char* key : {"peak_force_n", "peak_torque_n_m", "max_position_error_m", "max_angle_error_rad"}) {
+      double most = 0;
+      for (const json& p : phases) most = std::max(most, p["joints"][k][key].get<double>());
+      j["joints"][k][key] = most;
+    }
+  format::h5::Reader joined(joined_results);
+  const Eigen::VectorXd time = joined.vector("/time");
   for (std::size_t m = 0; m < j["monitors"].size(); ++m) {
     json& mon = j["monitors"][m];
-    // measured against the value at the run's start: the first phase's (a later phase would
-    // measure against its own start)
-    for (const char* key : {"arrival_s", "reversal_s"})
-      if (mon.contains(key)) mon[key] = first["monitors"][m][key];
+    // arrival and reversal against the run's start, over the joined samples (each phase's own
+    // are measured against its start)
+    if (mon.value("quantity", "") == "velocity" && joined.exists("/monitors/" + mon["name"].get<std::string>())) {
+      const Eigen::MatrixXd v = joined.matrix("/monitors/" + mon["name"].get<std::string>());
+      VelocityEvents events;
+      events.start(time(0), v.row(0).transpose());
+      for (Eigen::Index i = 1; i < v.rows(); ++i) events.add(time(i), v.row(i).transpose());
+      mon["arrival_s"] = events.arrival() >= 0 ? json(events.arrival()) : json(nullptr);
+      mon["reversal_s"] = events.reversal() >= 0 ? json(events.reversal()) : json(nullptr);
+    }
     if (mon.contains("peak_von_mises_pa"))
       for (const json& p : phases)
         if (p["monitors"][m]["peak_von_mises_pa"].get<double>() > mon["peak_von_mises_pa"].get<double>()) mon = p["monitors"][m];
   }
   const double e0 = first["energy"]["initial_j"].get<double>();
   double worst = 0;
-  for (double e : energy_total) worst = std::max(worst, std::abs(e - e0));
+  const Eigen::VectorXd total = joined.vector("/energy/total");
+  for (double e : total) worst = std::max(worst, std::abs(e - e0));
   j["energy"] = {{"initial_j", e0}, {"final_j", last["energy"]["final_j"]}, {"max_rel_error", e0 != 0 ? worst / std::abs(e0) : worst},
                  {"dissipated_j", last["energy"]["dissipated_j"]}};
   return j;

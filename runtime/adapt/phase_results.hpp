@@ -15,12 +15,16 @@ namespace isosid::run {
 /// computed again over the joined force.
 void join_phase_results(const std::vector<std::string>& phase_files, const std::string& path, double output_interval);
 
-/// The run's summary from its phases' summaries, in order: sums of times and counts, each
-/// contact's first onset and last release, largest peak and summed impulse, every touch; each
-/// monitor's arrival and reversal as the first phase saw them (they are measured against the
-/// value at the start), its largest stress; the final state of the last phase; the energy
-/// from the first phase's start to the last phase's end, its largest relative change taken
-/// from `energy_total` (the joined series). The caller adds the reference comparison.
-nlohmann::json join_phase_summaries(const std::vector<nlohmann::json>& phases, const std::vector<double>& energy_total);
+/// The run's summary from its phases' summaries, in order, and the joined results.h5: the
+/// run's wall and CPU time as given (refused tries and preprocessing included), sums of
+/// counts and of the RHS time split (RHS cost weighted), each contact's first onset and last release (a
+/// contact closed across a switch is one interval), largest peak with that phase's penalty and
+/// Hertz estimate, summed impulse, every touch; each joint's largest force, torque and errors;
+/// each velocity monitor's arrival and reversal against the run's start over the joined
+/// samples, each stress monitor's largest stress; the final state of the last phase; the
+/// energy from the first phase's start to the last phase's end, its largest relative change
+/// over the joined series. The caller adds the reference comparison.
+nlohmann::json join_phase_summaries(const std::vector<nlohmann::json>& phases, const std::string& joined_results,
+                                    double wall_time_s, double cpu_time_s);
 
 }  // namespace isosid::run

@@ -7,6 +7,7 @@
 #include "contact/deformed_patch.hpp"
 #include "output/force_spectrum.hpp"
 #include "output/reference_comparison.hpp"
+#include "output/velocity_events.hpp"
 #include "isosid/common/number_text.hpp"
 
 #include <cmath>
@@ -86,10 +87,7 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
     if (const FloatingBody* target = system.contacts()[k].target().body())
       impact_modes_[k].emplace(system, int(k), *target, scene.contacts[k].target_surface);
   monitor_values_.resize(scene.monitors.size());
-  monitor_reversal_.assign(scene.monitors.size(), -1);
-  monitor_arrival_.assign(scene.monitors.size(), -1);
-  monitor_initial_.resize(scene.monitors.size());
-  monitor_last_.resize(scene.monitors.size());
+  monitor_events_.resize(scene.monitors.size());
 }
 
 void Recorder::sample(double t, const double* y) {
@@ -101,7 +99,9 @@ void Recorder::sample(double t, const double* y) {
     const Eigen::VectorXd& q = system_.bodies()[b]->q(y);
     body_q_[b].insert(body_q_[b].end(), q.data(), q.data() + q.size());
   }
+  if (time_.size() == 1) last_step_t_ = t;  // a run (or a later phase of one) starts here, not at 0
   for (std::size_t k = 0; k < states.size(); ++k) {
+    if (time_.size() == 1) last_force_[k] = states[k].force.norm();  // a phase may start loaded
     if (time_.size() == 1 && impact_modes_[k]) impact_modes_[k]->step(t, y, states[k].force.norm(), false);  // the start
     for (int a = 0; a < 3; ++a) contact_force_[k].push_back(states[k].force(a));
     contact_points_[k].push_back(states[k].active_points);
@@ -119,7 +119,7 @@ void Recorder::sample(double t, const double* y) {
   for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
     const Eigen::Vector3d value = monitor_value(m, y);
     for (int a = 0; a < 3; ++a) monitor_values_[m].push_back(value(a));
-    if (time_.size() == 1) monitor_initial_[m] = monitor_last_[m] = value;
+    if (time_.size() == 1) monitor_events_[m].start(t, value);
   }
   for (StressMonitor& s : stress_monitors_) s.sample(y);
 }
@@ -140,18 +140,7 @@ void Recorder::step(double t, const double* y) {
   }
   update_quasistatic_rates(t, y);
   for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
-    if (scene_.monitors[m].quantity != "velocity" || monitor_reversal_[m] >= 0) continue;
-    const Eigen::Vector3d v = monitor_value(m, y);
-    const Eigen::Vector3d& v0 = monitor_initial_[m];
-    const double v0v0 = v0.squaredNorm();
-    const double now = v.dot(v0), before = monitor_last_[m].dot(v0);
-    // arrival of a wave front: the velocity first leaves its initial value by 1 % (interpolated)
-    const double change_now = 1 - now / std::max(v0v0, 1e-300), change_before = 1 - before / std::max(v0v0, 1e-300);
-    if (v0v0 > 0 && monitor_arrival_[m] < 0 && change_now > 0.01 && change_before <= 0.01)
-      monitor_arrival_[m] = last_step_t_ + dt * (0.01 - change_before) / (change_now - change_before);
-    if (v0v0 > 0 && now < 0 && before >= 0)  // reversal: linear interpolation of the sign change
-      monitor_reversal_[m] = last_step_t_ + dt * before / (before - now);
-    monitor_last_[m] = v;
+    if (scene_.monitors[m].quantity == "velocity") monitor_events_[m].add(t, monitor_value(m, y));
   }
   for (StressMonitor& s : stress_monitors_) s.step(t, y);
   last_step_t_ = t;
@@ -392,8 +381,8 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     const auto& v = monitor_values_[m];
     json mon = {{"name", scene_.monitors[m].name}, {"quantity", scene_.monitors[m].quantity}};
     if (!v.empty()) mon["final"] = {v[v.size() - 3], v[v.size() - 2], v[v.size() - 1]};
-    mon["arrival_s"] = monitor_arrival_[m] >= 0 ? json(monitor_arrival_[m]) : json(nullptr);
-    mon["reversal_s"] = monitor_reversal_[m] >= 0 ? json(monitor_reversal_[m]) : json(nullptr);
+    mon["arrival_s"] = monitor_events_[m].arrival() >= 0 ? json(monitor_events_[m].arrival()) : json(nullptr);
+    mon["reversal_s"] = monitor_events_[m].reversal() >= 0 ? json(monitor_events_[m].reversal()) : json(nullptr);
     j["monitors"].push_back(mon);
   }
   for (const StressMonitor& s : stress_monitors_) j["monitors"].push_back(s.summary());

@@ -6,6 +6,7 @@
 #include "solve/multibody_system.hpp"
 #include "output/impact_modes.hpp"
 #include "output/stress_monitor.hpp"
+#include "output/velocity_events.hpp"
 #include "solve/simulation.hpp"
 #include "solve/time_integrator.hpp"
 
@@ -73,9 +74,7 @@ private:
   std::vector<bool> active_;
   double last_step_t_ = 0;
   std::vector<double> last_force_;
-  std::vector<double> monitor_reversal_;            ///< first sign change against the initial value
-  std::vector<double> monitor_arrival_;             ///< first departure by 1 % of the initial value (a wave front)
-  std::vector<Eigen::Vector3d> monitor_initial_, monitor_last_;
+  std::vector<VelocityEvents> monitor_events_;     ///< arrival and reversal of velocity monitors
   std::vector<format::Node> monitor_nodes_;         ///< SID nodes, or master-patch points as nodes
   std::vector<const FloatingBody*> monitor_bodies_;
   std::vector<std::size_t> monitor_body_index_;

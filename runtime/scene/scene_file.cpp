@@ -218,6 +218,8 @@ Scene read_scene_file(const std::string& path) {
     f.sid_file = f.adaptive ? "" : resolve(path, b.string("sid"));
     f.model_file = resolve(path, b.string("model", ""));
     if (f.adaptive && f.model_file.empty()) b.fail("model", "an adaptive body needs its model file (with [refinement.hierarchical])");
+    for (const char* key : {"q0", "qdot0"})
+      if (f.adaptive && b.has(key)) b.fail(key, "an adaptive body changes its model (and its coordinates) at each impact: start it at rest");
     if (!f.model_file.empty() && !fs::is_regular_file(f.model_file)) b.fail("model", "file not found: " + f.model_file);
     if (!f.adaptive && f.model_file.empty() && !fs::is_regular_file(f.sid_file)) b.fail("sid", "file not found: " + f.sid_file);
     if (b.has("q0")) {
@@ -382,7 +384,7 @@ Scene read_scene_file(const std::string& path) {
     if ((scene.adaptive.coarse_integrator == IntegratorKind::Leapfrog) != (scene.simulation.integrator == IntegratorKind::Leapfrog))
       a->fail("coarse_integrator", "the leapfrog's fixed step and the adaptive integrators' tolerances do not mix between phases");
     scene.adaptive.coarse_max_step = a->positive("coarse_max_step", scene.simulation.max_step);
-    if (!scene.has_adaptive_bodies()) a->fail("cache", "no flexible_body is adaptive");
+    if (!scene.has_adaptive_bodies()) top.fail("adaptive", "no flexible_body is adaptive");
   }
   if (scene.adaptive.cache.empty()) scene.adaptive.cache = resolve(path, ".isosid-cache");
   if (!top.optional_table("adaptive")) {

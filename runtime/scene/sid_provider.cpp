@@ -22,7 +22,7 @@ std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
   for (const BodySpec& b : scene.bodies) {
     if (b.rigid) continue;  // rigid bodies have no SID
     std::error_code ec;
-    if (!b.model_file.empty()) {
+    if (!b.model_file.empty() && !b.adaptive) {  // an adaptive body's SIDs come from the run's cache, built for their request
       const bool stale = !fs::exists(b.sid_file, ec) || fs::last_write_time(b.sid_file, ec) < fs::last_write_time(b.model_file, ec);
       if (stale) run_prep(b.model_file, b.sid_file, {}, quiet, "");
     }

@@ -64,9 +64,8 @@ std::string default_output(const std::string& scene_file) {
 
 /// A scene with adaptive bodies: phase by phase (run::AdaptiveRun), with the same report,
 /// exit codes and interruption as a plain run.
-int run_adaptive(run::Scene scene, const std::string& scene_file, const std::string& out_dir, bool as_json, bool quiet) {
-  run::AdaptiveRun adaptive(std::move(scene), out_dir, quiet);
-  run::mark_run_started(out_dir, scene_file);
+int run_adaptive(run::Scene scene, const std::string& out_dir, bool as_json, bool quiet) {
+  run::AdaptiveRun adaptive(std::move(scene), out_dir, quiet);  // marks the folder once its first phase is accepted
   const run::AdaptiveRun::Result result = adaptive.run([] { return g_stop_signal != 0; });
   const nlohmann::json& summary = result.summary;
   if (as_json) std::cout << summary.dump(2) << "\n";
@@ -106,7 +105,7 @@ int main(int argc, char** argv) {
     run::Scene scene = run::read_scene_file(scene_file);
     if (paraview_flag) scene.output.paraview = true;
     if (out_dir.empty()) out_dir = default_output(scene_file);
-    if (scene.has_adaptive_bodies()) return run_adaptive(std::move(scene), scene_file, out_dir, as_json, quiet);
+    if (scene.has_adaptive_bodies()) return run_adaptive(std::move(scene), out_dir, as_json, quiet);
     std::vector<format::Sid> sids = run::load_sids(scene, quiet);
     run::fit_contact_resolution(scene, sids, quiet);
     run::Simulation simulation(std::move(scene), std::move(sids));
