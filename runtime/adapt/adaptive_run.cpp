@@ -7,6 +7,7 @@
 #include "contact/deformed_patch.hpp"
 #include "contact/impact_estimate.hpp"
 #include "isosid/format/atomic_output.hpp"
+#include "isosid/common/number_text.hpp"
 #include "isosid/format/error.hpp"
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
@@ -167,6 +168,38 @@ std::vector<Refinement> refinements(const Scene& scene, const MultibodySystem& s
   return out;
 }
 
+/// How far the refined SID's transfer misses the coarse SID the run uses, relative: the
+/// displacements of `surface` per coarse mode, from the coarse master patch and from the
+/// refined one through T, at a grid of its parameters. The coarse field lies in the refined
+/// space, so they agree to the quadratures' difference unless the transfer was computed
+/// against other coarse modes (a sign or a basis the eigensolver chose differently).
+double transfer_mismatch(const format::Sid& coarse, const format::Sid& fine, const std::string& surface) {
+  const auto patch_of = [&](const format::Sid& sid) -> const format::MasterPatch* {
+    for (const format::ContactSurface& s : sid.contact_surfaces)
+      if (s.name == surface) return format::find_master_patch(sid, s.master_patch);
+    return nullptr;
+  };
+  const format::MasterPatch *a = patch_of(coarse), *b = patch_of(fine);
+  if (!a || !b) return 0;  // nothing to compare with
+  const DeformedPatch pa(*a, coarse.dim()), pb(*b, fine.dim());
+  DeformedPatch::Point point;
+  Eigen::MatrixXd rows_a, rows_b;
+  double worst = 0, scale = 0;
+  constexpr int n = 7;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= (pa.parameter_dim() > 1 ? n : 0); ++j) {
+      Eigen::Vector2d u(pa.lower(0) + (pa.upper(0) - pa.lower(0)) * i / n, 0.0);
+      if (pa.parameter_dim() > 1) u(1) = pa.lower(1) + (pa.upper(1) - pa.lower(1)) * j / n;
+      pa.evaluate(u, point);
+      pa.shape_rows(point, rows_a);
+      pb.evaluate(u, point);
+      pb.shape_rows(point, rows_b);
+      worst = std::max(worst, (rows_b * fine.transfer->coarse_to_fine - rows_a).cwiseAbs().maxCoeff());
+      scale = std::max(scale, rows_a.cwiseAbs().maxCoeff());
+    }
+  return scale > 0 ? worst / scale : worst;
+}
+
 /// Seed 001 Alg. 2: whether an impact's refined region fits its contact, and the width for the
 /// next try or the next impact of that contact. Over 1: the load reached beyond the region
 /// (widen by half); over kMaxUtilization the load came within a tenth of its edge, where the
@@ -319,10 +352,20 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                             {"cache_hit", sid.hit}, {"preprocessing_s", sid.seconds}, {"sid", sid.file}});
       }
       fine_sids = load_sids(fine_scene, quiet_);
-      for (std::size_t i : refined) {
+      for (std::size_t r = 0; r < refined.size(); ++r) {
+        const std::size_t i = refined[r];
         const format::Sid& f = fine_sids[i];
-        if (!f.transfer || f.transfer->coarse_model_sha256 != coarse_sids[i].provenance.model_sha256)
+        if (!f.transfer || f.transfer->coarse_model_sha256 != coarse_sids[i].provenance.model_sha256 ||
+            f.transfer->coarse_to_fine.cols() != coarse_sids[i].nq())
           throw format::ComputationError("the refined SID of '" + scene_.bodies[i].name + "' does not transfer from its coarse model");
+        // the coarse modes it was computed against are the coarse SID's: a mode of the other
+        // sign, or another basis of a repeated frequency, misses by O(1); the two models'
+        // quadratures of the rational basis make 1e-5 (scene D's sphere: 1.6e-5)
+        if (const double miss = transfer_mismatch(coarse_sids[i], f, requests[r]["surface"].get<std::string>()); miss > 1e-3)
+          throw format::ComputationError("the refined SID " + f.provenance.model_file + " of '" + scene_.bodies[i].name +
+                                         "' transfers from other coarse modes than " + scene_.bodies[i].name +
+                                         "'s coarse SID (surface displacements differ by " + common::number_text(miss) +
+                                         "): clear the model cache " + scene_.adaptive.cache);
         maps[i] = f.transfer->coarse_to_fine;
       }
       double after = 0;

@@ -3,9 +3,11 @@
 // contact interval's width adapted from its utilization.
 #include "isosid/format/hdf5_file.hpp"
 #include "scene_runner.hpp"
+#include "support/hdf5_tamper.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 using namespace isosid;
@@ -62,6 +64,23 @@ TEST_CASE("adaptive: a sphere's impact on its refined model, between coarse phas
   CHECK(std::abs(a["start_s"].get<double>() - w["start_s"].get<double>()) < 1e-8);
   CHECK(std::abs(a["end_s"].get<double>() - w["end_s"].get<double>()) < 1e-8);
   CHECK(a["touches"].size() == 1);
+}
+
+TEST_CASE("adaptive: a cached refined SID whose transfer fits other coarse modes is not used", "[runtime][adaptive]") {
+  // the failure canonicalize_modes removes at the source: a transfer computed against coarse
+  // modes of another sign would move the state into a wrong field (scene D gained 28x its
+  // energy); here one column of the cached transfer is turned over
+  const test::ScratchDir dir("adaptive_transfer");
+  const nlohmann::json first = run_adaptive(dir);
+  const std::string fine = first["adaptive"]["phases"][1]["refined"][0]["sid"];
+  const std::string path = std::filesystem::path(fine).is_absolute() ? fine : dir.path(fine);
+  Eigen::MatrixXd T = format::h5::Reader(path).matrix("/transfer/coarse_to_fine");  // closed before the tamper opens it
+  T.col(0) *= -1;
+  test::replace_dataset(path, "/transfer/coarse_to_fine", T);
+  const auto r = test::run_program("ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_RUN_EXE + " -q " + dir.path("s.scene.toml") +
+                                   " -o " + dir.path("out-again"));
+  CHECK(r.exit_status == 1);
+  CHECK_THAT(r.err, Contains("transfers from other coarse modes"));
 }
 
 TEST_CASE("adaptive: a first width far too wide or too narrow is tried again until the contact uses the region (seed 001 Alg. 2)",
