@@ -123,6 +123,22 @@ private:
 
 double total_energy(const MultibodySystem& system, const double* y) { return system.energies(y, system.contact_states(y)).total(); }
 
+/// The next phase: `scene` on `sids` from `from`'s state at its time, the bodies' coordinates
+/// moved by `maps`; `energy_change` receives the switch's relative change of the total energy.
+std::unique_ptr<Simulation> switch_models(const Simulation& from, const Scene& scene, const std::vector<format::Sid>& sids,
+                                          const std::vector<ElasticMap>& maps, double& energy_change) {
+  const Eigen::VectorXd y = from.state();
+  const double before = total_energy(from.system(), y.data());
+  double after = 0;
+  auto next = std::make_unique<Simulation>(scene, sids, from.time(), [&](const MultibodySystem& to) {
+    Eigen::VectorXd moved = transfer_state(from.system(), y.data(), to, maps);
+    after = total_energy(to, moved.data());
+    return moved;
+  });
+  energy_change = before != 0 ? (after - before) / std::abs(before) : after - before;
+  return next;
+}
+
 /// Where the impact of contact k refines: the slave body on its surface at the touch, and a
 /// flexible target on its own surface at the touch's parameter there; adaptive bodies only.
 struct Refinement {
@@ -306,7 +322,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   std::filesystem::remove_all(std::filesystem::path(out_dir_) / "phases");
   int last_impact = -1;      // the contact of the impact before the coarse phase about to run
   double switch_energy = 0;  // of the switch into the phase about to run
-  std::exception_ptr refused;  // bad input met between phases: reported after the results so far
+  std::exception_ptr refusal;  // bad input met between phases: reported after the results so far
   for (;;) try {
     json entry = {{"kind", "coarse"}, {"switch_energy_change", switch_energy}};
     std::optional<PhaseRecorder::Found> found;
@@ -324,11 +340,8 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     // a touch: the impact on models refined there, tried until the refined region fits
     const int k = found->contact;
     const std::string contact = scene_.contacts[std::size_t(k)].name;
-    const double t = simulation->time();
-    const Eigen::VectorXd y = simulation->state();
-    const double before = total_energy(simulation->system(), y.data());
     if (!(width[std::size_t(k)] > 0)) {
-      const auto estimate = estimate_impact(simulation->system().contacts()[std::size_t(k)], y.data());
+      const auto estimate = estimate_impact(simulation->system().contacts()[std::size_t(k)], simulation->state().data());
       if (!estimate)
         throw format::InputError(scene_.file, "adaptive.interval_width", "needed: contact '" + contact + "' has no Hertz estimate at its touch");
       width[std::size_t(k)] = snapped_width(2 * estimate->contact_radius / kTargetUtilization);
@@ -368,15 +381,10 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                                          "): clear the model cache " + scene_.adaptive.cache);
         maps[i] = f.transfer->coarse_to_fine;
       }
-      double after = 0;
-      fine = std::make_unique<Simulation>(fine_scene, fine_sids, t, [&](const MultibodySystem& to) {
-        Eigen::VectorXd moved = transfer_state(simulation->system(), y.data(), to, maps);
-        after = total_energy(to, moved.data());
-        return moved;
-      });
+      double into = 0;
+      fine = switch_models(*simulation, fine_scene, fine_sids, maps, into);
       json try_entry = {{"kind", "impact"}, {"contact", contact}, {"try", attempt}, {"touch_s", found->time},
-                        {"width_m", w}, {"refined", requests},
-                        {"switch_energy_change", before != 0 ? (after - before) / std::abs(before) : after - before}};
+                        {"width_m", w}, {"refined", requests}, {"switch_energy_change", into}};
       std::optional<PhaseRecorder::Found> unused;
       auto [ended, impact_summary, impact_file] =
           run_phase(*fine, {k, found->touch.point, w, attempt < kMaxTries}, "impact-" + contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""),
@@ -407,23 +415,14 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     if (!impact_over) break;
 
     // the impact is over: back to the coarse models
-    const double t_end = fine->time();
-    const Eigen::VectorXd y_end = fine->state();
-    const double before_back = total_energy(fine->system(), y_end.data());
     std::vector<ElasticMap> maps(fine->system().bodies().size());
     for (std::size_t i : refined) maps[i] = fine_sids[i].transfer->fine_to_coarse;
-    double after = 0;
-    simulation = std::make_unique<Simulation>(coarse, coarse_sids, t_end, [&](const MultibodySystem& to) {
-      Eigen::VectorXd moved = transfer_state(fine->system(), y_end.data(), to, maps);
-      after = total_energy(to, moved.data());
-      return moved;
-    });
-    switch_energy = before_back != 0 ? (after - before_back) / std::abs(before_back) : after - before_back;
+    simulation = switch_models(*fine, coarse, coarse_sids, maps, switch_energy);
     last_impact = k;
   } catch (const format::InputError& e) {  // e.g. a model isosid-prep cannot refine
     if (files.empty()) throw;                  // nothing to keep
     result.outcome = {"failed", e.what()};
-    refused = std::current_exception();
+    refusal = std::current_exception();
     break;
   } catch (const format::ComputationError& e) {
     if (files.empty()) throw;
@@ -453,7 +452,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   format::write_text_atomically((std::filesystem::path(out_dir_) / "summary.json").string(), summary.dump(2) + "\n");
   result.summary = summary;
   result.end_time = summary["end_time_s"].get<double>();
-  if (refused) std::rethrow_exception(refused);  // exit 2, with the results so far written
+  if (refusal) std::rethrow_exception(refusal);  // exit 2, with the results so far written
   return result;
 }
 

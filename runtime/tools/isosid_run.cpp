@@ -62,29 +62,35 @@ std::string default_output(const std::string& scene_file) {
   return (std::filesystem::path("out") / name.substr(0, name.find('.'))).string();
 }
 
-/// A scene with adaptive bodies: phase by phase (run::AdaptiveRun), with the same report,
-/// exit codes and interruption as a plain run.
-int run_adaptive(run::Scene scene, const std::string& out_dir, bool as_json, bool quiet) {
-  run::AdaptiveRun adaptive(std::move(scene), out_dir, quiet);  // marks the folder once its first phase is accepted
-  const run::AdaptiveRun::Result result = adaptive.run([] { return g_stop_signal != 0; });
-  const nlohmann::json& summary = result.summary;
+/// The end of a run: summary.json on stdout if asked, warnings, the one-line report with the
+/// reference values, and the exit code (an interruption's shell code, 1 for a failure).
+int report(const nlohmann::json& summary, const run::RunOutcome& outcome, double end_time, const std::string& out_dir, bool as_json,
+           bool quiet) {
   if (as_json) std::cout << summary.dump(2) << "\n";
-  if (!quiet && result.outcome.completed())
+  // after the run: a refusal or a failure stays the one line; summary.json always holds them
+  if (!quiet && outcome.completed())
     for (const auto& warning : summary["warnings"]) std::cerr << "isosid-run: warning: " << warning.get<std::string>() << "\n";
+  const std::string phases = summary.contains("adaptive") ? ", " + std::to_string(summary["adaptive"]["phases"].size()) + " phases" : "";
   if (!quiet)
-    std::fprintf(stderr, "isosid-run: %s in %.3f s wall, %lld steps, %zu phases -> %s\n%s", result.outcome.status.c_str(),
-                 summary["wall_time_s"].get<double>(), summary["steps"].get<long long>(), summary["adaptive"]["phases"].size(),
-                 out_dir.c_str(), run::reference_lines(summary).c_str());
-  if (result.outcome.status == "interrupted") {
-    std::fprintf(stderr, "isosid-run: interrupted by %s at t = %.6g s; results so far are in %s\n", strsignal(g_stop_signal),
-                 result.end_time, out_dir.c_str());
-    return 128 + int(g_stop_signal);
+    std::fprintf(stderr, "isosid-run: %s in %.3f s wall, %lld steps%s -> %s\n%s", outcome.status.c_str(), summary["wall_time_s"].get<double>(),
+                 summary["steps"].get<long long>(), phases.c_str(), out_dir.c_str(), run::reference_lines(summary).c_str());
+  if (outcome.status == "interrupted") {
+    std::fprintf(stderr, "isosid-run: interrupted by %s at t = %.6g s; results so far are in %s\n", strsignal(g_stop_signal), end_time,
+                 out_dir.c_str());
+    return 128 + int(g_stop_signal);  // the shell's convention: 130 SIGINT, 143 SIGTERM, 129 SIGHUP
   }
-  if (!result.outcome.completed()) {
-    std::cerr << "isosid-run: failed: " << result.outcome.failure << "; results so far are in " << out_dir << "\n";
+  if (!outcome.completed()) {
+    std::cerr << "isosid-run: failed: " << outcome.failure << "; results so far are in " << out_dir << "\n";
     return common::kExitFailure;
   }
   return 0;
+}
+
+/// A scene with adaptive bodies: phase by phase (run::AdaptiveRun), reported like a plain run.
+int run_adaptive(run::Scene scene, const std::string& out_dir, bool as_json, bool quiet) {
+  run::AdaptiveRun adaptive(std::move(scene), out_dir, quiet);  // marks the folder once its first phase is accepted
+  const run::AdaptiveRun::Result result = adaptive.run([] { return g_stop_signal != 0; });
+  return report(result.summary, result.outcome, result.end_time, out_dir, as_json, quiet);
 }
 
 }  // namespace
@@ -126,22 +132,6 @@ int main(int argc, char** argv) {
       if (!quiet) std::fprintf(stderr, "isosid-run: %d ParaView frames -> %s\n", paraview->frames(), collection.c_str());
     }
 
-    if (as_json) std::cout << summary.dump(2) << "\n";
-    // after the run: a refusal or a failure stays the one line; summary.json always holds them
-    if (!quiet && outcome.completed())
-      for (const auto& warning : summary["warnings"]) std::cerr << "isosid-run: warning: " << warning.get<std::string>() << "\n";
-    if (!quiet)
-      std::fprintf(stderr, "isosid-run: %s in %.3f s wall, %ld steps -> %s\n%s", outcome.status.c_str(), outcome.wall_time_s,
-                   summary["steps"].get<long>(), out_dir.c_str(), run::reference_lines(summary).c_str());
-    if (outcome.status == "interrupted") {
-      std::fprintf(stderr, "isosid-run: interrupted by %s at t = %.6g s; results so far are in %s\n", strsignal(g_stop_signal),
-                   simulation.time(), out_dir.c_str());
-      return 128 + int(g_stop_signal);  // the shell's convention: 130 SIGINT, 143 SIGTERM, 129 SIGHUP
-    }
-    if (!outcome.completed()) {
-      std::cerr << "isosid-run: failed: " << outcome.failure << "; results so far are in " << out_dir << "\n";
-      return common::kExitFailure;
-    }
-    return 0;
+    return report(summary, outcome, simulation.time(), out_dir, as_json, quiet);
   });
 }
