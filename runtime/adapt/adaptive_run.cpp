@@ -80,6 +80,7 @@ public:
   void touch(int k, double t, const Touch& touch) override {
     Recorder::touch(k, t, touch);
     if (impact_.contact < 0 && adaptive_contact_[std::size_t(k)] && !found_) found_ = Found{k, t, touch};
+    if (impact_.contact >= 0 && k != impact_.contact && adaptive_contact_[std::size_t(k)]) overlapping_.push_back({k, t, touch});
   }
   void contact_event(int k, bool closing, double t) override {
     Recorder::contact_event(k, closing, t);
@@ -106,6 +107,8 @@ public:
   const std::optional<Found>& found() const { return found_; }
   /// Impact phases: the largest distance of a loaded point from the touch over half the width.
   double utilization() const { return reach_ / (impact_.width / 2); }
+  /// Touches of other adaptive contacts during this impact (they run on its models).
+  const std::vector<Found>& overlapping() const { return overlapping_; }
   /// The load reached beyond the refined region (the phase stopped there unless it was the last try).
   bool beyond() const { return beyond_; }
 
@@ -115,6 +118,7 @@ private:
   Impact impact_;
   const std::function<bool()>& stop_requested_;
   std::optional<Found> found_;
+  std::vector<Found> overlapping_;
   Eigen::Vector3d touch_in_body_ = Eigen::Vector3d::Zero();
   double reach_ = 0;
   bool loaded_ = false, impact_over_ = false, beyond_ = false;
@@ -292,6 +296,10 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     const std::string folder = (std::filesystem::path(out_dir_) / "phases" / name).string();
     std::filesystem::create_directories(folder);
     json summary = write_run_report(folder, recorder, simulation, outcome);
+    for (const PhaseRecorder::Found& other : recorder.overlapping())
+      summary["warnings"].push_back("contact '" + scene_.contacts[std::size_t(other.contact)].name + "' touched at t = " +
+                                    common::number_text(other.time) + " s during the impact of '" + scene_.contacts[std::size_t(impact.contact)].name +
+                                    "': it ran on that impact's models, not refined for it");
     entry.update({{"folder", folder}, {"start_s", start}, {"end_s", simulation.time()}, {"status", outcome.status},
                   {"steps", summary["steps"]}, {"cpu_time_s", outcome.cpu_time_s},
                   {"energy_start_j", summary["energy"]["initial_j"]}, {"energy_end_j", summary["energy"]["final_j"]}});
@@ -426,7 +434,8 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     break;
   } catch (const format::ComputationError& e) {
     if (files.empty()) throw;
-    result.outcome = {"failed", e.what()};
+    // a signal that stopped isosid-prep stops the run (interrupted, not failed)
+    result.outcome = {stop_requested() ? "interrupted" : "failed", e.what()};
     break;
   }
 
