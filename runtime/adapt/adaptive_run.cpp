@@ -324,6 +324,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   };
 
   auto simulation = std::make_unique<Simulation>(coarse, coarse_sids);
+  { const Recorder monitors(simulation->system(), simulation->scene()); }  // refuses monitors the models lack
   // the scene, its models and monitors are accepted: the folder now holds this run (and no
   // phases of an earlier one)
   mark_run_started(out_dir_, scene_.file);
