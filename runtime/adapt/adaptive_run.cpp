@@ -2,14 +2,14 @@
 #include "adapt/adaptive_run.hpp"
 
 #include "adapt/model_cache.hpp"
+#include "adapt/phase_recorder.hpp"
 #include "adapt/phase_results.hpp"
 #include "adapt/state_transfer.hpp"
 #include "contact/deformed_patch.hpp"
 #include "contact/impact_estimate.hpp"
-#include "isosid/format/atomic_output.hpp"
 #include "isosid/common/number_text.hpp"
+#include "isosid/format/atomic_output.hpp"
 #include "isosid/format/error.hpp"
-#include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "output/recorder.hpp"
 #include "output/reference_comparison.hpp"
@@ -18,14 +18,14 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <exception>
-#include <tuple>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <tuple>
 
 namespace isosid::run {
 
@@ -38,92 +38,6 @@ using nlohmann::json;
 constexpr double kTargetUtilization = 0.7, kMinUtilization = 0.5, kMaxUtilization = 0.9;
 /// Tries of one impact before the last one is taken as it is.
 constexpr int kMaxTries = 4;
-
-/// A phase's observer: records like a plain run and ends a coarse phase at the first touch of
-/// a contact with an adaptive body, an impact phase once its contact's surfaces are apart
-/// again, or as soon as its load reaches beyond the refined region (seed 001: an edge element
-/// in contact makes the rest of the impact pointless).
-class PhaseRecorder : public Recorder {
-public:
-  struct Found {
-    int contact;
-    double time;
-    Touch touch;
-  };
-  /// The impact of an impact phase: its contact, where its surfaces touched (world, at the
-  /// phase's start state y0) and the width of the region refined around it. A coarse phase
-  /// after an impact names that impact's contact in `after`.
-  struct Impact {
-    int contact = -1;
-    Eigen::Vector3d point = Eigen::Vector3d::Zero();
-    double width = 0;
-    bool stop_beyond = true;  ///< stop once the load leaves the refined region (not on the last try)
-    int after = -1;
-  };
-  /// An impact phase starts where its contact's surfaces touch: that touch is taken as found,
-  /// so the phase ends once they have been apart again after the contact opened.
-  PhaseRecorder(const Simulation& simulation, const std::vector<bool>& adaptive_contact, const Impact& impact,
-                const std::function<bool()>& stop_requested)
-      : Recorder(simulation.system(), simulation.scene()), system_(simulation.system()), adaptive_contact_(adaptive_contact),
-        impact_(impact), stop_requested_(stop_requested) {
-    if (impact_.after >= 0) {  // its surfaces just parted: the next touch is a new impact once they are apart
-      system_.touched(std::size_t(impact_.after));
-      system_.released(std::size_t(impact_.after));
-    }
-    if (impact_.contact < 0) return;
-    system_.touched(std::size_t(impact_.contact));
-    const FloatingBody& body = system_.contacts()[std::size_t(impact_.contact)].body();
-    const double* y0 = simulation.state().data();
-    touch_in_body_ = body.orientation(y0).conjugate() * (impact_.point - Eigen::Vector3d(body.r(y0)));
-  }
-
-  void touch(int k, double t, const Touch& touch) override {
-    Recorder::touch(k, t, touch);
-    if (impact_.contact < 0 && adaptive_contact_[std::size_t(k)] && !found_) found_ = Found{k, t, touch};
-    if (impact_.contact >= 0 && k != impact_.contact && adaptive_contact_[std::size_t(k)]) overlapping_.push_back({k, t, touch});
-  }
-  void contact_event(int k, bool closing, double t) override {
-    Recorder::contact_event(k, closing, t);
-    if (k == impact_.contact && closing) loaded_ = true;
-  }
-  void step(double t, const double* y) override {
-    Recorder::step(t, y);
-    if (impact_.contact < 0) return;
-    // a touch without load (grazing) is over once the surfaces are clearly apart (the phase
-    // starts with them touching, the gap within round-off of zero)
-    if (!loaded_ && system_.touch(std::size_t(impact_.contact), y).gap > 1e-3 * impact_.width) impact_over_ = true;
-    // the farthest loaded point from the touch, in the slave's frame (seed 001's utilization
-    // of the contact interval, measured as a length: contact radius over half the width)
-    const SurfaceContact& contact = system_.contacts()[std::size_t(impact_.contact)];
-    const Eigen::Quaterniond frame = contact.body().orientation(y);
-    const Eigen::Vector3d origin = contact.body().r(y);
-    for (const PointLoad& p : contact.point_loads(y))
-      reach_ = std::max(reach_, (frame.conjugate() * (p.position - origin) - touch_in_body_).norm());
-    if (utilization() > 1) beyond_ = true;
-    if (system_.touch_armed(std::size_t(impact_.contact))) impact_over_ = true;
-  }
-  bool stop_requested() const override { return phase_over() || stop_requested_(); }
-  bool phase_over() const { return found_.has_value() || impact_over_ || (beyond_ && impact_.stop_beyond); }
-  const std::optional<Found>& found() const { return found_; }
-  /// Impact phases: the largest distance of a loaded point from the touch over half the width.
-  double utilization() const { return reach_ / (impact_.width / 2); }
-  /// Touches of other adaptive contacts during this impact (they run on its models).
-  const std::vector<Found>& overlapping() const { return overlapping_; }
-  /// The load reached beyond the refined region (the phase stopped there unless it was the last try).
-  bool beyond() const { return beyond_; }
-
-private:
-  const MultibodySystem& system_;
-  const std::vector<bool>& adaptive_contact_;
-  Impact impact_;
-  const std::function<bool()>& stop_requested_;
-  std::optional<Found> found_;
-  std::vector<Found> overlapping_;
-  Eigen::Vector3d touch_in_body_ = Eigen::Vector3d::Zero();
-  double reach_ = 0;
-  bool loaded_ = false, impact_over_ = false, beyond_ = false;
-};
-
 
 double total_energy(const MultibodySystem& system, const double* y) { return system.energies(y, system.contact_states(y)).total(); }
 
@@ -186,38 +100,6 @@ std::vector<Refinement> refinements(const Scene& scene, const MultibodySystem& s
   add(c.body, c.surface, touch.slave_parameter);
   if (!c.target_surface.empty()) add(c.target, c.target_surface, touch.target_parameter);
   return out;
-}
-
-/// How far the refined SID's transfer misses the coarse SID the run uses, relative: the
-/// displacements of `surface` per coarse mode, from the coarse master patch and from the
-/// refined one through T, at a grid of its parameters. The coarse field lies in the refined
-/// space, so they agree to the quadratures' difference unless the transfer was computed
-/// against other coarse modes (a sign or a basis the eigensolver chose differently).
-double transfer_mismatch(const format::Sid& coarse, const format::Sid& fine, const std::string& surface) {
-  const auto patch_of = [&](const format::Sid& sid) -> const format::MasterPatch* {
-    for (const format::ContactSurface& s : sid.contact_surfaces)
-      if (s.name == surface) return format::find_master_patch(sid, s.master_patch);
-    return nullptr;
-  };
-  const format::MasterPatch *a = patch_of(coarse), *b = patch_of(fine);
-  if (!a || !b) return 0;  // nothing to compare with
-  const DeformedPatch pa(*a, coarse.dim()), pb(*b, fine.dim());
-  DeformedPatch::Point point;
-  Eigen::MatrixXd rows_a, rows_b;
-  double worst = 0, scale = 0;
-  constexpr int n = 7;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= (pa.parameter_dim() > 1 ? n : 0); ++j) {
-      Eigen::Vector2d u(pa.lower(0) + (pa.upper(0) - pa.lower(0)) * i / n, 0.0);
-      if (pa.parameter_dim() > 1) u(1) = pa.lower(1) + (pa.upper(1) - pa.lower(1)) * j / n;
-      pa.evaluate(u, point);
-      pa.shape_rows(point, rows_a);
-      pb.evaluate(u, point);
-      pb.shape_rows(point, rows_b);
-      worst = std::max(worst, (rows_b * fine.transfer->coarse_to_fine - rows_a).cwiseAbs().maxCoeff());
-      scale = std::max(scale, rows_a.cwiseAbs().maxCoeff());
-    }
-  return scale > 0 ? worst / scale : worst;
 }
 
 /// Seed 001 Alg. 2: whether an impact's refined region fits its contact, and the width for the

@@ -1,6 +1,7 @@
 // State transfer between systems; see state_transfer.hpp.
 #include "adapt/state_transfer.hpp"
 
+#include "contact/deformed_patch.hpp"
 #include "isosid/format/error.hpp"
 
 #include <algorithm>
@@ -36,6 +37,33 @@ Eigen::VectorXd transfer_state(const MultibodySystem& from, const double* y_from
   }
   y(to.size() - 1) = y_from[from.size() - 1];  // the dissipated energy so far
   return y;
+}
+
+double transfer_mismatch(const format::Sid& coarse, const format::Sid& fine, const std::string& surface) {
+  const auto patch_of = [&](const format::Sid& sid) -> const format::MasterPatch* {
+    for (const format::ContactSurface& s : sid.contact_surfaces)
+      if (s.name == surface) return format::find_master_patch(sid, s.master_patch);
+    return nullptr;
+  };
+  const format::MasterPatch *a = patch_of(coarse), *b = patch_of(fine);
+  if (!a || !b) return 0;  // nothing to compare with
+  const DeformedPatch pa(*a, coarse.dim()), pb(*b, fine.dim());
+  DeformedPatch::Point point;
+  Eigen::MatrixXd rows_a, rows_b;
+  double worst = 0, scale = 0;
+  constexpr int n = 7;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= (pa.parameter_dim() > 1 ? n : 0); ++j) {
+      Eigen::Vector2d u(pa.lower(0) + (pa.upper(0) - pa.lower(0)) * i / n, 0.0);
+      if (pa.parameter_dim() > 1) u(1) = pa.lower(1) + (pa.upper(1) - pa.lower(1)) * j / n;
+      pa.evaluate(u, point);
+      pa.shape_rows(point, rows_a);
+      pb.evaluate(u, point);
+      pb.shape_rows(point, rows_b);
+      worst = std::max(worst, (rows_b * fine.transfer->coarse_to_fine - rows_a).cwiseAbs().maxCoeff());
+      scale = std::max(scale, rows_a.cwiseAbs().maxCoeff());
+    }
+  return scale > 0 ? worst / scale : worst;
 }
 
 }  // namespace isosid::run

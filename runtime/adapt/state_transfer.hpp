@@ -6,6 +6,7 @@
 #include "solve/multibody_system.hpp"
 
 #include <Eigen/Dense>
+#include <string>
 #include <vector>
 
 namespace isosid::run {
@@ -20,5 +21,12 @@ using ElasticMap = Eigen::MatrixXd;
 /// over. Elastic velocities of quasistatic coordinates are taken as zero (they carry no mass).
 Eigen::VectorXd transfer_state(const MultibodySystem& from, const double* y_from, const MultibodySystem& to,
                                const std::vector<ElasticMap>& maps);
+
+/// How far the refined SID's transfer misses the coarse SID the run uses, relative: the
+/// displacements of `surface` per coarse mode, from the coarse master patch and from the
+/// refined one through T, at a grid of its parameters. The coarse field lies in the refined
+/// space, so they agree to the quadratures' difference unless the transfer was computed
+/// against other coarse modes (a sign or a basis the eigensolver chose differently).
+double transfer_mismatch(const format::Sid& coarse, const format::Sid& fine, const std::string& surface);
 
 }  // namespace isosid::run

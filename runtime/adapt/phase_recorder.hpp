@@ -1,0 +1,69 @@
+// The observer of one phase of an adaptive run (seed 001 Fig. 2): it records like a plain
+// run's Recorder and says when the phase is over: a coarse phase at the first touch of a
+// contact with an adaptive body, an impact phase once its contact's surfaces are apart again,
+// or as soon as its load reaches beyond the refined region (seed 001: an edge element in
+// contact makes the rest of the impact pointless). It measures the region's utilization.
+#pragma once
+#include "output/recorder.hpp"
+#include "solve/simulation.hpp"
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace isosid::run {
+
+class PhaseRecorder : public Recorder {
+public:
+  /// A touch of a contact's exact surfaces.
+  struct Found {
+    int contact;
+    double time;
+    Touch touch;
+  };
+  /// The impact of an impact phase: its contact, where its surfaces touched (world, at the
+  /// phase's start state) and the width of the region refined around it. A coarse phase
+  /// after an impact names that impact's contact in `after`.
+  struct Impact {
+    int contact = -1;
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();
+    double width = 0;
+    bool stop_beyond = true;  ///< stop once the load leaves the refined region (not on the last try)
+    int after = -1;
+  };
+  /// An impact phase starts where its contact's surfaces touch: that touch is taken as found,
+  /// so the phase ends once they have been apart again after the contact opened.
+  /// `adaptive_contact` (per contact: an adaptive body takes part) and `stop_requested` must
+  /// outlive the recorder.
+  PhaseRecorder(const Simulation& simulation, const std::vector<bool>& adaptive_contact, const Impact& impact,
+                const std::function<bool()>& stop_requested);
+
+  void touch(int k, double t, const Touch& touch) override;
+  void contact_event(int k, bool closing, double t) override;
+  void step(double t, const double* y) override;
+  bool stop_requested() const override { return phase_over() || stop_requested_(); }
+
+  /// The phase ended as the loop asks (a touch, an impact over, the load beyond its region).
+  bool phase_over() const { return found_.has_value() || impact_over_ || (beyond_ && impact_.stop_beyond); }
+  /// Coarse phases: the touch that ended it.
+  const std::optional<Found>& found() const { return found_; }
+  /// Impact phases: the largest distance of a loaded point from the touch over half the width.
+  double utilization() const { return reach_ / (impact_.width / 2); }
+  /// Touches of other adaptive contacts during this impact (they run on its models).
+  const std::vector<Found>& overlapping() const { return overlapping_; }
+  /// The load reached beyond the refined region (the phase stopped there unless it was the last try).
+  bool beyond() const { return beyond_; }
+
+private:
+  const MultibodySystem& system_;
+  const std::vector<bool>& adaptive_contact_;
+  Impact impact_;
+  const std::function<bool()>& stop_requested_;
+  std::optional<Found> found_;
+  std::vector<Found> overlapping_;
+  Eigen::Vector3d touch_in_body_ = Eigen::Vector3d::Zero();
+  double reach_ = 0;
+  bool loaded_ = false, impact_over_ = false, beyond_ = false;
+};
+
+}  // namespace isosid::run
