@@ -111,14 +111,12 @@ json join_phase_summaries(const std::vector<json>& phases, const std::string& jo
   if (phases.empty()) throw format::ComputationError("no phase summaries to join");
   const json& first = phases.front();
   const json& last = phases.back();
-  json j = last;  // scene, status, failure, bodies (final state), penalties of the last phase
+  json j = last;  // scene, status, failure, bodies (the final state); the rest is joined below
   for (const char* key : {"steps", "rejected_steps", "restarted_steps", "rhs_evaluations", "newton_iterations", "jacobian_setups"}) {
-    double sum = 0;
-    for (const json& p : phases) sum += p[key].get<double>();
+    long long sum = 0;
+    for (const json& p : phases) sum += p[key].get<long long>();
     j[key] = sum;
   }
-  for (const char* key : {"steps", "rejected_steps", "restarted_steps", "rhs_evaluations", "newton_iterations", "jacobian_setups"})
-    j[key] = (long long)std::llround(j[key].get<double>());
   j["wall_time_s"] = wall_time_s;
   j["cpu_time_s"] = cpu_time_s;
   j["time_per_step_s"] = j["steps"].get<long long>() ? wall_time_s / double(j["steps"].get<long long>()) : 0.0;
