@@ -89,6 +89,20 @@ std::vector<double> snapped_point(const FloatingBody& body, const std::string& s
   return at;
 }
 
+/// Where the refined region of a request is centred, world, at state y: its (snapped) point on
+/// the body's surface, reference geometry (the utilization is measured from it).
+Eigen::Vector3d region_centre(const FloatingBody& body, const RefinementRequest& request, const double* y) {
+  const format::ContactSurface* s = body.contact_surface(request.surface);
+  const format::MasterPatch* patch = s ? format::find_master_patch(body.sid(), s->master_patch) : nullptr;
+  if (!patch) return Eigen::Vector3d(body.r(y));
+  const DeformedPatch geometry(*patch, body.sid().dim());
+  DeformedPatch::Point point;
+  Eigen::Vector2d u = Eigen::Vector2d::Zero();
+  for (std::size_t d = 0; d < request.at.size() && d < 2; ++d) u(Eigen::Index(d)) = request.at[d];
+  geometry.evaluate(u, point);
+  return Eigen::Vector3d(body.r(y)) + body.orientation(y) * point.C;
+}
+
 std::vector<Refinement> refinements(const Scene& scene, const MultibodySystem& system, int k, const Touch& touch, double width) {
   const ContactSpec& c = scene.contacts[std::size_t(k)];
   std::vector<Refinement> out;
@@ -248,7 +262,10 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       std::vector<ElasticMap> maps(simulation->system().bodies().size());
       json requests = json::array();
       refined.clear();
+      Eigen::Vector3d centre = found->touch.point;  // the slave's refined region's centre, if it is refined
+      const std::size_t slave = simulation->system().body_index(scene_.contacts[std::size_t(k)].body);
       for (const Refinement& r : refinements(scene_, simulation->system(), k, found->touch, w)) {
+        if (r.body == slave) centre = region_centre(*simulation->system().bodies()[r.body], r.request, simulation->state().data());
         const CachedSid sid = cache.fine(scene_.bodies[r.body].model_file, r.request);
         fine_scene.bodies[r.body].sid_file = sid.file;
         refined.push_back(r.body);
@@ -278,7 +295,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                         {"width_m", w}, {"refined", requests}, {"switch_energy_change", into}};
       std::optional<PhaseRecorder::Found> unused;
       auto [ended, impact_summary, impact_file] =
-          run_phase(*fine, {k, found->touch.point, w, attempt < kMaxTries}, "impact-" + contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""),
+          run_phase(*fine, {k, centre, w, attempt < kMaxTries}, "impact-" + contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""),
                     try_entry, unused, utilization, beyond);
       IntervalDecision d = decide_interval(utilization, beyond, w);
       if (!ended) d = {true, w, "the run ended during the impact"};  // it keeps what it has

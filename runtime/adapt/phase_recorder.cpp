@@ -37,7 +37,7 @@ void PhaseRecorder::step(double t, const double* y) {
   // a touch without load (grazing) is over once the surfaces are clearly apart (the phase
   // starts with them touching, the gap within round-off of zero)
   if (!loaded_ && system_.touch(std::size_t(impact_.contact), y).gap > 1e-3 * impact_.width) impact_over_ = true;
-  // the farthest loaded point from the touch, in the slave's frame (seed 001's utilization
+  // the farthest loaded point from the region's centre, in the slave's frame (seed 001's utilization
   // of the contact interval, measured as a length: contact radius over half the width)
   const SurfaceContact& contact = system_.contacts()[std::size_t(impact_.contact)];
   const Eigen::Quaterniond frame = contact.body().orientation(y);

@@ -21,8 +21,9 @@ public:
     double time;
     Touch touch;
   };
-  /// The impact of an impact phase: its contact, where its surfaces touched (world, at the
-  /// phase's start state) and the width of the region refined around it. A coarse phase
+  /// The impact of an impact phase: its contact, the centre of the slave's refined region
+  /// (world, at the phase's start state; the touch where the slave is not refined) and the
+  /// region's width. A coarse phase
   /// after an impact names that impact's contact in `after`.
   struct Impact {
     int contact = -1;
@@ -47,7 +48,7 @@ public:
   bool phase_over() const { return found_.has_value() || impact_over_ || (beyond_ && impact_.stop_beyond); }
   /// Coarse phases: the touch that ended it.
   const std::optional<Found>& found() const { return found_; }
-  /// Impact phases: the largest distance of a loaded point from the touch over half the width.
+  /// Impact phases: the largest distance of a loaded point from the region's centre over half the width.
   double utilization() const { return reach_ / (impact_.width / 2); }
   /// Touches of other adaptive contacts during this impact (they run on its models).
   const std::vector<Found>& overlapping() const { return overlapping_; }
