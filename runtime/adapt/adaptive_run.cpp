@@ -62,6 +62,7 @@ std::unique_ptr<Simulation> switch_models(const Simulation& from, const Scene& s
 struct Refinement {
   std::size_t body;
   RefinementRequest request;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< the request's point, body frame (reference geometry)
 };
 
 /// Requests land on a grid, so that impacts at nearly the same place ask for the same model
@@ -70,37 +71,29 @@ constexpr double kPointGridPerWidth = 16, kWidthStepsPerOctave = 8;
 
 double snapped_width(double width) { return std::exp2(std::round(std::log2(width) * kWidthStepsPerOctave) / kWidthStepsPerOctave); }
 
-/// The touch parameter u on `surface` of `body`, snapped to a grid of width / 16 (physical,
-/// through the surface's parametric derivatives there), inside the patch.
-std::vector<double> snapped_point(const FloatingBody& body, const std::string& surface, const Eigen::Vector2d& u, int dim, double width) {
+/// The request for `body`'s `surface` at touch parameter u: u snapped to a grid of width / 16
+/// (physical, through the surface's parametric derivatives there), inside the patch, and the
+/// snapped point's body-frame position.
+Refinement snapped_request(std::size_t index, const FloatingBody& body, const std::string& surface, const Eigen::Vector2d& u, int dim,
+                           double width) {
+  Refinement out{index, {surface, std::vector<double>(u.data(), u.data() + dim), width}, Eigen::Vector3d::Zero()};
   const format::ContactSurface* s = body.contact_surface(surface);
   const format::MasterPatch* patch = s ? format::find_master_patch(body.sid(), s->master_patch) : nullptr;
-  std::vector<double> at(u.data(), u.data() + dim);
-  if (!patch) return at;
+  if (!patch) return out;
   const DeformedPatch geometry(*patch, body.sid().dim());
   DeformedPatch::Point point;
   geometry.evaluate(u, point);
+  Eigen::Vector2d snapped = u;
   for (int d = 0; d < dim; ++d) {
     const double speed = point.dC[d].norm();  // m per unit parameter
     if (!(speed > 0)) continue;
     const double step = width / kPointGridPerWidth / speed;
-    at[std::size_t(d)] = std::clamp(std::round(u(d) / step) * step, geometry.lower(d), geometry.upper(d));
+    snapped(d) = std::clamp(std::round(u(d) / step) * step, geometry.lower(d), geometry.upper(d));
+    out.request.at[std::size_t(d)] = snapped(d);
   }
-  return at;
-}
-
-/// Where the refined region of a request is centred, world, at state y: its (snapped) point on
-/// the body's surface, reference geometry (the utilization is measured from it).
-Eigen::Vector3d region_centre(const FloatingBody& body, const RefinementRequest& request, const double* y) {
-  const format::ContactSurface* s = body.contact_surface(request.surface);
-  const format::MasterPatch* patch = s ? format::find_master_patch(body.sid(), s->master_patch) : nullptr;
-  if (!patch) return Eigen::Vector3d(body.r(y));
-  const DeformedPatch geometry(*patch, body.sid().dim());
-  DeformedPatch::Point point;
-  Eigen::Vector2d u = Eigen::Vector2d::Zero();
-  for (std::size_t d = 0; d < request.at.size() && d < 2; ++d) u(Eigen::Index(d)) = request.at[d];
-  geometry.evaluate(u, point);
-  return Eigen::Vector3d(body.r(y)) + body.orientation(y) * point.C;
+  geometry.evaluate(snapped, point);
+  out.centre = point.C;
+  return out;
 }
 
 std::vector<Refinement> refinements(const Scene& scene, const MultibodySystem& system, int k, const Touch& touch, double width) {
@@ -109,7 +102,7 @@ std::vector<Refinement> refinements(const Scene& scene, const MultibodySystem& s
   auto add = [&](const std::string& body, const std::string& surface, const Eigen::Vector2d& u) {
     const std::size_t i = system.body_index(body);
     if (!scene.bodies[i].adaptive) return;
-    out.push_back({i, {surface, snapped_point(*system.bodies()[i], surface, u, touch.parameter_dim, width), width}});
+    out.push_back(snapped_request(i, *system.bodies()[i], surface, u, touch.parameter_dim, width));
   };
   add(c.body, c.surface, touch.slave_parameter);
   if (!c.target_surface.empty()) add(c.target, c.target_surface, touch.target_parameter);
@@ -183,6 +176,12 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   auto run_phase = [&](Simulation& simulation, const PhaseRecorder::Impact& impact, const std::string& label, json& entry,
                        std::optional<PhaseRecorder::Found>& found, double& utilization, bool& beyond) {
     PhaseRecorder recorder(simulation, adaptive_contact, impact, stop_requested);
+    if (phase == 0) {
+      // the scene, its models and monitors (the recorder refuses those the models lack) are
+      // accepted: the folder now holds this run, and no phases of an earlier one
+      mark_run_started(out_dir_, scene_.file);
+      std::filesystem::remove_all(std::filesystem::path(out_dir_) / "phases");
+    }
     const double start = simulation.time();
     RunOutcome outcome = simulation.run(recorder);
     const bool over = recorder.phase_over() && outcome.status == "interrupted";
@@ -220,11 +219,6 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   };
 
   auto simulation = std::make_unique<Simulation>(coarse, coarse_sids);
-  { const Recorder monitors(simulation->system(), simulation->scene()); }  // refuses monitors the models lack
-  // the scene, its models and monitors are accepted: the folder now holds this run (and no
-  // phases of an earlier one)
-  mark_run_started(out_dir_, scene_.file);
-  std::filesystem::remove_all(std::filesystem::path(out_dir_) / "phases");
   int last_impact = -1;      // the contact of the impact before the coarse phase about to run
   double switch_energy = 0;  // of the switch into the phase about to run
   std::exception_ptr refusal;  // bad input met between phases: reported after the results so far
@@ -265,7 +259,11 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       Eigen::Vector3d centre = found->touch.point;  // the slave's refined region's centre, if it is refined
       const std::size_t slave = simulation->system().body_index(scene_.contacts[std::size_t(k)].body);
       for (const Refinement& r : refinements(scene_, simulation->system(), k, found->touch, w)) {
-        if (r.body == slave) centre = region_centre(*simulation->system().bodies()[r.body], r.request, simulation->state().data());
+        if (r.body == slave) {
+          const FloatingBody& body = *simulation->system().bodies()[r.body];
+          const double* y = simulation->state().data();
+          centre = Eigen::Vector3d(body.r(y)) + body.orientation(y) * r.centre;
+        }
         const CachedSid sid = cache.fine(scene_.bodies[r.body].model_file, r.request);
         fine_scene.bodies[r.body].sid_file = sid.file;
         refined.push_back(r.body);
