@@ -45,8 +45,6 @@ Joint::Joint(const JointSpec& spec, const std::vector<std::unique_ptr<FloatingBo
     }
     for (std::size_t i = 0; i < bodies.size(); ++i)
       if (bodies[i]->name() == body) a.body = bodies[i].get(), a.index = i;
-    if (a.body->n_quasistatic() > 0)
-      fail(field, "body '" + body + "' has quasistatic high modes; joints need every mode integrated (high_modes = \"dynamic\")");
     const Matrix3d A = a.body->orientation(y0).toRotationMatrix();
     if (node.empty()) {  // a rigid body, at the joint's point
       a.point = A.transpose() * (point - a.body->r(y0));
@@ -58,6 +56,11 @@ Joint::Joint(const JointSpec& spec, const std::vector<std::unique_ptr<FloatingBo
     a.point = n->origin.M0.col(0);
     a.phi = n->phi;
     a.psi = n->psi;
+    // the joint holds the node as the integrated modes move it: quasistatic modes (solved
+    // from the contacts alone) neither load it nor move it, see joint.hpp
+    const Eigen::Index nqs = a.body->n_quasistatic();
+    a.phi.rightCols(nqs).setZero();
+    a.psi.rightCols(nqs).setZero();
     return a;
   };
   sides_[0] = attach(spec.body, spec.node, "body");

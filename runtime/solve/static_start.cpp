@@ -9,22 +9,36 @@
 namespace isosid::run {
 
 void settle_static_start(const MultibodySystem& system, const std::vector<bool>& static_start, double* y) {
-  // unknowns per flagged body: its integrated modes, then a translation and a rotation of its frame
+  // unknowns per flagged body: its integrated modes, then a translation and a rotation of its
+  // frame; a body jointed to one of them (directly or along a chain) moves its frame only, so
+  // that the flagged bodies' deflection does not pull the joints apart (a rigid ball hanging
+  // from a sagging rod follows it)
   struct Unknowns {
     const FloatingBody* body;
+    Eigen::Index modes;           ///< its integrated modes if flagged, else 0
     Eigen::Index first;           ///< its first unknown
     Eigen::Index first_equation;  ///< its first acceleration among the equations
   };
+  std::vector<bool> moves(static_start);
+  for (bool grown = true; grown;) {
+    grown = false;
+    for (const Joint& j : system.joints().joints()) {
+      if (!j.side(0).body || !j.side(1).body) continue;
+      const std::size_t a = j.side(0).index, b = j.side(1).index;
+      if (moves[a] != moves[b]) moves[a] = moves[b] = true, grown = true;
+    }
+  }
   std::vector<Unknowns> bodies;
   Eigen::Index n = 0, accelerations = 0;
   for (std::size_t i = 0; i < system.bodies().size(); ++i) {
-    if (!static_start[i]) continue;
+    if (!moves[i]) continue;
     const FloatingBody& b = *system.bodies()[i];
-    bodies.push_back({&b, n, accelerations});
-    n += b.n_dynamic() + 6;
-    accelerations += b.n_dynamic();
+    const Eigen::Index modes = static_start[i] ? b.n_dynamic() : 0;
+    bodies.push_back({&b, modes, n, accelerations});
+    n += modes + 6;
+    accelerations += modes;
   }
-  if (bodies.empty()) return;
+  if (accelerations == 0) return;
   std::vector<const Joint*> joints;  // those holding a settled body
   Eigen::Index rows = accelerations;
   for (const Joint& j : system.joints().joints())
@@ -43,7 +57,7 @@ void settle_static_start(const MultibodySystem& system, const std::vector<bool>&
     Eigen::Map<Eigen::VectorXd>(y, system.size()) = y0;
     for (const Unknowns& u : bodies) {
       const FloatingBody& b = *u.body;
-      const Eigen::Index s = b.offset(), nd = b.n_dynamic();
+      const Eigen::Index s = b.offset(), nd = u.modes;
       Eigen::Map<Eigen::VectorXd>(y + s + 7, nd) = xx.segment(u.first, nd);
       Eigen::Map<Eigen::Vector3d>(y + s) += xx.segment<3>(u.first + nd);
       const Eigen::Vector3d turn = xx.segment<3>(u.first + nd + 3);
@@ -58,7 +72,7 @@ void settle_static_start(const MultibodySystem& system, const std::vector<bool>&
     system.rhs(0, y, ydot.data());
     out.resize(rows);
     for (const Unknowns& u : bodies) {
-      const Eigen::Index nd = u.body->n_dynamic();
+      const Eigen::Index nd = u.modes;
       out.segment(u.first_equation, nd) = ydot.segment(u.body->offset() + 13 + nd, nd);
     }
     Eigen::Index at = accelerations;
@@ -69,7 +83,7 @@ void settle_static_start(const MultibodySystem& system, const std::vector<bool>&
   Eigen::VectorXd F, shifted, scale(n);
   equations(x, F);
   for (const Unknowns& u : bodies) {
-    const Eigen::Index nd = u.body->n_dynamic();
+    const Eigen::Index nd = u.modes;
     for (Eigen::Index j = 0; j < nd; ++j) scale(u.first + j) = std::max(std::abs(F(u.first_equation + j)) / u.body->sid().Ke.M0(j, j), 1e-300);
     scale.segment<6>(u.first + nd).setConstant(1e-3);  // h = 1e-9 m and rad
   }

@@ -2,8 +2,8 @@
 // deflection under everything acting at the initial state (gravity, joints, spin, contact), so
 // a mechanism released under gravity does not start ringing about it. Their integrated modes
 // move to where their accelerations vanish, and their frames with them so that every joint
-// holds (a clamped node stays where it was placed); the frame's remaining freedom (a pendulum's
-// swing) is left as given.
+// holds (a clamped node stays where it was placed), and the frames of the bodies jointed to
+// them follow; the frames' remaining freedom (a pendulum's swing) is left as given.
 #pragma once
 #include "solve/multibody_system.hpp"
 

@@ -237,26 +237,33 @@ TEST_CASE("joints: a flexible beam swings from a SID node with the rigid pendulu
   const double period = 2 * M_PI * std::sqrt((J_zz + m * d * d) / (m * kG * d)) * (1 + theta * theta / 16);
   const Eigen::Matrix3d A = Eigen::AngleAxisd(M_PI / 2 + theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   const Eigen::Vector3d r = -A * pivot_local;  // the node at the world origin
-  const isosid::test::ScratchDir dir("joint-beam");
-  const json s = run_scene(dir, simulation(period, 1e-9) + R"(
+  // with its modes integrated, and with all of them quasistatic (as an adaptive body's refined
+  // model has them): the joint then holds the node as the frame moves it (joint/joint.hpp)
+  for (const std::string modes : {"", "high_modes = \"quasistatic\"\nquasistatic_above_hz = 100.0\n"}) {
+    INFO(modes);
+    const isosid::test::ScratchDir dir(modes.empty() ? "joint-beam" : "joint-beam-quasistatic");
+    const json s = run_scene(dir, simulation(period, 1e-9) + R"(
 [[flexible_body]]
 name = "beam"
 sid = ")" + kGolden + R"(/beam_small.sid.h5"
 position = )" + vec(r) + R"(
 orientation = [0.0, 0.0, )" + number(M_PI / 2 + theta) + R"(]
-[[joint]]
+)" + modes + R"([[joint]]
 name = "pivot"
 type = "spherical"
 body = "beam"
 node = "end"
 )");
-  // back where it started after one period, to 1e-6 of its swing, and at rest
-  const Eigen::Vector3d r_end = final_position(s, 0);
-  const Eigen::Vector3d v_end = final_velocity(s, 0);
-  CHECK((r_end - r).norm() < 1e-6 * theta * d);
-  CHECK(v_end.norm() < 1e-5 * theta * std::sqrt(kG * d));
-  CHECK(s["joints"][0]["max_position_error_m"].get<double>() < 1e-10);
-  CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-8);
+    REQUIRE(s.is_object());
+    CHECK(s["bodies"][0]["quasistatic_modes"].get<int>() == (modes.empty() ? 0 : 6));
+    // back where it started after one period, to 1e-6 of its swing, and at rest
+    const Eigen::Vector3d r_end = final_position(s, 0);
+    const Eigen::Vector3d v_end = final_velocity(s, 0);
+    CHECK((r_end - r).norm() < 1e-6 * theta * d);
+    CHECK(v_end.norm() < 1e-5 * theta * std::sqrt(kG * d));
+    CHECK(s["joints"][0]["max_position_error_m"].get<double>() < 1e-10);
+    CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-8);
+  }
 }
 
 TEST_CASE("joints: a clamped beam with a static start stays at rest in its deflection", "[runtime][joint]") {
@@ -299,10 +306,12 @@ node = "end"
         REQUIRE(rest_motion > 0);  // the undeformed start does ring
         continue;
       }
-      // the deflection is there, and nothing moves: 1e-8 of the ringing of the undeformed start
-      // leaves room for the static solve's tolerance (1e-10 of the accelerations it removes)
+      // the deflection is there, and nothing moves: what moves is what the static solve leaves
+      // in the accelerations, down to its round-off floor (accepted up to 1e-7 of those it
+      // removes; Newton's best iterate lands between 1.5e-10 and 4e-9 of them here, depending
+      // on the rounding of the joint reactions, and the motion follows at about 5x that)
       CHECK(q.row(0).cwiseAbs().maxCoeff() > 0.1 * rest_motion);
-      CHECK(motion < 1e-8 * rest_motion);
+      CHECK(motion < 1e-6 * rest_motion);
       CHECK(v.cwiseAbs().maxCoeff() < 1e-9);
       // the clamp carries the weight to what the static solve leaves in the accelerations (its
       // round-off floor may stand up to 1e-7 of those it removed; measured 1.2e-8 horizontal)
