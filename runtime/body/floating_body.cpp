@@ -213,36 +213,53 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
     A6.bottomRightCorner<3, 3>() = sid_.J.M0;
   }
 
-  // with Me = I: (A6 - B^T B) x = hr - B^T hq on the unlocked rigid DOFs, then qddot = hq - B x,
-  // over the dynamic modes only (quasistatic modes carry no inertia)
+  // the rigid DOFs' Schur complement A6 - B^T B (Me = I), over the dynamic modes only
+  // (quasistatic modes carry no inertia)
   const auto Bd = B.topRows(nd);
   const auto hd = hq.head(nd);
-  Eigen::Matrix<double, 6, 1> x = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Matrix<double, 6, 6> S = A6;
   S.noalias() -= Bd.transpose() * Bd;
-  Eigen::Matrix<double, 6, 1> rhs = hr;
-  rhs.noalias() -= Bd.transpose() * hd;
   int free_dofs[6], nf = 0;
   for (int i = 0; i < 6; ++i)
     if (!locked_[std::size_t(i)]) free_dofs[nf++] = i;
+  // kept for load_response(): the mass matrix at y, factored once
+  mass_.free = nf;
+  for (int i = 0; i < nf; ++i) mass_.free_dofs[i] = free_dofs[i];
   if (nf > 0) {
-    using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;  // on the stack
-    using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
-    Small Sf(nf, nf);
-    SmallVector rf(nf);
-    for (int i = 0; i < nf; ++i) {
-      rf(i) = rhs(free_dofs[i]);
+    MassFactor::Small Sf(nf, nf);
+    for (int i = 0; i < nf; ++i)
       for (int j = 0; j < nf; ++j) Sf(i, j) = S(free_dofs[i], free_dofs[j]);
-    }
-    const SmallVector xf = Eigen::LDLT<Small>(Sf).solve(rf);
-    for (int i = 0; i < nf; ++i) x(free_dofs[i]) = xf(i);
+    mass_.S.compute(Sf);
   }
-  Eigen::Map<Vector3d>(d + 7 + nd) = A * x.head<3>();  // v' = A a_K
+  mass_.A = A;
+  mass_.B = Bd;
+  accelerations_from(hr, hd, d);
+  return damping_.quadratic_form(qd);
+}
+
+void FloatingBody::accelerations_from(const Eigen::Matrix<double, 6, 1>& hr, const Eigen::Ref<const VectorXd>& hd, double* d) const {
+  // with Me = I: (A6 - B^T B) x = hr - B^T hd on the unlocked rigid DOFs, then qddot = hd - B x
+  const Index nd = n_dynamic_;
+  Eigen::Matrix<double, 6, 1> rhs = hr;
+  rhs.noalias() -= mass_.B.transpose() * hd;
+  Eigen::Matrix<double, 6, 1> x = Eigen::Matrix<double, 6, 1>::Zero();
+  if (mass_.free > 0) {
+    MassFactor::SmallVector rf(mass_.free);
+    for (int i = 0; i < mass_.free; ++i) rf(i) = rhs(mass_.free_dofs[i]);
+    const MassFactor::SmallVector xf = mass_.S.solve(rf);
+    for (int i = 0; i < mass_.free; ++i) x(mass_.free_dofs[i]) = xf(i);
+  }
+  Eigen::Map<Vector3d>(d + 7 + nd) = mass_.A * x.head<3>();  // v' = A a_K
   Eigen::Map<Vector3d>(d + 10 + nd) = x.tail<3>();
   Eigen::Map<VectorXd> qddot(d + 13 + nd, nd);
   qddot = hd;
-  qddot.noalias() -= Bd * x;
-  return damping_.quadratic_form(qd);
+  qddot.noalias() -= mass_.B * x;
+}
+
+void FloatingBody::load_response(const GeneralizedForce& load, double* ydot) const {
+  Eigen::Matrix<double, 6, 1> hr;
+  hr << load.force, load.torque;
+  accelerations_from(hr, load.elastic.head(n_dynamic_), ydot + offset_);
 }
 
 void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, const Vector3d& w, Eigen::Ref<VectorXd> out) const {

@@ -87,6 +87,11 @@ public:
   /// dissipated power of the modal damping.
   double derivatives(const double* y, const GeneralizedForce& applied, const Eigen::Vector3d& gravity, double* ydot) const;
 
+  /// The accelerations (into ydot, the whole system's derivative, at this body's velocity
+  /// rates) that `load` alone adds, with the mass matrix of the last derivatives() call: the
+  /// response is linear in the load (joint reactions are solved from it).
+  void load_response(const GeneralizedForce& load, double* ydot) const;
+
   /// Adds the loads on the quasistatic modes at y that do not depend on them to out
   /// (n_quasistatic entries): the rotation loads (-Ge(qdot) w - Oe(q) w^2, a spinning body's
   /// centrifugal deformation) and, where Ke couples them to the integrated modes (a MacNeal
@@ -141,6 +146,20 @@ private:
   Eigen::Index n_dynamic_ = 0;
   Eigen::Index n_inertial_ = 0;  ///< leading coordinates the inertia terms involve (all but a massless boundary)
   Eigen::Index quasistatic_offset_ = 0;
+  /// The mass matrix at the last derivatives() call, factored: A6 - B^T B on the unlocked
+  /// rigid DOFs (its Schur complement), B over the dynamic modes, and the orientation.
+  struct MassFactor {
+    using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;  // on the stack
+    using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+    Eigen::LDLT<Small> S;
+    int free_dofs[6] = {0, 0, 0, 0, 0, 0};
+    int free = 0;
+    Eigen::MatrixXd B;
+    Eigen::Matrix3d A = Eigen::Matrix3d::Identity();
+  };
+  /// ydot's velocity rates from the generalized loads hr (rigid) and hd (dynamic modes).
+  void accelerations_from(const Eigen::Matrix<double, 6, 1>& hr, const Eigen::Ref<const Eigen::VectorXd>& hd, double* d) const;
+  mutable MassFactor mass_;
   mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
   // workspace of derivatives(): [Ct(q) Cr(q)], Ge(qdot), Oe(q), h_q
   mutable Eigen::MatrixXd B_, Ge_, Oe_;

@@ -39,7 +39,7 @@ void JointConstraints::refuse_redundant_rows(const std::vector<std::unique_ptr<F
   for (const Joint& j : joints_)
     for (int s = 0; s < 2; ++s)
       if (const FloatingBody* b = j.side(s).body) b->derivatives(y0, none[j.side(s).index], gravity, base_.data());
-  assemble_response(y0, gravity, none);
+  assemble_response(y0);
   // rows no body can move (a planar scene's out-of-plane rows) are left out; among the others a
   // dependent row is one the other joints already impose: their reactions would not be unique
   const double largest = response_.diagonal().cwiseAbs().maxCoeff();
@@ -82,7 +82,7 @@ void JointConstraints::apply(const double* y, const Eigen::Vector3d& gravity, st
   Eigen::VectorXd residual(rows_);
   for (std::size_t k = 0; k < joints_.size(); ++k)
     residual.segment(first_row_[k], joints_[k].rows()) = joints_[k].stabilized_acceleration(y, base_.data(), rate_);
-  assemble_response(y, gravity, forces);
+  assemble_response(y);
   // rows no body can move (a planar scene's out-of-plane rows) have no response: least squares
   lambda_ = response_.completeOrthogonalDecomposition().solve(-residual);
   for (std::size_t k = 0; k < joints_.size(); ++k)
@@ -91,20 +91,17 @@ void JointConstraints::apply(const double* y, const Eigen::Vector3d& gravity, st
         if (joints_[k].side(s).body) joints_[k].add_load(s, row, lambda_(first_row_[k] + row), y, forces[joints_[k].side(s).index]);
 }
 
-void JointConstraints::assemble_response(const double* y, const Eigen::Vector3d& gravity, const std::vector<GeneralizedForce>& forces) const {
-  // the rows' response to each row's unit reaction, through the bodies it loads (base_ holds
-  // the accelerations without it)
+void JointConstraints::assemble_response(const double* y) const {
+  // the rows' response to each row's unit reaction, through the bodies it loads
   response_.setZero();
   for (std::size_t k = 0; k < joints_.size(); ++k)
     for (int row = 0; row < joints_[k].rows(); ++row)
       for (int s = 0; s < 2; ++s) {
         const FloatingBody* b = joints_[k].side(s).body;
         if (!b) continue;
-        const std::size_t index = joints_[k].side(s).index;
-        unit_ = forces[index];
+        unit_.reset(b->nq());
         joints_[k].add_load(s, row, 1.0, y, unit_);
-        b->derivatives(y, unit_, gravity, loaded_.data());
-        loaded_.segment(b->offset(), b->state_size()) -= base_.segment(b->offset(), b->state_size());
+        b->load_response(unit_, loaded_.data());  // the mass matrix of the derivatives at y above
         // every joint row that moves with this body
         for (std::size_t i = 0; i < joints_.size(); ++i)
           for (int t = 0; t < 2; ++t)

@@ -22,9 +22,9 @@ public:
   std::pair<Eigen::Vector3d, Eigen::Vector3d> reaction(std::size_t k, const double* y) const;
 
 private:
-  /// response_ = the rows' accelerations per unit reaction of each row at y (base_ holding the
-  /// accelerations under `forces` alone).
-  void assemble_response(const double* y, const Eigen::Vector3d& gravity, const std::vector<GeneralizedForce>& forces) const;
+  /// response_ = the rows' accelerations per unit reaction of each row at y, through the mass
+  /// matrices of the jointed bodies' derivatives at y (evaluated just before).
+  void assemble_response(const double* y) const;
   /// InputError naming the joints if, at the start, some rows repeat what others impose (a
   /// rank-deficient constraint Jacobian: an over-constrained mechanism, reactions not unique).
   void refuse_redundant_rows(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const double* y0,
