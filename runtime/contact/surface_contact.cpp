@@ -10,6 +10,26 @@
 namespace isosid::run {
 
 namespace {
+/// The gap bounds start over once the slave has moved relative to the target by this fraction
+/// of its contact surface's radius: 9 um for a ball of 10 mm, some steps of an impact.
+constexpr double kRefreshPerRadius = 2e-3;
+
+/// A penalty point presses only inside the target: beyond a zero gap it does not matter.
+constexpr auto unpressed = [](Eigen::Index) { return 0.0; };
+constexpr auto never = [](Eigen::Index) { return false; };
+
+Eigen::VectorXd row_norms(const format::ContactSurface& surface, int dim) {
+  Eigen::VectorXd out(surface.points());
+  for (Eigen::Index g = 0; g < surface.points(); ++g) out(g) = surface.Psi.middleRows(g * dim, dim).norm();
+  return out;
+}
+
+double surface_radius(const format::ContactSurface& surface, int dim) {
+  if (surface.points() == 0) return 0;
+  const Eigen::RowVectorXd centre = surface.position.leftCols(dim).colwise().mean();
+  return (surface.position.leftCols(dim).rowwise() - centre).rowwise().norm().maxCoeff();
+}
+
 const format::ContactSurface& find_surface(const ContactSpec& spec, const FloatingBody& body) {
   const format::ContactSurface* s = body.contact_surface(spec.surface);
   if (!s) throw format::InputError(spec.name, "surface", "the SID of '" + body.name() + "' has no contact surface '" + spec.surface + "'");
@@ -18,15 +38,18 @@ const format::ContactSurface& find_surface(const ContactSpec& spec, const Floati
 }  // namespace
 
 SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body, const ContactTarget& target)
-    : spec_(spec), body_(body), target_(target), surface_(find_surface(spec, body)), dim_(body.sid().dim()) {
+    : spec_(spec), body_(body), target_(target), surface_(find_surface(spec, body)), dim_(body.sid().dim()),
+      bounds_(row_norms(surface_, dim_), kRefreshPerRadius * surface_radius(surface_, dim_)) {
   if (spec_.penalty <= 0) {  // none in the scene: derived from the materials and the contact resolution
     spec_.penalty = derived_penalty(0);
     penalty_source_ = "derived: 1000 E*/h";
   }
   edge_ = edge_points(surface_, body.sid().analysis);
-  quasistatic_rows_ = surface_.Psi.rightCols(body.n_quasistatic()).transpose();
+  shape_columns_ = surface_.Psi.transpose();
+  const Eigen::Index nh = body.n_quasistatic();
   quasistatic_row_norms_.resize(surface_.points());
-  for (Eigen::Index g = 0; g < surface_.points(); ++g) quasistatic_row_norms_(g) = quasistatic_rows_.middleCols(g * dim_, dim_).norm();
+  for (Eigen::Index g = 0; g < surface_.points(); ++g)
+    quasistatic_row_norms_(g) = shape_columns_.block(body.nq() - nh, g * dim_, nh, dim_).norm();
   hints_.assign(std::size_t(surface_.points()), Eigen::Vector2d::Constant(NAN));
   multiplier_.assign(std::size_t(surface_.points()), 0.0);
   updated_ = multiplier_;
@@ -53,23 +76,26 @@ void SurfaceContact::fit_penalty_to_contact_radius(double contact_radius) {
 
 template <class F>
 double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill, F&& f) const {
-  return for_each_point(y, fill, std::forward<F>(f), [](Eigen::Index) { return false; });
+  return for_each_point(y, fill, std::forward<F>(f), [](Eigen::Index) { return INFINITY; }, [](Eigen::Index) { return false; });
 }
 
-template <class F, class Skip>
-double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill, F&& f, Skip&& skip) const {
+template <class F, class Beyond, class Skip>
+double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill, F&& f, Beyond&& beyond, Skip&& skip) const {
   target_.update(y);
   const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
   const Eigen::Vector3d r = body_.r(y);
   // broad phase: |Psi_g q| <= |Psi_g|_F |q| bounds every point's displacement
   const Eigen::VectorXd& q = body_.q(y);
   const double clearance = target_.clearance(r + A * bound_center_, bound_radius_ + bound_growth_ * q.norm());
-  if (clearance > 0) return clearance;
-  displacement_.noalias() = surface_.Psi * q;  // all points in one product (row blocks would be strided)
+  if (clearance > 0) {
+    bounds_.invalidate();  // the points were not evaluated
+    return clearance;
+  }
   Eigen::Vector3d P = Eigen::Vector3d::Zero();
   Eigen::Vector3d plane_normal;
   double plane_offset = 0;
   if (target_.fixed_plane(plane_normal, plane_offset)) {
+    displacement_.noalias() = surface_.Psi * q;
     // a fixed plane: every gap is n . (r + A P) - offset, from the body-frame normal; the
     // target point is the projection (what ShapeTarget::project gives, without its dispatch)
     const Eigen::Vector3d n_body = A.transpose() * plane_normal;
@@ -85,11 +111,34 @@ double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill,
     }
     return clearance;
   }
+  const FloatingBody* master = target_.body();
+  const Eigen::Matrix3d A_target = master ? master->orientation(y).toRotationMatrix() : Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d r_target = master ? Eigen::Vector3d(master->r(y)) : Eigen::Vector3d::Zero();
+  static const Eigen::VectorXd kNone;
+  const Eigen::VectorXd& q_target = master ? master->q(y) : kNone;
+  if (!spec_.exact && bounds_.usable(r, A, q, r_target, A_target, q_target, target_.displacement_bound())) {
+    // the points the bounds cannot place beyond what the caller needs, each with its own rows
+    for (Eigen::Index g = 0; g < surface_.points(); ++g) {
+      if (bounds_.lower_bound(g) >= beyond(g) || skip(g)) continue;
+      for (int a = 0; a < dim_; ++a) P(a) = surface_.position(g, a) + shape_columns_.col(g * dim_ + a).dot(q);
+      if (target_.project(r + A * P, y, point_, hints_[std::size_t(g)], fill)) f(g, surface_.Psi.middleRows(g * dim_, dim_), P, A, point_);
+    }
+    return clearance;
+  }
+  // every point, in one product; their gaps bound them at the next states
+  displacement_.noalias() = surface_.Psi * q;  // all points in one product (row blocks would be strided)
+  bounds_.start(r, A, q, r_target, A_target, q_target);
   for (Eigen::Index g = 0; g < surface_.points(); ++g) {
-    if (skip(g)) continue;
+    if (skip(g)) continue;  // its gap stays unknown: it is evaluated at every state until the next reference
     const auto Psi = surface_.Psi.middleRows(g * dim_, dim_);
     P.head(dim_) = surface_.position.row(g).transpose() + displacement_.segment(g * dim_, dim_);
-    if (target_.project(r + A * P, y, point_, hints_[std::size_t(g)], fill)) f(g, Psi, P, A, point_);
+    const Eigen::Vector3d x = r + A * P;
+    if (target_.project(x, y, point_, hints_[std::size_t(g)], fill)) {
+      bounds_.record(g, point_.gap, P.norm());
+      f(g, Psi, P, A, point_);
+    } else {
+      bounds_.record(g, target_.clearance(x, 0), P.norm());  // beside the target: at least this far from it
+    }
   }
   return clearance;
 }
@@ -121,7 +170,7 @@ std::vector<PointLoad> SurfaceContact::point_loads(const double* y) const {
     if (p <= 0) return;
     Eigen::Vector3d vt;
     loads.push_back({r + A * P, point_force(g, p, Psi, P, y, t, vt), p, t.gap});
-  });
+  }, unpressed, never);
   return loads;
 }
 
@@ -144,7 +193,7 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
     s.max_penetration = std::max(s.max_penetration, -t.gap);
     // the energy of the actual penetration (exact contact: none once the gaps have closed)
     if (t.gap < 0) s.penalty_energy += 0.5 * spec_.penalty * t.gap * t.gap * w;
-  });
+  }, unpressed, never);
   return s;
 }
 
@@ -207,13 +256,13 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
       // the slave's block from its transposed quasistatic shape rows: contiguous per point
       const Eigen::Vector3d n_body = A.transpose() * t.normal, direction_body = A.transpose() * direction;
       for (int a = 0; a < dim_; ++a) {
-        const auto column = quasistatic_rows_.col(g * dim_ + a);
+        const auto column = shape_columns_.col(g * dim_ + a).tail(nh);
         terms.V.col(k).segment(at, nh).noalias() += n_body(a) * column;
         if (spec_.friction > 0) terms.T.col(k).segment(at, nh).noalias() += direction_body(a) * column;
       }
     }
     if (master_qs) add_target_side(t.Psi, t.normal, direction, k);
-  }, skip);
+  }, left_out_from, skip);
   if (clearance > 0) terms.unseen = true;
 }
 

@@ -9,6 +9,7 @@
 #pragma once
 #include "body/floating_body.hpp"
 #include "contact/contact_target.hpp"
+#include "contact/gap_bounds.hpp"
 #include "contact/quasistatic_terms.hpp"
 #include "scene/scene.hpp"
 
@@ -83,11 +84,15 @@ private:
   /// Calls f(g, Psi_g, P, A, target point) for every slave point that is a candidate:
   /// Psi_g its shape rows, P its body-frame position, A the slave's rotation; the target
   /// point filled as `fill` asks. Returns the broad-phase clearance (> 0: no point was visited).
+  /// Every candidate: for callers that need all gaps (the root functions must be continuous).
   template <class F>
   double for_each_point(const double* y, ContactTarget::Fill fill, F&& f) const;
-  /// The same, leaving out the points for which skip(g) holds (before projecting them).
-  template <class F, class Skip>
-  double for_each_point(const double* y, ContactTarget::Fill fill, F&& f, Skip&& skip) const;
+  /// The candidates that matter to a caller that ignores a point whose gap is at or beyond
+  /// `beyond(g)` (penalty loads: 0): points the gap bounds put there are left out unprojected
+  /// (contact/gap_bounds.hpp; not for exact contact, whose multipliers press at positive
+  /// gaps), and so are those for which skip(g) holds.
+  template <class F, class Beyond, class Skip>
+  double for_each_point(const double* y, ContactTarget::Fill fill, F&& f, Beyond&& beyond, Skip&& skip) const;
   /// What the poses and integrated coordinates of both bodies are at y: the quasistatic solve
   /// evaluates its terms many times at one y, changing only the quasistatic coordinates.
   void pose_key(const double* y, Eigen::VectorXd& key) const;
@@ -125,8 +130,9 @@ private:
   /// since cannot close (gaps move by at most the points' displacement bounds).
   mutable std::vector<double> free_gap_;
   mutable Eigen::VectorXd free_key_, key_, free_z_slave_, free_z_target_;
-  Eigen::MatrixXd quasistatic_rows_;             ///< the quasistatic columns of Psi, transposed (n_h x dim points)
+  Eigen::MatrixXd shape_columns_;                ///< Psi transposed (nq x dim points): each point's rows contiguous
   Eigen::VectorXd quasistatic_row_norms_;        ///< per point: the Frobenius norm of its quasistatic rows
+  GapBounds bounds_;                             ///< between full evaluations of the points
 };
 
 }  // namespace isosid::run
