@@ -58,6 +58,7 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
   peak_force_.assign(nc, 0);
   points_at_peak_.assign(nc, 0);
   edge_reached_.assign(nc, -1);
+  for (const HertzContact& h : system.hertz_contacts()) hertz_logs_.emplace_back(h);
   const std::size_t nj = system.joints().joints().size();
   joint_force_.resize(nj);
   joint_torque_.resize(nj);
@@ -107,6 +108,8 @@ void Recorder::sample(double t, const double* y) {
     contact_points_[k].push_back(states[k].active_points);
     contact_penetration_[k].push_back(states[k].max_penetration);
   }
+  const auto hertz = system_.hertz_states(y);
+  for (std::size_t k = 0; k < hertz.size(); ++k) hertz_logs_[k].sample(hertz[k]);
   const auto joints = system_.joint_states(y);
   for (std::size_t k = 0; k < joints.size(); ++k) {
     for (int a = 0; a < 3; ++a) joint_force_[k].push_back(joints[k].force(a)), joint_torque_[k].push_back(joints[k].torque(a));
@@ -138,6 +141,8 @@ void Recorder::step(double t, const double* y) {
     max_penetration_[k] = std::max(max_penetration_[k], states[k].max_penetration);
     if (states[k].edge_points > 0 && edge_reached_[k] < 0) edge_reached_[k] = t;
   }
+  const auto hertz = system_.hertz_states(y);
+  for (std::size_t k = 0; k < hertz.size(); ++k) hertz_logs_[k].step(t, y, hertz[k]);
   update_quasistatic_rates(t, y);
   for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
     if (scene_.monitors[m].quantity == "velocity") monitor_events_[m].add(t, monitor_value(m, y));
@@ -230,6 +235,7 @@ void Recorder::write_results(const std::string& path) const {
       w.vector(g + "/spectrum_amplitude", spectrum.amplitude_ns, "N s");
       if (impact_modes_[k] && impact_modes_[k]->report()) write_impact_modes(w, g + "/impact_modes", *impact_modes_[k]->report());
     }
+    for (const HertzContactLog& h : hertz_logs_) h.write(w);
     for (std::size_t k = 0; k < joint_force_.size(); ++k) {
       using Rows3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
       using Rows2 = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
@@ -339,6 +345,8 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     c["max_penetration_m"] = max_penetration_[k];
     j["contacts"].push_back(c);
   }
+  j["hertz_contacts"] = json::array();
+  for (const HertzContactLog& h : hertz_logs_) j["hertz_contacts"].push_back(h.summary());
   j["joints"] = json::array();
   for (std::size_t k = 0; k < joint_force_.size(); ++k) {
     double peak_force = 0, peak_torque = 0, position_error = 0, angle_error = 0;

@@ -4,6 +4,7 @@
 #pragma once
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
+#include "output/hertz_contact_log.hpp"
 #include "output/impact_modes.hpp"
 #include "output/stress_monitor.hpp"
 #include "output/velocity_events.hpp"
@@ -63,6 +64,7 @@ private:
   std::vector<std::vector<double>> body_q_;
   std::vector<std::vector<double>> contact_force_, contact_points_, contact_penetration_;
   std::vector<std::vector<double>> joint_force_, joint_torque_, joint_error_;  ///< per joint: 3, 3, 2 per sample
+  std::vector<HertzContactLog> hertz_logs_;
   std::vector<std::array<double, 6>> energies_;   ///< kinetic, elastic, gravity, penalty, dissipated, total
   std::vector<std::vector<double>> monitor_values_;  ///< per monitor: 3 per sample
   // per-step statistics

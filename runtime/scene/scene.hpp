@@ -2,6 +2,7 @@
 // monitors, integrator settings) and the reference values the results are compared with.
 #pragma once
 #include <Eigen/Dense>
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -98,6 +99,14 @@ struct ContactSpec {
   bool exact = false;
 };
 
+/// Hertz's law between two rigid spheres (contact/hertz_contact.hpp): seed 001's reference
+/// for sphere impacts, with each sphere's material.
+struct HertzContactSpec {
+  std::string name;
+  std::string body, target;  ///< rigid spheres
+  std::array<double, 2> youngs_modulus{}, poisson_ratio{};  ///< Pa, 1: of body and target
+};
+
 /// A joint between a body and another body or the ground (seed 001): both attachments
 /// coincide at the joint point; a revolute joint also keeps an axis aligned, a fixed joint the
 /// relative orientation.
@@ -141,6 +150,7 @@ struct Scene {
   std::vector<BodySpec> bodies;        ///< flexible bodies first, then rigid ones
   std::vector<ShapeSpec> fixed_surfaces;
   std::vector<ContactSpec> contacts;
+  std::vector<HertzContactSpec> hertz_contacts;
   std::vector<JointSpec> joints;
   std::vector<MonitorSpec> monitors;               ///< points
   std::vector<StressMonitorSpec> stress_monitors;  ///< [[monitor]] tables with `stress`

@@ -188,7 +188,7 @@ Scene read_scene_file(const std::string& path) {
   const toml::table root = common::parse_toml_file(path);
   const TomlView top(root, path);
   top.allow_only({"simulation", "flexible_body", "rigid_body", "fixed_plane", "fixed_sphere", "fixed_cylinder", "contact",
-                  "joint", "monitor", "reference", "output", "adaptive"});
+                  "hertz_contact", "joint", "monitor", "reference", "output", "adaptive"});
   Scene scene;
   scene.file = path;
   scene.simulation = read_simulation(top.table("simulation"));
@@ -297,6 +297,27 @@ Scene read_scene_file(const std::string& path) {
       c.fail("target_surface", "only a flexible target has contact surfaces");
     scene.contacts.push_back(s);
   }
+  for (const TomlView& c : top.tables("hertz_contact")) {
+    c.allow_only({"name", "body", "target", "youngs_modulus", "poisson_ratio", "target_youngs_modulus", "target_poisson_ratio"});
+    HertzContactSpec s;
+    s.name = unique(c);
+    s.body = c.string("body");
+    s.target = c.string("target");
+    for (const char* key : {"body", "target"}) {
+      const BodySpec* b = scene.body(c.string(key));
+      if (!b || !b->rigid || b->rigid->kind != RigidShape::Kind::Sphere)
+        c.fail(key, "no rigid_body sphere named '" + c.string(key) + "' (Hertz's law is between rigid spheres)");
+    }
+    if (s.body == s.target) c.fail("target", "a sphere cannot touch itself");
+    s.youngs_modulus[0] = c.positive("youngs_modulus");
+    s.poisson_ratio[0] = c.number("poisson_ratio");
+    s.youngs_modulus[1] = c.positive("target_youngs_modulus", s.youngs_modulus[0]);
+    s.poisson_ratio[1] = c.number("target_poisson_ratio", s.poisson_ratio[0]);
+    for (int side = 0; side < 2; ++side)
+      if (!(s.poisson_ratio[std::size_t(side)] > -1 && s.poisson_ratio[std::size_t(side)] < 0.5))
+        c.fail(side ? "target_poisson_ratio" : "poisson_ratio", "must lie in (-1, 0.5)");
+    scene.hertz_contacts.push_back(s);
+  }
   for (const TomlView& j : top.tables("joint")) {
     j.allow_only({"name", "type", "body", "node", "other", "other_node", "point", "axis"});
     JointSpec s;
@@ -333,8 +354,9 @@ Scene read_scene_file(const std::string& path) {
     s.axis = unit_vector(j, "axis", s.axis);
     scene.joints.push_back(s);
   }
-  if (std::none_of(scene.bodies.begin(), scene.bodies.end(), [](const BodySpec& b) { return !b.rigid; }) && scene.joints.empty())
-    top.fail("flexible_body", "a scene needs at least one flexible body (or a mechanism of rigid bodies and joints)");
+  if (std::none_of(scene.bodies.begin(), scene.bodies.end(), [](const BodySpec& b) { return !b.rigid; }) && scene.joints.empty() &&
+      scene.hertz_contacts.empty())
+    top.fail("flexible_body", "a scene needs at least one flexible body (or rigid bodies in joints or Hertz contacts)");
   for (const TomlView& m : top.tables("monitor")) {
     m.allow_only({"name", "body", "node", "surface", "parameter", "quantity", "stress"});
     const std::string name = unique(m);

@@ -42,6 +42,12 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   } catch (const format::InputError& e) {  // a surface the SID does not have: name the scene file
     throw format::InputError(scene.file, "contact " + c.name + "." + e.field(), e.problem());
   }
+  hertz_.reserve(scene.hertz_contacts.size());
+  for (const HertzContactSpec& h : scene.hertz_contacts) {
+    const std::size_t a = body_index(h.body), b = body_index(h.target);
+    hertz_.emplace_back(h, *bodies_[a], scene.body(h.body)->rigid->radius, *bodies_[b], scene.body(h.target)->rigid->radius);
+    hertz_bodies_.push_back({a, b});
+  }
   touches_.reserve(contacts_.size());
   for (const SurfaceContact& c : contacts_) {
     touches_.emplace_back(c);
@@ -181,6 +187,8 @@ void MultibodySystem::rhs(double, const double* y, double* ydot) const {
     dissipation += state.friction_power;
     cost_.active_points += state.active_points;
   }
+  for (std::size_t k = 0; k < hertz_.size(); ++k)
+    cost_.active_points += hertz_[k].apply(y, forces_[hertz_bodies_[k][0]], forces_[hertz_bodies_[k][1]]).active_points;
   lap(cost_.contacts_s);
   joints_->apply(y, gravity_, forces_);
   lap(cost_.joints_s);
@@ -259,6 +267,13 @@ std::vector<ContactState> MultibodySystem::contact_states(const double* y) const
   return out;
 }
 
+std::vector<ContactState> MultibodySystem::hertz_states(const double* y) const {
+  std::vector<ContactState> out;
+  GeneralizedForce a, b;
+  for (const HertzContact& h : hertz_) out.push_back(h.apply(y, a, b));
+  return out;
+}
+
 Energies MultibodySystem::energies(const double* y, const std::vector<ContactState>& states) const {
   Energies e;
   for (const auto& b : bodies_) {
@@ -267,6 +282,7 @@ Energies MultibodySystem::energies(const double* y, const std::vector<ContactSta
     e.gravity += b->gravity_potential(y, gravity_);
   }
   for (const ContactState& s : states) e.penalty += s.penalty_energy;
+  for (const ContactState& s : hertz_states(y)) e.penalty += s.penalty_energy;
   e.dissipated = y[size_ - 1];
   return e;
 }

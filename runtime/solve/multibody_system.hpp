@@ -4,6 +4,7 @@
 #pragma once
 #include "body/floating_body.hpp"
 #include "contact/contact_target.hpp"
+#include "contact/hertz_contact.hpp"
 #include "contact/impact_estimate.hpp"
 #include "contact/quasistatic_modes.hpp"
 #include "contact/surface_contact.hpp"
@@ -55,8 +56,12 @@ public:
   bool touch_armed(std::size_t k) const { return touch_state_[k] == TouchState::Armed; }
   /// Contact states at y (for output); also brings the quasistatic modes up to date for y.
   std::vector<ContactState> contact_states(const double* y) const;
-  /// Energies at y, given `states` = contact_states(y) (evaluated once for both).
+  /// Energies at y, given `states` = contact_states(y) (evaluated once for both); the Hertz
+  /// contacts' energies are added here.
   Energies energies(const double* y, const std::vector<ContactState>& states) const;
+  /// Hertz's law between rigid spheres, each contact's state at y.
+  const std::vector<HertzContact>& hertz_contacts() const { return hertz_; }
+  std::vector<ContactState> hertz_states(const double* y) const;
 
   const std::vector<std::unique_ptr<FloatingBody>>& bodies() const { return bodies_; }
   const std::vector<SurfaceContact>& contacts() const { return contacts_; }
@@ -107,6 +112,8 @@ private:
   std::vector<std::unique_ptr<FloatingBody>> bodies_;
   std::vector<std::unique_ptr<ContactTarget>> targets_;
   std::vector<SurfaceContact> contacts_;
+  std::vector<HertzContact> hertz_;
+  std::vector<std::array<std::size_t, 2>> hertz_bodies_;  ///< body indices of each Hertz contact's spheres
   std::vector<SurfaceTouch> touches_;         ///< per contact: its exact surfaces
   /// Armed: the touch gap is a root function; Found: held at 1 until the contact opens;
   /// Separating: opened, held at 1 until the surfaces are apart (then armed without a jump

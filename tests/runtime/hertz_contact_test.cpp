@@ -1,0 +1,162 @@
+// Hertz's law between rigid spheres (runtime/contact/hertz_contact, seed 001's reference model
+// "Hertz"): a head-on impact of two free spheres against the closed-form solution and bad
+// input; and the static start of a rigid ball hanging from a flexible rod (scene E's
+// pendulum), whose frame follows the rod's sag.
+#include "scene_runner.hpp"
+
+#include "isosid/format/hdf5_file.hpp"
+#include "isosid/format/sid_io.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+
+using nlohmann::json;
+using isosid::test::run_scene;
+
+namespace {
+std::string two_spheres(double v, const std::string& extra = "") {
+  return R"([simulation]
+dimension = "3d"
+end_time = 2e-4
+rtol = 1e-10
+atol = 1e-14
+max_step = 2e-8
+output_interval = 1e-6
+[[rigid_body]]
+name = "a"
+shape = "sphere"
+radius = 0.01
+density = 7850.0
+position = [-0.0100001, 0.0, 0.0]
+velocity = [)" + std::to_string(v) + R"(, 0.0, 0.0]
+[[rigid_body]]
+name = "b"
+shape = "sphere"
+radius = 0.01
+density = 7850.0
+position = [0.0100001, 0.0, 0.0]
+velocity = [)" + std::to_string(-v) + R"(, 0.0, 0.0]
+[[hertz_contact]]
+name = "ab"
+body = "a"
+target = "b"
+youngs_modulus = 2.1e11
+poisson_ratio = 0.3
+)" + extra;
+}
+}  // namespace
+
+TEST_CASE("hertz contact: two rigid spheres meet head-on as Hertz's solution says", "[runtime][hertz]") {
+  // Equal steel spheres r = 10 mm closing at 2 v: m* = m/2, R* = r/2, K = 4/3 E* sqrt(R*).
+  // Energy 1/2 m* (2v)^2 = 2/5 K d^(5/2) at the deepest overlap d; the contact lasts
+  // 2 (d / 2v) int_0^1 (1 - x^(5/2))^(-1/2) dx = (d / 2v) 0.8 B(2/5, 1/2) (Johnson 1985, 11.2).
+  const isosid::test::ScratchDir dir("hertz-two-spheres");
+  const double v = 0.5, r = 0.01, rho = 7850, E = 2.1e11, nu = 0.3;
+  const double m = rho * 4.0 / 3.0 * M_PI * r * r * r, m_star = m / 2, R_star = r / 2;
+  const double E_star = E / (2 * (1 - nu * nu)), K = 4.0 / 3.0 * E_star * std::sqrt(R_star);
+  const double d = std::pow(5.0 / 4.0 * m_star * 4 * v * v / K, 0.4);
+  const double beta = std::tgamma(0.4) * std::tgamma(0.5) / std::tgamma(0.9);
+  const double duration = d / (2 * v) * 0.8 * beta, peak = K * std::pow(d, 1.5);
+  const json s = run_scene(dir, two_spheres(v));
+  REQUIRE(s.is_object());
+  const json& h = s["hertz_contacts"][0];
+  REQUIRE(h["impacts"].size() == 1);
+  const json& impact = h["impacts"][0];
+  INFO("peak " << impact["peak_force_n"].get<double>() << " N (Hertz " << peak << "), duration "
+               << impact["duration_s"].get<double>() << " s (" << duration << ")");
+  // the stiffness itself to round-off
+  CHECK(h["stiffness_n_m1_5"].get<double>() == Approx(K).epsilon(1e-12));
+  // the peak is the largest force at the accepted steps (at most 20 ns apart, 1/3500 of the
+  // contact): sampled within (pi 20 ns / duration)^2 / 2 = 4e-7 of the true peak; the
+  // integration (rtol 1e-10) adds far less
+  CHECK(impact["peak_force_n"].get<double>() == Approx(peak).epsilon(2e-6));
+  // onset and release interpolate the gap linearly between steps where it moves at 2 v: exact
+  // but for its curvature, (2e-8 s)^2 x acceleration / 2v, about 1e-12 s each
+  CHECK(impact["duration_s"].get<double>() == Approx(duration).epsilon(1e-6));
+  CHECK(impact["start_s"].get<double>() == Approx(2e-7 / (2 * v)).epsilon(1e-6));
+  // elastic: the spheres swap their velocities; the energy (kinetic + Hertz) holds
+  CHECK(s["bodies"][0]["final_velocity"][0].get<double>() == Approx(-v).epsilon(1e-7));
+  CHECK(s["bodies"][1]["final_velocity"][0].get<double>() == Approx(v).epsilon(1e-7));
+  CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-8);
+  CHECK(impact["impulse_ns"].get<double>() == Approx(2 * m * v).epsilon(1e-5));
+}
+
+TEST_CASE("static start: a rigid ball hanging from a flexible rod follows its sag", "[runtime][hertz][joint]") {
+  // Scene E's pendulum rod (models/pendulum_rod.model.toml, 20 modes) hangs from a hinge at
+  // its top with a rigid ball hinged to its lower end. Started in its static deflection, the
+  // rod stretches under its own weight and the ball's; the ball's frame follows (the static
+  // start moves the frames of the bodies jointed to a settled one; held where it was placed,
+  // the ball would pull the hinge apart and no equilibrium exists). Then nothing moves and the
+  // top hinge carries both weights.
+  const isosid::test::ScratchDir dir("static-hanging-ball");
+  isosid::test::copy_model_file(dir, "pendulum_rod.model.toml");
+  const double m_ball = 0.1, g = 9.81;
+  const json s = run_scene(dir, R"([simulation]
+dimension = "3d"
+end_time = 2e-3
+rtol = 1e-9
+atol = 1e-13
+output_interval = 1e-5
+gravity = [0.0, -9.81, 0.0]
+[[flexible_body]]
+name = "rod"
+sid = "rod.sid.h5"
+model = "pendulum_rod.model.toml"
+position = [0.0, -0.4, 0.0]
+elastic_start = "static"
+[[rigid_body]]
+name = "ball"
+shape = "sphere"
+radius = 0.01
+mass = 0.1
+position = [0.0, -0.41, 0.0]
+[[joint]]
+name = "suspension"
+type = "revolute"
+body = "rod"
+node = "top"
+[[joint]]
+name = "elbow"
+type = "revolute"
+body = "rod"
+node = "bottom"
+other = "ball"
+point = [0.0, -0.4, 0.0]
+)");
+  REQUIRE(s.is_object());
+  const isosid::format::h5::Reader results(dir.path("out-s.scene.toml/results.h5"));
+  const Eigen::MatrixXd ball = results.matrix("/bodies/ball/position"), q = results.matrix("/bodies/rod/q");
+  const double sag = -0.41 - ball(0, 1);  // the ball's frame moved down with the rod's stretch
+  const double motion = (ball.rowwise() - ball.row(0)).cwiseAbs().maxCoeff();
+  const double ringing = (q.rowwise() - q.row(0)).cwiseAbs().maxCoeff();
+  INFO("sag " << sag << " m, ball motion " << motion << " m, rod modes move by " << ringing << " of " << q.row(0).cwiseAbs().maxCoeff());
+  // the stretch under the ball's weight alone is m g l / (E A) = 3.7e-8 m: the ball sits lower
+  // by about that, and stays there to a thousandth of it
+  CHECK(sag > 1e-8);
+  CHECK(sag < 1e-7);
+  CHECK(motion < 1e-3 * sag);
+  CHECK(ringing < 1e-3 * q.row(0).cwiseAbs().maxCoeff());
+  const auto& force = s["joints"][0]["final_force_n"];
+  const double rod_mass = isosid::format::read_sid(dir.path("rod.sid.h5")).refmod.mass;
+  // the weights, to the static solve's floor (1e-7 of the accelerations it removes)
+  CHECK(std::hypot(force[0].get<double>(), force[1].get<double>(), force[2].get<double>()) ==
+        Approx((rod_mass + m_ball) * g).epsilon(1e-6));
+}
+
+TEST_CASE("hertz contact: bad input is refused with exit 2", "[runtime][hertz][bad-input]") {
+  const isosid::test::ScratchDir dir("hertz-bad");
+  const std::string good = two_spheres(0.5);
+  struct Case {
+    const char *from, *to;
+  };
+  for (const Case& c : {Case{"target = \"b\"", "target = \"nobody\""},
+                        Case{"target = \"b\"", "target = \"a\""},
+                        Case{"poisson_ratio = 0.3", "poisson_ratio = 0.7"},
+                        Case{"youngs_modulus = 2.1e11", "youngs_modulus = -1.0"},
+                        Case{"poisson_ratio = 0.3", "poisson_ratio = 0.3\nfriction = 0.1"}}) {
+    INFO(c.to);
+    const std::string text = isosid::test::replace(good, c.from, c.to);
+    run_scene(dir, text, 2);  // exit 2 with one line naming the scene file and field
+  }
+}
