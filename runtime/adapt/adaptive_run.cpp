@@ -208,6 +208,13 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     if (!over) result.outcome = outcome;
     return std::make_tuple(over, std::move(summary), (std::filesystem::path(folder) / "results.h5").string());
   };
+  // a phase's results join the run's, unless it failed before its first step: then it holds
+  // only its start, where the phase before it ended, and that start may be non-finite (its
+  // folder keeps it)
+  auto keep = [&](const json& summary, const std::string& file) {
+    summaries.push_back(summary);
+    if (summary["status"] != "failed" || summary["steps"].get<long>() > 0) files.push_back(file);
+  };
   // the coarse phases' contacts are meant to be coarse: their resolution warnings say nothing
   auto drop_resolution_warnings = [](const MultibodySystem& system, json& summary) {
     for (std::size_t k = 0; k < system.contacts().size(); ++k)
@@ -231,8 +238,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     coarse_phase.after = last_impact;
     auto [over, summary, file] = run_phase(*simulation, coarse_phase, "coarse", entry, found, utilization, beyond);
     drop_resolution_warnings(simulation->system(), summary);
-    summaries.push_back(summary);
-    files.push_back(file);
+    keep(summary, file);
     log.push_back(entry);
     if (!over) break;
 
@@ -312,8 +318,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       log.push_back(try_entry);
       width[std::size_t(k)] = snapped_width(d.next_width);  // the next try, or the contact's next impact, starts from it
       if (accepted) {
-        summaries.push_back(impact_summary);
-        files.push_back(impact_file);
+        keep(impact_summary, impact_file);
         impact_over = ended;
         break;
       }

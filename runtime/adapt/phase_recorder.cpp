@@ -35,8 +35,14 @@ void PhaseRecorder::step(double t, const double* y) {
   Recorder::step(t, y);
   if (impact_.contact < 0) return;
   // a touch without load (grazing) is over once the surfaces are clearly apart (the phase
-  // starts with them touching, the gap within round-off of zero)
-  if (!loaded_ && system_.touch(std::size_t(impact_.contact), y).gap > 1e-3 * impact_.width) impact_over_ = true;
+  // starts with them touching, the gap within round-off of zero): by the exact surfaces'
+  // closest approach and by every contact point, so that a closest-point search that stopped
+  // short on the refined surfaces (a local minimum) cannot end an impact before it is loaded
+  if (!loaded_) {
+    const double apart = 1e-3 * impact_.width;
+    const std::size_t k = std::size_t(impact_.contact);
+    if (system_.touch(k, y).gap > apart && system_.contacts()[k].min_gap(y) > apart) impact_over_ = true;
+  }
   // the farthest loaded point from the region's centre, in the slave's frame (seed 001's utilization
   // of the contact interval, measured as a length: contact radius over half the width)
   const SurfaceContact& contact = system_.contacts()[std::size_t(impact_.contact)];

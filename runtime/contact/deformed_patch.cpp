@@ -137,6 +137,9 @@ bool DeformedPatch::newton_projection(const Eigen::Vector3d& x, Eigen::Vector2d&
       }
       step = -H.ldlt().solve(g);
     }
+    // a degenerate point (a pole's collapsed edge, a far point's singular Hessian) can make the
+    // step non-finite: a parameter that is no number must never reach the knot-span search
+    if (!step.allFinite()) return false;
     const Eigen::Vector2d before = u;
     for (int a = 0; a < pd; ++a) u(a) = std::clamp(u(a) + step(a), lower(a), upper(a));
     // A last step below 1e-9 of the parameter range is taken to first order: the position

@@ -62,8 +62,15 @@ const Touch& SurfaceTouch::evaluate(const double* y) const {
   Eigen::Vector3d plane_normal;
   double plane_offset = 0;
   const bool plane = contact_.target().fixed_plane(plane_normal, plane_offset);
+  // the last parameter whose point the target saw: where Newton steps off the target (beside
+  // its edge), the closest approach found so far stands instead of no touch at all
+  Eigen::Vector2d seen = u;
   for (int iteration = 0; iteration < 50; ++iteration) {
-    if (!distance(y, u, gap, gradient)) break;
+    if (!distance(y, u, gap, gradient)) {
+      u = seen;
+      break;
+    }
+    seen = u;
     Eigen::Matrix2d H = Eigen::Matrix2d::Identity();
     bool ok = true;
     for (int a = 0; a < pd && plane; ++a)
@@ -86,6 +93,7 @@ const Touch& SurfaceTouch::evaluate(const double* y) const {
       Eigen::LLT<Eigen::Matrix2d> llt(H);
       step = llt.info() == Eigen::Success ? Eigen::Vector2d(-llt.solve(gradient)) : Eigen::Vector2d(-0.1 * range.cwiseProduct(gradient.normalized()));
     }
+    if (!step.allFinite()) break;  // a degenerate point: keep the last finite parameter
     const Eigen::Vector2d next = clamp(u + step);
     const bool converged = ((next - u).cwiseQuotient(range)).cwiseAbs().maxCoeff() <= 1e-13;
     u = next;
