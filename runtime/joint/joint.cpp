@@ -136,8 +136,11 @@ Eigen::VectorXd Joint::row_acceleration(int s, const double* y, const double* de
   const BodyAccelerations acc = accelerations(b, delta);
   const Matrix3d A = b.orientation(y).toRotationMatrix();
   const Vector3d s_now = a.point + a.phi * b.q(y);
-  out.head<3>() = acc.a + A * (acc.alpha.cross(s_now) + a.phi * acc.qdd);
-  if (rotation_rows_) out.tail(rotation_rows_) = directions(y).rightCols(rotation_rows_).transpose() * (A * (acc.alpha + a.psi * acc.qdd));
+  // the accelerations of the integrated modes only (quasistatic ones are not in the state)
+  const Eigen::Index nd = b.n_dynamic();
+  out.head<3>() = acc.a + A * (acc.alpha.cross(s_now) + a.phi.leftCols(nd) * acc.qdd);
+  if (rotation_rows_)
+    out.tail(rotation_rows_) = directions(y).rightCols(rotation_rows_).transpose() * (A * (acc.alpha + a.psi.leftCols(nd) * acc.qdd));
   return out;
 }
 
