@@ -159,4 +159,7 @@ TEST_CASE("hertz contact: bad input is refused with exit 2", "[runtime][hertz][b
     const std::string text = isosid::test::replace(good, c.from, c.to);
     run_scene(dir, text, 2);  // exit 2 with one line naming the scene file and field
   }
+  // with an adaptive body: its phases' results would be joined without the Hertz contact
+  isosid::test::copy_model_file(dir, "pendulum_ball.model.toml");
+  run_scene(dir, good + "[[flexible_body]]\nname = \"ball\"\nmodel = \"pendulum_ball.model.toml\"\nadaptive = true\nposition = [0.0, 1.0, 0.0]\n", 2);
 }
