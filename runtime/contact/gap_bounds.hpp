@@ -21,6 +21,7 @@ namespace isosid::run {
 
 class GapBounds {
 public:
+  GapBounds() = default;  // no points
   /// `row_norms`: |Psi_g|_F per point; `refresh_distance`: how far the shared bound may grow, m.
   GapBounds(Eigen::VectorXd row_norms, double refresh_distance);
 
@@ -47,7 +48,7 @@ public:
 
 private:
   Eigen::VectorXd row_norms_;
-  double refresh_distance_;
+  double refresh_distance_ = 0;
   double largest_row_norm_ = 0;
   mutable bool valid_ = false;
   mutable Eigen::Matrix3d M_;    ///< reference A_t^T A_s

@@ -18,18 +18,6 @@ constexpr double kRefreshPerRadius = 2e-3;
 constexpr auto unpressed = [](Eigen::Index) { return 0.0; };
 constexpr auto never = [](Eigen::Index) { return false; };
 
-Eigen::VectorXd row_norms(const format::ContactSurface& surface, int dim) {
-  Eigen::VectorXd out(surface.points());
-  for (Eigen::Index g = 0; g < surface.points(); ++g) out(g) = surface.Psi.middleRows(g * dim, dim).norm();
-  return out;
-}
-
-double surface_radius(const format::ContactSurface& surface, int dim) {
-  if (surface.points() == 0) return 0;
-  const Eigen::RowVectorXd centre = surface.position.leftCols(dim).colwise().mean();
-  return (surface.position.leftCols(dim).rowwise() - centre).rowwise().norm().maxCoeff();
-}
-
 const format::ContactSurface& find_surface(const ContactSpec& spec, const FloatingBody& body) {
   const format::ContactSurface* s = body.contact_surface(spec.surface);
   if (!s) throw format::InputError(spec.name, "surface", "the SID of '" + body.name() + "' has no contact surface '" + spec.surface + "'");
@@ -38,8 +26,7 @@ const format::ContactSurface& find_surface(const ContactSpec& spec, const Floati
 }  // namespace
 
 SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body, const ContactTarget& target)
-    : spec_(spec), body_(body), target_(target), surface_(find_surface(spec, body)), dim_(body.sid().dim()),
-      bounds_(row_norms(surface_, dim_), kRefreshPerRadius * surface_radius(surface_, dim_)) {
+    : spec_(spec), body_(body), target_(target), surface_(find_surface(spec, body)), dim_(body.sid().dim()) {
   if (spec_.penalty <= 0) {  // none in the scene: derived from the materials and the contact resolution
     spec_.penalty = derived_penalty(0);
     penalty_source_ = "derived: 1000 E*/h";
@@ -55,10 +42,13 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
   updated_ = multiplier_;
   if (surface_.points() == 0) return;
   bound_center_.head(dim_) = surface_.position.colwise().mean().transpose();
+  Eigen::VectorXd row_norms(surface_.points());  // |Psi_g|_F: how far each point moves per unit |q|
   for (Eigen::Index g = 0; g < surface_.points(); ++g) {
     bound_radius_ = std::max(bound_radius_, (surface_.position.row(g).transpose() - bound_center_.head(dim_)).norm());
-    bound_growth_ = std::max(bound_growth_, surface_.Psi.middleRows(g * dim_, dim_).norm());
+    row_norms(g) = surface_.Psi.middleRows(g * dim_, dim_).norm();
   }
+  bound_growth_ = row_norms.maxCoeff();
+  bounds_ = GapBounds(std::move(row_norms), kRefreshPerRadius * bound_radius_);
 }
 
 double SurfaceContact::derived_penalty(double contact_radius) const {
