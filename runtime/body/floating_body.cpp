@@ -232,7 +232,6 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
     mass_.S.compute(Sf);
   }
   mass_.A = A;
-  mass_.B = Bd;
   accelerations_from(hr, hd, d);
   return damping_.quadratic_form(qd);
 }
@@ -241,7 +240,8 @@ void FloatingBody::accelerations_from(const Eigen::Matrix<double, 6, 1>& hr, con
   // with Me = I: (A6 - B^T B) x = hr - B^T hd on the unlocked rigid DOFs, then qddot = hd - B x
   const Index nd = n_dynamic_;
   Eigen::Matrix<double, 6, 1> rhs = hr;
-  rhs.noalias() -= mass_.B.transpose() * hd;
+  const auto Bd = B_.topRows(nd);  // [Ct, Cr] as derivatives() evaluated them (nothing else writes B_)
+  rhs.noalias() -= Bd.transpose() * hd;
   Eigen::Matrix<double, 6, 1> x = Eigen::Matrix<double, 6, 1>::Zero();
   if (mass_.free > 0) {
     MassFactor::SmallVector rf(mass_.free);
@@ -253,7 +253,7 @@ void FloatingBody::accelerations_from(const Eigen::Matrix<double, 6, 1>& hr, con
   Eigen::Map<Vector3d>(d + 10 + nd) = x.tail<3>();
   Eigen::Map<VectorXd> qddot(d + 13 + nd, nd);
   qddot = hd;
-  qddot.noalias() -= mass_.B * x;
+  qddot.noalias() -= Bd * x;
 }
 
 void FloatingBody::load_response(const GeneralizedForce& load, double* ydot) const {

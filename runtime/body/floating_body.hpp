@@ -147,14 +147,13 @@ private:
   Eigen::Index n_inertial_ = 0;  ///< leading coordinates the inertia terms involve (all but a massless boundary)
   Eigen::Index quasistatic_offset_ = 0;
   /// The mass matrix at the last derivatives() call, factored: A6 - B^T B on the unlocked
-  /// rigid DOFs (its Schur complement), B over the dynamic modes, and the orientation.
+  /// rigid DOFs (its Schur complement), and the orientation; B itself stays in B_.
   struct MassFactor {
     using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;  // on the stack
     using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
     Eigen::LDLT<Small> S;
     int free_dofs[6] = {0, 0, 0, 0, 0, 0};
     int free = 0;
-    Eigen::MatrixXd B;
     Eigen::Matrix3d A = Eigen::Matrix3d::Identity();
   };
   /// ydot's velocity rates from the generalized loads hr (rigid) and hd (dynamic modes).
