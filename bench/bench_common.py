@@ -38,6 +38,13 @@ def run_json(args, env=None):
     return json.loads(out.stdout)
 
 
+def run_scene(scene, out):
+    """Runs isosid-run on a scene file into the folder `out`, with the same build's isosid-prep
+    for the models it prepares; returns the run's summary."""
+    return run_json([os.path.join(BUILD, "runtime", "isosid-run"), "-q", "--json", scene, "-o", out],
+                    env=dict(os.environ, ISOSID_PREP=os.path.join(BUILD, "preprocess", "isosid-prep")))
+
+
 def update_section(name, body):
     """Replaces the text between <!-- name --> markers in RESULTS.md (appends if missing)."""
     text = open(RESULTS).read() if os.path.exists(RESULTS) else "# Benchmark results\n"
