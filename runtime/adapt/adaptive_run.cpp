@@ -2,6 +2,7 @@
 #include "adapt/adaptive_run.hpp"
 
 #include "adapt/model_cache.hpp"
+#include "adapt/penalty_search.hpp"
 #include "adapt/phase_recorder.hpp"
 #include "adapt/phase_results.hpp"
 #include "adapt/state_transfer.hpp"
@@ -38,6 +39,9 @@ using nlohmann::json;
 constexpr double kTargetUtilization = 0.7, kMinUtilization = 0.5, kMaxUtilization = 0.9;
 /// Tries of one impact before the last one is taken as it is.
 constexpr int kMaxTries = 4;
+/// Errors in one impact run before the next ends the run: the penalty is then down by two
+/// decades and more (seed 001's slow decrease has no limit).
+constexpr int kMaxPenaltyLowerings = 20;
 
 double total_energy(const MultibodySystem& system, const double* y) { return system.energies(y, system.contact_states(y)).total(); }
 
@@ -168,15 +172,30 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     adaptive_contact.push_back((slave && slave->adaptive) || (target && target->adaptive && !c.target_surface.empty()));
   }
   std::vector<double> width(scene_.contacts.size(), scene_.adaptive.interval_width);  // learned per contact
+  std::vector<std::optional<PenaltyFactor>> learned_penalty(scene_.contacts.size());  // the penalty search's, per contact
+  const bool search = scene_.adaptive.penalty_search;
 
   std::vector<json> summaries;        // of the phases that make up the run
   std::vector<std::string> files;
   json log = json::array();           // every phase run, tries included
+  json searches = json::array();      // the penalty searches (seed 001 Fig. 3)
   Result result;
   int phase = 0;
-  // runs one phase and writes its folder; true if it ended as the loop asked (a touch, an impact over)
-  auto run_phase = [&](Simulation& simulation, const PhaseRecorder::Impact& impact, const std::string& label, json& entry,
-                       std::optional<PhaseRecorder::Found>& found, double& utilization, bool& beyond) {
+  double probes_cpu = 0;
+  // runs one phase and writes its folder
+  struct PhaseRun {
+    bool over = false;  ///< it ended as the loop asked (a touch, an impact over, an error it stops on)
+    RunOutcome outcome;
+    json summary;
+    std::string file;
+    std::optional<PhaseRecorder::Found> found;
+    double utilization = 0;
+    bool beyond = false;
+    std::string error;               ///< PhaseRecorder::error
+    PhaseRecorder::Window window;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< impact phases: the region's centre at the end
+  };
+  auto run_phase = [&](Simulation& simulation, const PhaseRecorder::Impact& impact, const std::string& label, json& entry) {
     PhaseRecorder recorder(simulation, adaptive_contact, impact, stop_requested);
     if (phase == 0) {
       // the scene, its models and monitors (the recorder refuses those the models lack) are
@@ -185,30 +204,38 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       std::filesystem::remove_all(std::filesystem::path(out_dir_) / "phases");
     }
     const double start = simulation.time();
-    RunOutcome outcome = simulation.run(recorder);
-    const bool over = recorder.phase_over() && outcome.status == "interrupted";
-    if (over) outcome.status = "completed";
+    PhaseRun out;
+    out.outcome = simulation.run(recorder);
+    out.over = recorder.phase_over() && out.outcome.status == "interrupted";
+    if (out.over) out.outcome.status = "completed";
     char name[96];
     std::snprintf(name, sizeof name, "%02d-%s", phase++, label.c_str());
     const std::string folder = (std::filesystem::path(out_dir_) / "phases" / name).string();
     std::filesystem::create_directories(folder);
-    json summary = write_run_report(folder, recorder, simulation, outcome);
+    out.summary = write_run_report(folder, recorder, simulation, out.outcome);
     for (const PhaseRecorder::Found& other : recorder.overlapping())
-      summary["warnings"].push_back("contact '" + scene_.contacts[std::size_t(other.contact)].name + "' touched at t = " +
-                                    common::number_text(other.time) + " s during the impact of '" + scene_.contacts[std::size_t(impact.contact)].name +
-                                    "': it ran on that impact's models, not refined for it");
-    entry.update({{"folder", folder}, {"start_s", start}, {"end_s", simulation.time()}, {"status", outcome.status},
-                  {"steps", summary["steps"]}, {"cpu_time_s", outcome.cpu_time_s},
-                  {"energy_start_j", summary["energy"]["initial_j"]}, {"energy_end_j", summary["energy"]["final_j"]}});
-    if (impact.contact >= 0) entry["utilization"] = recorder.utilization();
+      out.summary["warnings"].push_back("contact '" + scene_.contacts[std::size_t(other.contact)].name + "' touched at t = " +
+                                        common::number_text(other.time) + " s during the impact of '" +
+                                        scene_.contacts[std::size_t(impact.contact)].name + "': it ran on that impact's models, not refined for it");
+    entry.update({{"folder", folder}, {"start_s", start}, {"end_s", simulation.time()}, {"status", out.outcome.status},
+                  {"steps", out.summary["steps"]}, {"cpu_time_s", out.outcome.cpu_time_s},
+                  {"energy_start_j", out.summary["energy"]["initial_j"]}, {"energy_end_j", out.summary["energy"]["final_j"]}});
+    if (impact.contact >= 0) {
+      entry["utilization"] = recorder.utilization();
+      entry["penalty_n_m3"] = simulation.system().contacts()[std::size_t(impact.contact)].penalty();
+      out.centre = recorder.region_centre(simulation.state().data());
+    }
+    if (!recorder.error().empty()) entry["error"] = recorder.error();
     if (!quiet_)
       std::fprintf(stderr, "isosid-run: phase %s from %.6g to %.6g s: %s, %ld steps\n", name, start, simulation.time(),
-                   outcome.status.c_str(), summary["steps"].get<long>());
-    found = recorder.found();
-    utilization = recorder.utilization();
-    beyond = recorder.beyond();
-    if (!over) result.outcome = outcome;
-    return std::make_tuple(over, std::move(summary), (std::filesystem::path(folder) / "results.h5").string());
+                   out.outcome.status.c_str(), out.summary["steps"].get<long>());
+    out.file = (std::filesystem::path(folder) / "results.h5").string();
+    out.found = recorder.found();
+    out.utilization = recorder.utilization();
+    out.beyond = recorder.beyond();
+    out.error = recorder.error();
+    out.window = recorder.window();
+    return out;
   };
   // a phase's results join the run's, unless it failed before its first step: then it holds
   // only its start, where the phase before it ended, and that start may be non-finite (its
@@ -227,25 +254,76 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       }
   };
 
+  // One run of an impact on `fine` (scene `fine_scene`, SIDs `fine_sids`), and with the
+  // penalty search its continuations after errors (seed 001 Fig. 3's slow decrease: the
+  // penalty one lower, on from the last good step). `fine` ends as the last part's simulation.
+  struct ImpactRun {
+    PhaseRun last;
+    std::vector<PhaseRun> parts;
+    std::vector<json> entries;  ///< the parts' log entries
+    double utilization = 0;     ///< the largest of the parts'
+    bool beyond = false;
+    PenaltyFactor penalty;      ///< of the last part
+    bool lowered = false;
+  };
+  auto run_impact = [&](std::unique_ptr<Simulation>& fine, Scene fine_scene, const std::vector<format::Sid>& fine_sids,
+                        PhaseRecorder::Impact impact, const std::string& label, json entry) {
+    ImpactRun out;
+    const std::size_t k = std::size_t(impact.contact);
+    out.penalty = PenaltyFactor(fine->system().contacts()[k].penalty());
+    for (int part = 0;; ++part) {
+      PhaseRun run = run_phase(*fine, impact, label + (part ? "-lowered" + std::to_string(part) : ""), entry);
+      out.utilization = std::max(out.utilization, run.utilization);
+      out.beyond = out.beyond || run.beyond;
+      // a first part that failed before its first step failed at the impact's start (a continued
+      // part's start is the good step of the error before it)
+      const bool failed = !run.over && run.outcome.status == "failed" && (part > 0 || run.summary["steps"].get<long>() > 0);
+      std::string error = !run.error.empty() ? run.error : failed ? run.outcome.failure : "";
+      out.parts.push_back(run);
+      if (error.empty() || !search || part == kMaxPenaltyLowerings) {
+        out.entries.push_back(entry);
+        out.last = run;
+        if (!run.error.empty()) out.last.over = false, out.last.outcome = {"failed", run.error};  // a last error ends the run
+        return out;
+      }
+      // the error's step stays; the run goes on from it with the penalty one lower
+      const PenaltyFactor lower = out.penalty.lowered();
+      entry["penalty_lowered"] = {{"error", error}, {"to_n_m3", lower.value()}};
+      out.entries.push_back(entry);
+      if (!quiet_)
+        std::fprintf(stderr, "isosid-run:   error at %.6g s (%s): penalty %.3g -> %.3g N/m^3, on from there\n", fine->time(), error.c_str(),
+                     out.penalty.value(), lower.value());
+      out.penalty = lower;
+      out.lowered = true;
+      fine_scene.contacts[k].penalty = lower.value();
+      impact.point = run.centre;
+      double change = 0;
+      fine = switch_models(*fine, fine_scene, fine_sids, std::vector<ElasticMap>(fine_sids.size()), change);
+      entry = {{"kind", "impact"}, {"contact", entry["contact"]}, {"try", entry["try"]}, {"continued", part + 1},
+               {"width_m", entry["width_m"]}, {"switch_energy_change", change}};
+    }
+  };
+
   auto simulation = std::make_unique<Simulation>(coarse, coarse_sids);
   int last_impact = -1;      // the contact of the impact before the coarse phase about to run
   double switch_energy = 0;  // of the switch into the phase about to run
   std::exception_ptr refusal;  // bad input met between phases: reported after the results so far
   for (;;) try {
     json entry = {{"kind", "coarse"}, {"switch_energy_change", switch_energy}};
-    std::optional<PhaseRecorder::Found> found;
-    double utilization = 0;
-    bool beyond = false;
     PhaseRecorder::Impact coarse_phase;
     coarse_phase.after = last_impact;
-    auto [over, summary, file] = run_phase(*simulation, coarse_phase, "coarse", entry, found, utilization, beyond);
-    drop_resolution_warnings(simulation->system(), summary);
-    keep(summary, file);
+    PhaseRun coarse_run = run_phase(*simulation, coarse_phase, "coarse", entry);
+    drop_resolution_warnings(simulation->system(), coarse_run.summary);
+    keep(coarse_run.summary, coarse_run.file);
     log.push_back(entry);
-    if (!over) break;
+    if (!coarse_run.over) {
+      result.outcome = coarse_run.outcome;
+      break;
+    }
 
     // a touch: the impact on models refined there, tried until the refined region fits
-    const int k = found->contact;
+    const PhaseRecorder::Found found = *coarse_run.found;
+    const int k = found.contact;
     const std::string contact = scene_.contacts[std::size_t(k)].name;
     if (!(width[std::size_t(k)] > 0)) {
       const auto estimate = estimate_impact(simulation->system().contacts()[std::size_t(k)], simulation->state().data());
@@ -253,20 +331,26 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
         throw format::InputError(scene_.file, "adaptive.interval_width", "needed: contact '" + contact + "' has no Hertz estimate at its touch");
       width[std::size_t(k)] = snapped_width(2 * estimate->contact_radius / kTargetUtilization);
     }
+    std::optional<PenaltyFactor> penalty = learned_penalty[std::size_t(k)];  // set by the first try if not learned
     std::unique_ptr<Simulation> fine;
     std::vector<format::Sid> fine_sids;
     std::vector<std::size_t> refined;
-    bool impact_over = false;
+    Scene fine_scene;
+    std::vector<ElasticMap> maps;
+    PhaseRecorder::Impact impact;
+    ImpactRun accepted;
+    std::size_t accepted_entries = 0;  // where the accepted try's entries start in the log
+    bool impact_over = false, interrupted = false;
     for (int attempt = 1; attempt <= kMaxTries; ++attempt) {
       const double w = width[std::size_t(k)];
-      Scene fine_scene = coarse;
+      fine_scene = coarse;
       fine_scene.simulation = scene_.simulation;  // the impact under the scene's own integrator
-      std::vector<ElasticMap> maps(simulation->system().bodies().size());
+      maps.assign(simulation->system().bodies().size(), ElasticMap());
       json requests = json::array();
       refined.clear();
-      Eigen::Vector3d centre = found->touch.point;  // the slave's refined region's centre, if it is refined
+      Eigen::Vector3d centre = found.touch.point;  // the slave's refined region's centre, if it is refined
       const std::size_t slave = simulation->system().body_index(scene_.contacts[std::size_t(k)].body);
-      for (const Refinement& r : refinements(scene_, simulation->system(), k, found->touch, w)) {
+      for (const Refinement& r : refinements(scene_, simulation->system(), k, found.touch, w)) {
         if (r.body == slave) {
           const FloatingBody& body = *simulation->system().bodies()[r.body];
           const double* y = simulation->state().data();
@@ -295,42 +379,115 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                                          "): clear the model cache " + scene_.adaptive.cache);
         maps[i] = f.transfer->coarse_to_fine;
       }
+      if (penalty) fine_scene.contacts[std::size_t(k)].penalty = penalty->value();
       double into = 0;
       fine = switch_models(*simulation, fine_scene, fine_sids, maps, into);
-      json try_entry = {{"kind", "impact"}, {"contact", contact}, {"try", attempt}, {"touch_s", found->time},
+      if (search && !penalty) {  // the search starts from the scene's penalty, or the one derived at the touch
+        penalty = PenaltyFactor(fine->system().contacts()[std::size_t(k)].penalty());
+        fine_scene.contacts[std::size_t(k)].penalty = penalty->value();
+      }
+      json try_entry = {{"kind", "impact"}, {"contact", contact}, {"try", attempt}, {"touch_s", found.time},
                         {"width_m", w}, {"refined", requests}, {"switch_energy_change", into}};
-      std::optional<PhaseRecorder::Found> unused;
-      auto [ended, impact_summary, impact_file] =
-          run_phase(*fine, {k, centre, w, attempt < kMaxTries}, "impact-" + contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""),
-                    try_entry, unused, utilization, beyond);
-      IntervalDecision d = decide_interval(utilization, beyond, w);
-      if (!ended) d = {true, w, "the run ended during the impact"};  // it keeps what it has
-      const bool accepted = d.acceptable || attempt == kMaxTries;
-      if (accepted && !d.acceptable)  // the last try ran the whole impact, beyond its region or not
-        impact_summary["warnings"].push_back("contact '" + contact + "': the refined region did not fit after " + std::to_string(kMaxTries) +
-                                             " tries (utilization " + std::to_string(int(std::lround(100 * utilization))) +
-                                             " %, " + d.reason + "): forces beyond it are not modelled");
-      try_entry.update({{"decision", d.reason}, {"accepted", accepted}, {"next_width_m", d.next_width}});
+      impact = {k, centre, w, attempt < kMaxTries, -1, PenaltySearch::kContactSteps, search};
+      ImpactRun run = run_impact(fine, fine_scene, fine_sids, impact, "impact-" + contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""),
+                                 try_entry);
+      if (search) penalty = run.penalty;  // lowered online: later tries start there
+      IntervalDecision d = decide_interval(run.utilization, run.beyond, w);
+      if (!run.last.over) d = {true, w, "the run ended during the impact"};  // it keeps what it has
+      const bool accepted_now = d.acceptable || attempt == kMaxTries;
+      if (accepted_now && !d.acceptable)  // the last try ran the whole impact, beyond its region or not
+        run.parts.back().summary["warnings"].push_back("contact '" + contact + "': the refined region did not fit after " + std::to_string(kMaxTries) +
+                                               " tries (utilization " + std::to_string(int(std::lround(100 * run.utilization))) +
+                                               " %, " + d.reason + "): forces beyond it are not modelled");
       if (!quiet_) {  // seed 001's Table 1, one line per try
         bool built = false;
         for (const auto& r : requests) built = built || !r["cache_hit"].get<bool>();
-        std::fprintf(stderr, "isosid-run:   try %d: width %.4g mm (%s), utilization %.0f %%, %s%s\n", attempt, 1e3 * w,
-                     built ? "built" : "cached", 100 * utilization, d.reason.c_str(), accepted ? "" : ": again");
+        std::fprintf(stderr, "isosid-run:   try %d: width %.4g mm (%s), penalty %.3g N/m^3, utilization %.0f %%, %s%s\n", attempt, 1e3 * w,
+                     built ? "built" : "cached", run.penalty.value(), 100 * run.utilization, d.reason.c_str(), accepted_now ? "" : ": again");
       }
-      log.push_back(try_entry);
+      accepted_entries = log.size();
+      for (json& e : run.entries) {
+        e.update({{"decision", d.reason}, {"accepted", accepted_now}, {"next_width_m", d.next_width}});
+        log.push_back(e);
+      }
       width[std::size_t(k)] = snapped_width(d.next_width);  // the next try, or the contact's next impact, starts from it
-      if (accepted) {
-        keep(impact_summary, impact_file);
-        impact_over = ended;
+      if (accepted_now) {
+        impact_over = run.last.over;
+        accepted = std::move(run);
         break;
       }
     }
-    if (!impact_over) break;
+
+    // seed 001 Fig. 3's quick increase, on the contact's first impact that ran without error:
+    // probes of the accepted model over the impact's first contact steps, ten times stiffer
+    // each, from the touch; a penalty other than the one run runs the impact again
+    if (impact_over && search && !learned_penalty[std::size_t(k)] && !accepted.lowered) {
+      PenaltySearch trial(*penalty);
+      const PhaseRecorder::Window& window = accepted.parts.front().window;
+      trial.record({*penalty, window.peak_force, window.steps, ""});
+      json probes = json::array({{{"penalty_n_m3", penalty->value()}, {"force_n", window.peak_force}, {"steps", window.steps},
+                                  {"from", "the accepted try"}}});
+      while (!trial.done()) {
+        Scene probe_scene = fine_scene;
+        probe_scene.contacts[std::size_t(k)].penalty = trial.next().value();
+        probe_scene.simulation.end_time = window.end;
+        double unused = 0;
+        auto probe = switch_models(*simulation, probe_scene, fine_sids, maps, unused);
+        PhaseRecorder::Impact probe_impact = impact;
+        probe_impact.stop_beyond = false;
+        PhaseRecorder recorder(*probe, adaptive_contact, probe_impact, stop_requested);
+        const RunOutcome o = probe->run(recorder);
+        if (stop_requested()) {  // a signal: the run ends after the impact it has
+          interrupted = true;
+          break;
+        }
+        const PenaltyProbe p{trial.next(), recorder.peak_force(k), probe->stats().steps,
+                             o.status == "failed" ? o.failure : recorder.error()};
+        trial.record(p);
+        probes_cpu += o.cpu_time_s;
+        probes.push_back({{"penalty_n_m3", p.penalty.value()}, {"force_n", p.force}, {"steps", p.steps}, {"cpu_time_s", o.cpu_time_s},
+                          {"error", trial.probes().back().error}});
+        if (!quiet_)
+          std::fprintf(stderr, "isosid-run:   penalty probe %.3g N/m^3: force %.6g N at %.6g s, %ld steps%s%s\n", p.penalty.value(), p.force,
+                       window.end, p.steps, trial.probes().back().error.empty() ? "" : ", error: ", trial.probes().back().error.c_str());
+      }
+      if (trial.done()) {
+        searches.push_back({{"contact", contact}, {"touch_s", found.time}, {"window_end_s", window.end}, {"probes", probes},
+                            {"penalty_n_m3", trial.result().value()}, {"decision", trial.reason()}});
+        if (!quiet_) std::fprintf(stderr, "isosid-run:   penalty %.3g N/m^3: %s\n", trial.result().value(), trial.reason().c_str());
+      }
+      if (trial.done() && trial.result().value() != penalty->value()) {  // the accepted try gives way to the impact at the found penalty
+        for (std::size_t e = accepted_entries; e < log.size(); ++e)
+          log[e]["accepted"] = false, log[e]["decision"] = log[e]["decision"].get<std::string>() + "; penalty changed";
+        fine_scene.contacts[std::size_t(k)].penalty = trial.result().value();
+        double into = 0;
+        fine = switch_models(*simulation, fine_scene, fine_sids, maps, into);
+        json entry = {{"kind", "impact"}, {"contact", contact}, {"try", "penalty"}, {"touch_s", found.time}, {"width_m", impact.width},
+                      {"switch_energy_change", into}};
+        impact.stop_beyond = false;  // the width stands
+        accepted = run_impact(fine, fine_scene, fine_sids, impact, "impact-" + contact + "-penalty", entry);
+        for (json& e : accepted.entries) {
+          e.update({{"decision", "the penalty search's"}, {"accepted", true}});
+          log.push_back(e);
+        }
+        impact_over = accepted.last.over;
+      }
+    }
+    for (const PhaseRun& part : accepted.parts) keep(part.summary, part.file);
+    if (search && penalty) learned_penalty[std::size_t(k)] = accepted.penalty;
+    if (interrupted) {
+      result.outcome = {"interrupted", ""};
+      break;
+    }
+    if (!impact_over) {
+      result.outcome = accepted.last.outcome;
+      break;
+    }
 
     // the impact is over: back to the coarse models
-    std::vector<ElasticMap> maps(fine->system().bodies().size());
-    for (std::size_t i : refined) maps[i] = fine_sids[i].transfer->fine_to_coarse;
-    simulation = switch_models(*fine, coarse, coarse_sids, maps, switch_energy);
+    std::vector<ElasticMap> back(fine->system().bodies().size());
+    for (std::size_t i : refined) back[i] = fine_sids[i].transfer->fine_to_coarse;
+    simulation = switch_models(*fine, coarse, coarse_sids, back, switch_energy);
     last_impact = k;
   } catch (const format::InputError& e) {  // e.g. a model isosid-prep cannot refine
     if (files.empty()) throw;                  // nothing to keep
@@ -343,7 +500,6 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     result.outcome = {stop_requested() ? "interrupted" : "failed", e.what()};
     break;
   }
-
   // the run's results from its phases
   const std::string results = (std::filesystem::path(out_dir_) / "results.h5").string();
   join_phase_results(files, results, scene_.simulation.output_interval);
@@ -359,9 +515,14 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       for (const auto& r : p["refined"]) preprocessing += r["preprocessing_s"].get<double>();
     if (p.contains("accepted") && !p["accepted"].get<bool>()) refused_tries += p["cpu_time_s"].get<double>();
   }
+  json penalties = json::object();
+  for (std::size_t k = 0; k < learned_penalty.size(); ++k)
+    if (learned_penalty[k]) penalties[scene_.contacts[k].name] = learned_penalty[k]->value();
   summary["adaptive"] = {{"cache", scene_.adaptive.cache},   {"builds", cache.builds()},
                          {"cache_hits", cache.hits()},       {"preprocessing_wall_s", preprocessing},
-                         {"refused_tries_cpu_s", refused_tries}, {"phases", log}};
+                         {"refused_tries_cpu_s", refused_tries}, {"penalty_probes_cpu_s", probes_cpu},
+                         {"penalty_search", search},         {"penalties_n_m3", penalties}, {"penalty_searches", searches},
+                         {"phases", log}};
   summary["reference"] = compare_with_reference(summary, scene_.reference);
   format::write_text_atomically((std::filesystem::path(out_dir_) / "summary.json").string(), summary.dump(2) + "\n");
   result.summary = summary;

@@ -1,14 +1,16 @@
 // A phase's observer; see phase_recorder.hpp.
 #include "adapt/phase_recorder.hpp"
 
+#include "isosid/common/number_text.hpp"
+
 #include <algorithm>
 
 namespace isosid::run {
 
 PhaseRecorder::PhaseRecorder(const Simulation& simulation, const std::vector<bool>& adaptive_contact, const Impact& impact,
                              const std::function<bool()>& stop_requested)
-    : Recorder(simulation.system(), simulation.scene()), system_(simulation.system()), adaptive_contact_(adaptive_contact),
-      impact_(impact), stop_requested_(stop_requested) {
+    : Recorder(simulation.system(), simulation.scene()), simulation_(simulation), system_(simulation.system()), adaptive_contact_(adaptive_contact),
+      impact_(impact), stop_requested_(stop_requested), restarts_at_start_(simulation.stats().restarts) {
   if (impact_.after >= 0) {  // its surfaces just parted: the next touch is a new impact once they are apart
     system_.touched(std::size_t(impact_.after));
     system_.released(std::size_t(impact_.after));
@@ -18,6 +20,11 @@ PhaseRecorder::PhaseRecorder(const Simulation& simulation, const std::vector<boo
   const FloatingBody& body = system_.contacts()[std::size_t(impact_.contact)].body();
   const double* y0 = simulation.state().data();
   touch_in_body_ = body.orientation(y0).conjugate() * (impact_.point - Eigen::Vector3d(body.r(y0)));
+}
+
+Eigen::Vector3d PhaseRecorder::region_centre(const double* y) const {
+  const FloatingBody& body = system_.contacts()[std::size_t(impact_.contact)].body();
+  return Eigen::Vector3d(body.r(y)) + body.orientation(y) * touch_in_body_;
 }
 
 void PhaseRecorder::touch(int k, double t, const Touch& touch) {
@@ -52,6 +59,12 @@ void PhaseRecorder::step(double t, const double* y) {
     reach_ = std::max(reach_, (frame.conjugate() * (p.position - origin) - touch_in_body_).norm());
   if (utilization() > 1) beyond_ = true;
   if (system_.touch_armed(std::size_t(impact_.contact))) impact_over_ = true;
+  ++steps_;
+  if (loaded_) ++contact_steps_;
+  if (contact_steps_ <= impact_.window_contact_steps)
+    window_ = {t, peak_force(impact_.contact), steps_};
+  if (impact_.stop_on_error && error_.empty() && simulation_.stats().restarts > restarts_at_start_)
+    error_ = "a quasistatic solve failed before t = " + common::number_text(t) + " s (its step was retried smaller)";
 }
 
 }  // namespace isosid::run

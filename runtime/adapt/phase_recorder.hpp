@@ -31,6 +31,12 @@ public:
     double width = 0;
     bool stop_beyond = true;  ///< stop once the load leaves the refined region (not on the last try)
     int after = -1;
+    /// The penalty probes' window (penalty_search.hpp): this many accepted steps since the
+    /// contact closed.
+    int window_contact_steps = 0;
+    /// Stop at the first accepted step after a quasistatic solve failed (a step retried
+    /// smaller): seed 001's error that lowers the penalty.
+    bool stop_on_error = false;
   };
   /// An impact phase starts where its contact's surfaces touch: that touch is taken as found,
   /// so the phase ends once they have been apart again after the contact opened.
@@ -44,8 +50,20 @@ public:
   void step(double t, const double* y) override;
   bool stop_requested() const override { return phase_over() || stop_requested_(); }
 
-  /// The phase ended as the loop asks (a touch, an impact over, the load beyond its region).
-  bool phase_over() const { return found_.has_value() || impact_over_ || (beyond_ && impact_.stop_beyond); }
+  /// The phase ended as the loop asks (a touch, an impact over, the load beyond its region, an
+  /// error).
+  bool phase_over() const { return found_.has_value() || impact_over_ || (beyond_ && impact_.stop_beyond) || !error_.empty(); }
+  /// Impact phases: the phase up to its window_contact_steps-th contact step (or so far, if
+  /// it has fewer): the step's time, the contact's largest force and the steps up to it.
+  struct Window {
+    double end = 0, peak_force = 0;
+    long steps = 0;
+  };
+  const Window& window() const { return window_; }
+  /// Impact phases: the refined region's centre in the world at state y (it moves with the slave).
+  Eigen::Vector3d region_centre(const double* y) const;
+  /// The error that stopped the phase (stop_on_error), empty if none.
+  const std::string& error() const { return error_; }
   /// Coarse phases: the touch that ended it.
   const std::optional<Found>& found() const { return found_; }
   /// Impact phases: the largest distance of a loaded point from the region's centre over half the width.
@@ -56,6 +74,7 @@ public:
   bool beyond() const { return beyond_; }
 
 private:
+  const Simulation& simulation_;
   const MultibodySystem& system_;
   const std::vector<bool>& adaptive_contact_;
   Impact impact_;
@@ -64,6 +83,11 @@ private:
   std::vector<Found> overlapping_;
   Eigen::Vector3d touch_in_body_ = Eigen::Vector3d::Zero();
   double reach_ = 0;
+  long restarts_at_start_ = 0;
+  int contact_steps_ = 0;
+  long steps_ = 0;
+  Window window_;
+  std::string error_;
   bool loaded_ = false, impact_over_ = false, beyond_ = false;
 };
 

@@ -44,6 +44,8 @@ public:
   /// energy balance, monitors and the signed relative errors against the scene's reference values.
   nlohmann::json summary(const IntegratorStats& stats, const RunOutcome& outcome, const double* y_final) const;
   double max_relative_energy_error() const;
+  /// Contact k's largest force over the accepted steps so far, N.
+  double peak_force(int k) const { return peak_force_[std::size_t(k)]; }
   /// The system's warnings, then what the run showed: contacts that reached the edge of
   /// their surface.
   std::vector<std::string> warnings() const;

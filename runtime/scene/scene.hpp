@@ -74,6 +74,10 @@ struct AdaptiveSettings {
   /// max_step unless given (seed 001 takes an implicit method with larger steps there)
   IntegratorKind coarse_integrator = IntegratorKind::DormandPrince;
   double coarse_max_step = 0;   ///< s
+  /// seed 001 Sect. 4.1: each contact's first impact tries its penalty ten times stiffer until
+  /// the force no longer changes, and errors lower it (adapt/penalty_search); false: the
+  /// contact's penalty (given or derived) as it is
+  bool penalty_search = true;
 };
 
 /// An analytic surface: fixed in the world, or the surface of a rigid body (in its frame).
