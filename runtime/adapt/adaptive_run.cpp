@@ -298,7 +298,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       fine_scene.contacts[k].penalty = lower.value();
       impact.point = run.centre;
       double change = 0;
-      fine = switch_models(*fine, fine_scene, fine_sids, std::vector<ElasticMap>(fine_sids.size()), change);
+      fine = switch_models(*fine, fine_scene, fine_sids, std::vector<ElasticMap>(fine->system().bodies().size()), change);
       entry = {{"kind", "impact"}, {"contact", entry["contact"]}, {"try", entry["try"]}, {"continued", part + 1},
                {"width_m", entry["width_m"]}, {"switch_energy_change", change}};
     }
