@@ -258,7 +258,8 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   // penalty search its continuations after errors (seed 001 Fig. 3's slow decrease: the
   // penalty one lower, on from the last good step). `fine` ends as the last part's simulation.
   struct ImpactRun {
-    PhaseRun last;
+    bool over = false;          ///< the impact ended as the loop asks (the last part's, unless it ended on an error)
+    RunOutcome outcome;         ///< of the last part (failed, if it ended on an error)
     std::vector<PhaseRun> parts;
     std::vector<json> entries;  ///< the parts' log entries
     double utilization = 0;     ///< the largest of the parts'
@@ -282,8 +283,8 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       out.parts.push_back(run);
       if (error.empty() || !search || part == kMaxPenaltyLowerings) {
         out.entries.push_back(entry);
-        out.last = run;
-        if (!run.error.empty()) out.last.over = false, out.last.outcome = {"failed", run.error};  // a last error ends the run
+        out.over = run.over && run.error.empty();  // a last error ends the run
+        out.outcome = run.error.empty() ? run.outcome : RunOutcome{"failed", run.error};
         return out;
       }
       // the error's step stays; the run goes on from it with the penalty one lower
@@ -393,7 +394,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                                  try_entry);
       if (search) penalty = run.penalty;  // lowered online: later tries start there
       IntervalDecision d = decide_interval(run.utilization, run.beyond, w);
-      if (!run.last.over) d = {true, w, "the run ended during the impact"};  // it keeps what it has
+      if (!run.over) d = {true, w, "the run ended during the impact"};  // it keeps what it has
       const bool accepted_now = d.acceptable || attempt == kMaxTries;
       if (accepted_now && !d.acceptable)  // the last try ran the whole impact, beyond its region or not
         run.parts.back().summary["warnings"].push_back("contact '" + contact + "': the refined region did not fit after " + std::to_string(kMaxTries) +
@@ -412,7 +413,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       }
       width[std::size_t(k)] = snapped_width(d.next_width);  // the next try, or the contact's next impact, starts from it
       if (accepted_now) {
-        impact_over = run.last.over;
+        impact_over = run.over;
         accepted = std::move(run);
         break;
       }
@@ -445,11 +446,12 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                              o.status == "failed" ? o.failure : recorder.error()};
         trial.record(p);
         probes_cpu += o.cpu_time_s;
+        const std::string& error = trial.probes().back().error;  // step growth included
         probes.push_back({{"penalty_n_m3", p.penalty.value()}, {"force_n", p.force}, {"steps", p.steps}, {"cpu_time_s", o.cpu_time_s},
-                          {"error", trial.probes().back().error}});
+                          {"error", error}});
         if (!quiet_)
           std::fprintf(stderr, "isosid-run:   penalty probe %.3g N/m^3: force %.6g N at %.6g s, %ld steps%s%s\n", p.penalty.value(), p.force,
-                       window.end, p.steps, trial.probes().back().error.empty() ? "" : ", error: ", trial.probes().back().error.c_str());
+                       window.end, p.steps, error.empty() ? "" : ", error: ", error.c_str());
       }
       if (trial.done()) {
         searches.push_back({{"contact", contact}, {"touch_s", found.time}, {"window_end_s", window.end}, {"probes", probes},
@@ -470,17 +472,17 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
           e.update({{"decision", "the penalty search's"}, {"accepted", true}});
           log.push_back(e);
         }
-        impact_over = accepted.last.over;
+        impact_over = accepted.over;
       }
     }
     for (const PhaseRun& part : accepted.parts) keep(part.summary, part.file);
-    if (search && penalty) learned_penalty[std::size_t(k)] = accepted.penalty;
+    if (search) learned_penalty[std::size_t(k)] = accepted.penalty;
     if (interrupted) {
       result.outcome = {"interrupted", ""};
       break;
     }
     if (!impact_over) {
-      result.outcome = accepted.last.outcome;
+      result.outcome = accepted.outcome;
       break;
     }
 

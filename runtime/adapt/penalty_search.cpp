@@ -20,12 +20,11 @@ PenaltyFactor PenaltyFactor::lowered() const {
 void PenaltySearch::record(PenaltyProbe probe) {
   using common::number_text;
   if (done_) return;
-  const PenaltyProbe* before = probes_.empty() ? nullptr : &probes_.back();
-  if (probe.error.empty() && before && probe.steps > kStepGrowth * before->steps)
-    probe.error = "steps grew from " + std::to_string(before->steps) + " to " + std::to_string(probe.steps);
-  probes_.push_back(probe);
+  probes_.push_back(std::move(probe));
   const PenaltyProbe& p = probes_.back();
-  before = probes_.size() > 1 ? &probes_[probes_.size() - 2] : nullptr;
+  const PenaltyProbe* before = probes_.size() > 1 ? &probes_[probes_.size() - 2] : nullptr;
+  if (p.error.empty() && before && p.steps > kStepGrowth * before->steps)
+    probes_.back().error = "steps grew from " + std::to_string(before->steps) + " to " + std::to_string(p.steps);
   if (!p.error.empty()) {
     done_ = true;
     // the seed's slow decrease starts from the penalty that failed; after a good decade the
