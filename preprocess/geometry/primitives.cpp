@@ -110,6 +110,17 @@ NurbsPatch revolve_about_y(const NurbsPatch& profile) {
 
 NurbsPatch ball(double r) { return revolve_about_y(half_disk(r)); }
 
+NurbsPatch ball_spherical(double r) {
+  // the profile: the radius eta times the semicircle xi (its control points and weights), so
+  // the centre row collapses to the origin with the semicircle's weights
+  NurbsPatch semicircle_times_radius =
+      from_tables(2, 1, knots({0, 0, 0, 0.5, 0.5, 1, 1, 1}), knots({0, 0, 1, 1}), {{0, 0}, {0, r}, {0, r}, {0, r}, {0, 0}},
+                  {{0, -r}, {0, -r}, {0, 0}, {0, r}, {0, r}}, {{1, 1}, {kS, kS}, {1, 1}, {kS, kS}, {1, 1}});
+  NurbsPatch p = revolve_about_y(semicircle_times_radius);
+  p.named_sides = {{"surface", {1, 1}}};
+  return p;
+}
+
 NurbsPatch cylinder_rod(double r, double l) {
   NurbsPatch p = revolve_about_y(rectangle(r, l));
   p.named_sides = {{"axis", {0, 0}}, {"lateral", {0, 1}}, {"bottom", {1, 0}}, {"top", {1, 1}}};

@@ -80,6 +80,9 @@ NurbsPatch read_geometry(const TomlView& g, format::AnalysisType analysis) {
   } else if (primitive == "ball") {
     g.allow_only({"primitive", "radius"});
     p = primitives::ball(g.positive("radius"));
+  } else if (primitive == "ball_spherical") {
+    g.allow_only({"primitive", "radius"});
+    p = primitives::ball_spherical(g.positive("radius"));
   } else if (primitive == "cylinder_rod") {
     g.allow_only({"primitive", "radius", "length"});
     p = primitives::cylinder_rod(g.positive("radius"), g.positive("length"));
@@ -89,7 +92,7 @@ NurbsPatch read_geometry(const TomlView& g, format::AnalysisType analysis) {
   } else {
     g.fail("primitive", "unknown primitive '" + primitive +
                             "' (half_disk, rod_with_spherical_end, disk, quarter_annulus, rectangle, box, ball, "
-                            "cylinder_rod, patch)");
+                            "ball_spherical, cylinder_rod, patch)");
   }
   const int dim = format::spatial_dim(analysis);
   if (p.param_dim() != dim || p.phys_dim() != dim)

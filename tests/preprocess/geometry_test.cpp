@@ -48,6 +48,7 @@ TEST_CASE("the seed primitives represent circles exactly", "[geometry]") {
   const NurbsPatch disk = primitives::disk(r);
   const NurbsPatch rod = primitives::rod_with_spherical_end(r, 1.0);
   const NurbsPatch ball = primitives::ball(r);
+  const NurbsPatch spherical = primitives::ball_spherical(r);
   for (int k = 0; k < 100; ++k) {
     const double s = u01(gen), t = u01(gen);
     CHECK(std::abs(hd.point(Eigen::Vector2d(s, 0)).norm() - r) <= 1e-13 * r);  // lower arc
@@ -58,7 +59,13 @@ TEST_CASE("the seed primitives represent circles exactly", "[geometry]") {
     CHECK(std::abs((cap - Eigen::Vector2d(0, r)).norm() - r) <= 1e-13 * r);
     CHECK(std::abs(ball.point(Eigen::Vector3d(s, 0, t)).norm() - r) <= 1e-13 * r);
     CHECK(std::abs(ball.point(Eigen::Vector3d(s, 1, t)).norm() - r) <= 1e-13 * r);
+    CHECK(std::abs(spherical.point(Eigen::Vector3d(s, 1, t)).norm() - r) <= 1e-13 * r);
+    // eta is the radius: the map is eta times the surface point
+    CHECK((spherical.point(Eigen::Vector3d(s, t, 0.3)) - t * spherical.point(Eigen::Vector3d(s, 1, 0.3))).norm() <= 1e-13 * r);
   }
+  // spherical coordinates: xi = 0.5 is the equator, zeta = 0.25 its point on +z, xi = 0 the pole -y
+  CHECK((spherical.point(Eigen::Vector3d(0.5, 1, 0.25)) - Eigen::Vector3d(0, 0, r)).norm() < 1e-16);
+  CHECK((spherical.point(Eigen::Vector3d(0, 1, 0.6)) - Eigen::Vector3d(0, -r, 0)).norm() < 1e-16);
   // the contact pole of the half-disk is its corner xi = eta = 0
   CHECK((hd.point(Eigen::Vector2d(0, 0)) - Eigen::Vector2d(0, -r)).norm() < 1e-16);
   CHECK((disk.point(Eigen::Vector2d(1, 0.5)) - Eigen::Vector2d(0, -r)).norm() < 1e-16);

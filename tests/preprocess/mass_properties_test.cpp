@@ -58,15 +58,20 @@ TEST_CASE("3D ball: mass and inertia tensor", "[mass]") {
   prep::RefinementSpec ref;
   ref.degrees = {3, 3, 3};
   ref.subdivisions = {4, 4, 4};
-  const auto b = prep::build_body(test::spec_for(prep::primitives::ball(r), AnalysisType::Solid, 2.1e11, 0.3, rho, ref));
-  // a coarse revolved mesh with a singular axis: 4 extra Gauss points bring the rational
-  // quadrature error below 1e-10
-  const auto I = integrals(b, 4);
-  const double m = rho * 4.0 / 3.0 * M_PI * r * r * r;
-  CHECK(I.mass == Approx(m).epsilon(1e-10));
-  CHECK(I.first_moment.norm() < 1e-10 * m * r);
-  const Eigen::Matrix3d expected = 0.4 * m * r * r * Eigen::Matrix3d::Identity();
-  CHECK((I.inertia() - expected).norm() < 1e-10 * expected.norm());
+  // both parametrizations: the revolved half-disk and spherical coordinates (a singular centre)
+  for (const bool spherical : {false, true}) {
+    INFO((spherical ? "ball_spherical" : "ball"));
+    const auto b = prep::build_body(test::spec_for(spherical ? prep::primitives::ball_spherical(r) : prep::primitives::ball(r),
+                                                   AnalysisType::Solid, 2.1e11, 0.3, rho, ref));
+    // a coarse revolved mesh with a singular axis: 4 extra Gauss points bring the rational
+    // quadrature error below 1e-10
+    const auto I = integrals(b, 4);
+    const double m = rho * 4.0 / 3.0 * M_PI * r * r * r;
+    CHECK(I.mass == Approx(m).epsilon(1e-10));
+    CHECK(I.first_moment.norm() < 1e-10 * m * r);
+    const Eigen::Matrix3d expected = 0.4 * m * r * r * Eigen::Matrix3d::Identity();
+    CHECK((I.inertia() - expected).norm() < 1e-10 * expected.norm());
+  }
 }
 
 TEST_CASE("hierarchical models keep the mass and inertia of their coarse models", "[mass][thb]") {
