@@ -1,7 +1,9 @@
 // Phases of a run; see simulation.hpp.
 #include "solve/simulation.hpp"
 
+#include "isosid/common/number_text.hpp"
 #include "isosid/format/error.hpp"
+#include "solve/event_chatter.hpp"
 #include "solve/static_start.hpp"
 
 #include <chrono>
@@ -99,6 +101,7 @@ bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
   observer_ = &observer;
   const double end = std::min(t_end, scene_.simulation.end_time), dt_out = scene_.simulation.output_interval;
   auto last_progress = Clock::now();
+  EventChatter chatter(system_.contacts().size());
   try {
     while (t_ < end * (1 - 1e-12)) {
       if (observer.stop_requested()) break;
@@ -108,6 +111,13 @@ bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
         throw format::ComputationError("the state of body '" + diverged_body(system_, state()) + "' is not finite");
       for (const auto& e : events) {
         const std::size_t k = std::size_t(e.contact);
+        if (chatter.observe(e.contact, e.time)) {
+          const SurfaceContact& c = system_.contacts()[std::size_t(chatter.worst())];
+          throw format::ComputationError("contact '" + c.name() + "' changed " + std::to_string(EventChatter::kLimit) +
+                                         " times between open and closed within " + common::number_text(EventChatter::kSpan) +
+                                         " s: its points chatter, no contact the steps can resolve (bodies meeting at the edge of, or beyond, "
+                                         "the contact surface of '" + c.body().name() + "'?)");
+        }
         if (!e.touch) {
           observer.contact_event(e.contact, e.closing, e.time);
           if (!e.closing) system_.released(k);
