@@ -13,13 +13,13 @@ Lagrange's equations of the two angles are integrated with classical Runge-Kutta
 1e-5 s: the error of the touch time is below 1e-9 s, checked by halving) and beta0 is found
 by bisection.
 
-The balls' frames (models/pendulum_ball.model.toml): the swing plane cuts each ball along a
-great circle that dips to latitude -75 deg at longitude 135 deg of the ball's model (away
-from the poles of its revolved parametrization); the first impact lies 15 deg before that
-lowest point and the hinge 90 deg after the first impact. R0 takes the first impact's
-direction to +x and the hinge's to +y; the left ball is turned by Rz(beta0) R0, the right
-one by Ry(180 deg) R0 (facing -x). Prints beta0, the touch, the bodies' positions and
-x-y-z angles, and the hinge node. Usage: double_pendulum_start.py [--check SCENE MODEL]
+The balls' frames (models/pendulum_ball.model.toml): each ball is in spherical coordinates
+about its model's y axis, and R0 turns that axis to the hinges' z, so the swing plane cuts the
+ball along its equator, which the parametrization leaves regular all round. The hinge is on the
+equator at longitude 0 (the seam, +x of the model) and the first impact at longitude 90 deg
+(+z): R0 takes the first impact's direction to +x and the hinge's to +y; the left ball is
+turned by Rz(beta0) R0, the right one by Ry(180 deg) R0 (facing -x). Prints beta0, the touch,
+the bodies' positions and x-y-z angles, and the hinge node. Usage: double_pendulum_start.py [--check SCENE MODEL]
 (compares with the scene's and the ball model's numbers; exit 1 if they differ).
 """
 import math
@@ -98,15 +98,9 @@ def tait_bryan(a):
 
 
 def ball_frames():
-    """R0 and the hinge's direction in the ball's model frame."""
-    def direction(lat, lon):
-        lat, lon = math.radians(lat), math.radians(lon)
-        return np.array([math.cos(lat) * math.cos(lon), math.sin(lat), math.cos(lat) * math.sin(lon)])
-    lowest = direction(-75.0, 135.0)
-    along = np.array([-math.sin(math.radians(135.0)), 0.0, math.cos(math.radians(135.0))])
-    before = math.radians(-15.0)
-    impact = math.cos(before) * lowest + math.sin(before) * along
-    hinge = -math.sin(before) * lowest + math.cos(before) * along
+    """R0 and the hinge's direction in the ball's model frame: the first impact on the equator
+    at longitude 90 deg (+z of the model), the hinge at longitude 0 (+x)."""
+    impact, hinge = np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0])
     return np.vstack([impact, hinge, np.cross(impact, hinge)]), hinge
 
 
