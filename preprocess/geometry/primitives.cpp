@@ -111,12 +111,20 @@ NurbsPatch revolve_about_y(const NurbsPatch& profile) {
 NurbsPatch ball(double r) { return revolve_about_y(half_disk(r)); }
 
 NurbsPatch ball_spherical(double r) {
-  // the profile: the radius eta times the semicircle xi (its control points and weights), so
+  // the profile: the radius eta times the semicircle xi, three rational arcs of 60 deg (middle
+  // weights cos 30 deg), so that the equator lies inside the middle arc's span, where the basis
+  // is smooth (two quarter arcs would put their C0 joint on it, under every in-plane impact);
   // the centre row collapses to the origin with the semicircle's weights
-  NurbsPatch semicircle_times_radius =
-      from_tables(2, 1, knots({0, 0, 0, 0.5, 0.5, 1, 1, 1}), knots({0, 0, 1, 1}), {{0, 0}, {0, r}, {0, r}, {0, r}, {0, 0}},
-                  {{0, -r}, {0, -r}, {0, 0}, {0, r}, {0, r}}, {{1, 1}, {kS, kS}, {1, 1}, {kS, kS}, {1, 1}});
-  NurbsPatch p = revolve_about_y(semicircle_times_radius);
+  const double c = std::sqrt(3.0) / 2, t = r / c;  // cos 30 deg; the arcs' middle points' distance
+  const std::vector<double> lat = {-90, -60, -30, 0, 30, 60, 90};
+  std::vector<std::vector<double>> X, Y, W;
+  for (std::size_t i = 0; i < lat.size(); ++i) {
+    const double a = lat[i] * M_PI / 180, d = i % 2 ? t : r, w = i % 2 ? c : 1.0;
+    X.push_back({0, i == 0 || i == 6 ? 0.0 : d * std::cos(a)});
+    Y.push_back({0, d * std::sin(a)});
+    W.push_back({w, w});
+  }
+  NurbsPatch p = revolve_about_y(from_tables(2, 1, knots({0, 0, 0, 1.0 / 3, 1.0 / 3, 2.0 / 3, 2.0 / 3, 1, 1, 1}), knots({0, 0, 1, 1}), X, Y, W));
   p.named_sides = {{"surface", {1, 1}}};
   return p;
 }

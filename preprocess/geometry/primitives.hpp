@@ -37,11 +37,11 @@ NurbsPatch revolve_about_y(const NurbsPatch& profile);
 NurbsPatch ball(double r);
 
 /// Ball of radius r in spherical coordinates: xi the latitude from the pole (0, -r, 0) to
-/// (0, r, 0) (the semicircle, two rational quarter arcs, C1 at the equator xi = 0.5), eta the
-/// radius (linear from the centre), zeta the longitude (x = cos, z = sin). Side: surface (eta1),
-/// the whole sphere, singular only at its poles, so every great circle but the meridians avoids
-/// its singularities (the equator is a regular line of it). The centre, the poles, the axis and
-/// the seam are coincident control points, merged into single DOFs.
+/// (0, r, 0) (the semicircle, three rational arcs of 60 deg; the equator xi = 0.5 lies inside
+/// the middle one, where the basis is smooth), eta the radius (linear from the centre), zeta
+/// the longitude (x = cos, z = sin). Side: surface (eta1), the whole sphere, singular only at
+/// its poles, so every great circle but the meridians avoids its singularities. The centre,
+/// the poles, the axis and the seam are coincident control points, merged into single DOFs.
 NurbsPatch ball_spherical(double r);
 
 /// Cylinder of radius r along y from 0 to l (revolved rectangle). Sides: bottom (eta0), top (eta1), lateral (xi1).
