@@ -19,9 +19,11 @@ struct TargetPoint {
 
 class ContactTarget {
 public:
-  /// What a projection is for: the gap and normal alone (onset checks, multipliers, touches),
-  /// or also what the loads of a penetrating point need (velocity, body point, Psi).
-  enum class Fill { Gap, Loads };
+  /// What a projection is for: the gap and normal alone (onset checks, multipliers), also
+  /// what the loads of a penetrating point need (velocity, body point, Psi), or the gap alone
+  /// of points that may be as far again as the target's size beyond it (the touch search,
+  /// whose start points lie up to a grid cell from the surfaces' closest approach).
+  enum class Fill { Gap, Loads, Approach };
 
   virtual ~ContactTarget() = default;
   virtual const std::string& name() const = 0;

@@ -60,7 +60,9 @@ Eigen::Vector3d MasterPatchTarget::normal(const DeformedPatch::Point& point, con
 bool MasterPatchTarget::project(const Eigen::Vector3d& x_world, const double* y, TargetPoint& out, Eigen::Vector2d& hint, Fill fill) const {
   Eigen::Vector3d x = A_.transpose() * (x_world - r_);
   if (dim_ == 2) x.z() = 0;
-  if ((x - center_).norm() > radius_) return false;  // outside the bounding sphere: cannot touch
+  // outside the bounding sphere a point cannot touch; the touch search also sees points as
+  // far again beyond it, whose closest points start its search
+  if ((x - center_).norm() > (fill == Fill::Approach ? 2 : 1) * radius_) return false;
   if (!patch_.closest_point(x, hint, point_)) return false;
   const Eigen::Vector3d n = normal(point_, hint);
   const Eigen::Vector3d d = x - point_.C;
@@ -68,7 +70,7 @@ bool MasterPatchTarget::project(const Eigen::Vector3d& x_world, const double* y,
   // beside the edge of the patch rather than above it: no candidate
   if ((d - out.gap * n).norm() > std::abs(out.gap) + 1e-9 * radius_) return false;
   out.normal = A_ * n;
-  if (out.gap >= 0 || fill == Fill::Gap) return true;  // the rest only matters where a force acts
+  if (out.gap >= 0 || fill != Fill::Loads) return true;  // the rest only matters where a force acts
   out.body_point = point_.C;
   patch_.shape_rows(point_, out.Psi);
   out.velocity = body_.point_velocity(point_.C, out.Psi, y);

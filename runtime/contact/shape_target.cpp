@@ -18,7 +18,7 @@ bool ShapeTarget::project(const Eigen::Vector3d& x, const double* y, TargetPoint
   const ShapeDistance d = shape_distance(shape_, A_.transpose() * (x - r_));
   out.gap = d.gap;
   out.normal = A_ * d.normal;
-  if (fill == Fill::Gap) return true;
+  if (fill != Fill::Loads) return true;
   out.body_point = d.point;
   if (body_) {
     out.Psi.resize(body_->sid().dim(), 0);

@@ -8,14 +8,56 @@ namespace isosid::run {
 
 SurfaceTouch::SurfaceTouch(const SurfaceContact& contact) : contact_(contact), dim_(contact.body().sid().dim()) {
   const format::MasterPatch* patch = format::find_master_patch(contact.body().sid(), contact.surface().master_patch);
-  if (patch) patch_ = std::make_unique<DeformedPatch>(*patch, dim_);
+  if (!patch) return;
+  patch_ = std::make_unique<DeformedPatch>(*patch, dim_);
+  const int pd = patch_->parameter_dim();
+  for (int a = 0; a < pd; ++a) lower_(a) = patch_->lower(a), upper_(a) = patch_->upper(a);
+  // a surface on an interval of one patch side: the search keeps to the elements of its Gauss
+  // points (their parameters' box in the side's free directions, in order, widened to the
+  // knots around it), as the contact does; beyond lie parts of the side no contact is meant
+  // on, poles among them, where normals degenerate
+  const format::ContactSurface& s = contact.surface();
+  if (s.patch.find(' ') == std::string::npos && s.points() > 0 && s.parameter.cols() == pd + 1) {
+    const Eigen::VectorXd lo = s.parameter.colwise().minCoeff(), hi = s.parameter.colwise().maxCoeff();
+    std::vector<Eigen::Index> free;
+    for (Eigen::Index d = 0; d < s.parameter.cols(); ++d)
+      if (hi(d) > lo(d)) free.push_back(d);
+    if (int(free.size()) == pd)
+      for (int a = 0; a < pd; ++a) {
+        const Eigen::VectorXd& knots = patch->knots[std::size_t(a)];
+        const double first = lo(free[std::size_t(a)]), last = hi(free[std::size_t(a)]);
+        for (Eigen::Index k = 0; k < knots.size(); ++k) {
+          if (knots(k) <= first) lower_(a) = knots(k);
+          if (knots(k) >= last) upper_(a) = std::min(upper_(a), knots(k));
+        }
+      }
+  }
+  // the start grid's points per direction in proportion to the surface's lengths along them
+  // (about 81 in all, at least 3 per direction): a long band gets cells as long as wide, so
+  // that its closest approach lies within half a cell of a grid point
+  if (pd < 2) return;
+  patch_->deform(Eigen::VectorXd::Zero(contact.body().nq()));
+  Eigen::Vector2d length = Eigen::Vector2d::Zero();
+  for (int a = 0; a < 2; ++a) {
+    Eigen::Vector2d u = 0.5 * (lower_ + upper_);
+    Eigen::Vector3d last;
+    for (int i = 0; i <= 16; ++i) {
+      u(a) = lower_(a) + (upper_(a) - lower_(a)) * i / 16;
+      patch_->evaluate(u, point_);
+      if (i > 0) length(a) += (point_.C - last).norm();
+      last = point_.C;
+    }
+  }
+  if (!(length.minCoeff() > 0)) return;
+  const double aspect = std::sqrt(length(0) / length(1));
+  grid_ = {std::clamp(int(std::lround(9 * aspect)), 3, 27), std::clamp(int(std::lround(9 / aspect)), 3, 27)};
 }
 
 bool SurfaceTouch::distance(const double* y, const Eigen::Vector2d& u, double& gap, Eigen::Vector2d& gradient) const {
   patch_->evaluate(u, point_);
   Eigen::Vector3d x = point_.C;
   if (dim_ == 2) x.z() = 0;
-  if (!contact_.target().project(r_ + A_ * x, y, target_point_, target_hint_, ContactTarget::Fill::Gap)) return false;
+  if (!contact_.target().project(r_ + A_ * x, y, target_point_, target_hint_, ContactTarget::Fill::Approach)) return false;
   gap = target_point_.gap;
   // the signed distance's gradient in space is the target's normal (where it is smooth):
   // along the patch, its product with the tangents
@@ -34,21 +76,20 @@ const Touch& SurfaceTouch::evaluate(const double* y) const {
   r_ = body.r(y);
   const int pd = patch_->parameter_dim();
   Eigen::Vector2d range = Eigen::Vector2d::Ones();
-  for (int a = 0; a < pd; ++a) range(a) = patch_->upper(a) - patch_->lower(a);
+  for (int a = 0; a < pd; ++a) range(a) = upper_(a) - lower_(a);
   auto clamp = [&](Eigen::Vector2d u) {
-    for (int a = 0; a < pd; ++a) u(a) = std::clamp(u(a), patch_->lower(a), patch_->upper(a));
+    for (int a = 0; a < pd; ++a) u(a) = std::clamp(u(a), lower_(a), upper_(a));
     return u;
   };
 
-  // start: the last closest point, else the best of a grid of 9 (or 81) parameters
+  // start: the last closest point, else the best of the start grid (9 points on a curve)
   Eigen::Vector2d u = Eigen::Vector2d::Constant(NAN);
   double gap = INFINITY;
   Eigen::Vector2d gradient;
   if (std::isnan(last_parameter_(0)) || !distance(y, last_parameter_, gap, gradient)) {
-    const int n = 9;
-    for (int j = 0; j < (pd > 1 ? n : 1); ++j)
-      for (int i = 0; i < n; ++i) {
-        Eigen::Vector2d c(patch_->lower(0) + range(0) * i / (n - 1), pd > 1 ? patch_->lower(1) + range(1) * j / (n - 1) : 0.0);
+    for (int j = 0; j < (pd > 1 ? grid_[1] : 1); ++j)
+      for (int i = 0; i < grid_[0]; ++i) {
+        Eigen::Vector2d c(lower_(0) + range(0) * i / (grid_[0] - 1), pd > 1 ? lower_(1) + range(1) * j / (grid_[1] - 1) : 0.0);
         double g = 0;
         if (distance(y, c, g, gradient) && g < gap) gap = g, u = c;
       }

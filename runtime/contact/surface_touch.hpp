@@ -7,6 +7,7 @@
 #include "contact/deformed_patch.hpp"
 #include "contact/surface_contact.hpp"
 
+#include <array>
 #include <memory>
 
 namespace isosid::run {
@@ -23,7 +24,8 @@ struct Touch {
 class SurfaceTouch {
 public:
   /// The slave surface of `contact`: the master patch its SID gives for the contact surface
-  /// (available() is false without one).
+  /// (available() is false without one), searched over the parameters of the surface's Gauss
+  /// points where it is an interval of one patch side.
   explicit SurfaceTouch(const SurfaceContact& contact);
 
   bool available() const { return patch_ != nullptr; }
@@ -39,6 +41,8 @@ private:
   const SurfaceContact& contact_;
   std::unique_ptr<DeformedPatch> patch_;
   int dim_ = 3;
+  std::array<int, 2> grid_{9, 9};  ///< the start grid's points per parameter direction
+  Eigen::Vector2d lower_ = Eigen::Vector2d::Zero(), upper_ = Eigen::Vector2d::Ones();  ///< the parameters searched
   mutable DeformedPatch::Point point_;
   mutable TargetPoint target_point_;
   mutable Eigen::Vector2d target_hint_ = Eigen::Vector2d::Constant(NAN);  ///< the target's projection warm start

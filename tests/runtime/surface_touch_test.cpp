@@ -13,6 +13,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 using namespace isosid;
 
@@ -173,4 +174,57 @@ TEST_CASE("impact detection: two flexible spheres touch at their poles, found on
   const double pole = std::abs(p.C.x()) < 1e-12 ? curve.lower(0) : curve.upper(0), range = curve.upper(0) - curve.lower(0);
   CHECK(std::abs(touch.slave_parameter(0) - pole) < 1e-9 * range);
   CHECK(std::abs(touch.target_parameter(0) - pole) < 1e-9 * range);
+}
+
+TEST_CASE("impact detection: balls touch wherever on the bands round their equators they meet", "[runtime][unit]") {
+  // two of scene E's coarse balls (spherical coordinates), their contact surfaces bands of
+  // +-18 deg round the equator but the hinge, turned so that the equator points at longitudes lon_l and
+  // lon_r face each other; 0.2 um apart, closing at 0.2 m/s: the touch at 1 us at the origin,
+  // on both equators. The search's start grid must find it far from the side's grid points:
+  // a 9 x 9 grid over the whole side had its points 45 deg apart along the equator, and at
+  // 22.5 deg from the line of centres a point lies 1.4 mm from the other ball, beyond the
+  // bounding sphere of its net (scene E's balls passed 56 um into each other unseen so)
+  const test::ScratchDir dir("touch_band");
+  const double R = 0.01;
+  const test::ProgramResult prep =
+      test::run_program(std::string(ISOSID_PREP_EXE) + " -q --coarse " + ISOSID_MODELS_DIR + "/pendulum_ball.model.toml -o " + dir.path("ball.sid.h5"));
+  INFO(prep.err);
+  REQUIRE(prep.exit_status == 0);
+  const format::Sid sid = format::read_sid(dir.path("ball.sid.h5"));
+  const double deg = M_PI / 180;
+  // R0 turns the model's y (the poles) to z and longitude 90 deg to +x; then Rz(angle)
+  const Eigen::Matrix3d R0 = (Eigen::Matrix3d() << 0, 0, 1, 1, 0, 0, 0, 1, 0).finished();
+  auto angles = [](const Eigen::Matrix3d& A) {  // x-y-z angles of A = Rx(a) Ry(b) Rz(c), away from b = +-90 deg
+    std::ostringstream s;
+    s << std::setprecision(17) << "[" << std::atan2(-A(1, 2), A(2, 2)) << ", " << std::asin(A(0, 2)) << ", " << std::atan2(-A(0, 1), A(0, 0)) << "]";
+    return s.str();
+  };
+  for (const auto& [lon_l, lon_r] : std::vector<std::pair<double, double>>{{119.04, 179.75}, {157.5, 67.5}, {202.5, 292.5}, {40, 300}, {330, 60}}) {
+    const Eigen::Matrix3d left = Eigen::AngleAxisd((lon_l - 90) * deg, Eigen::Vector3d::UnitZ()) * R0;
+    const Eigen::Matrix3d right = Eigen::AngleAxisd((lon_r + 90) * deg, Eigen::Vector3d::UnitZ()) * R0;
+    std::ofstream(dir.path("s.scene.toml")) << std::setprecision(17) << "[simulation]\ndimension = \"3d\"\nend_time = 3e-6\noutput_interval = 1e-6\n"
+                                            << "[[flexible_body]]\nname = \"left\"\nsid = \"ball.sid.h5\"\nposition = [" << -(R + 1e-7)
+                                            << ", 0.0, 0.0]\norientation = " << angles(left) << "\nvelocity = [0.1, 0.0, 0.0]\nhigh_modes = \"quasistatic\"\n"
+                                            << "[[flexible_body]]\nname = \"right\"\nsid = \"ball.sid.h5\"\nposition = [" << R + 1e-7
+                                            << ", 0.0, 0.0]\norientation = " << angles(right) << "\nvelocity = [-0.1, 0.0, 0.0]\nhigh_modes = \"quasistatic\"\n"
+                                            << "[[contact]]\nname = \"balls\"\nbody = \"left\"\nsurface = \"contact\"\ntarget = \"right\"\n"
+                                            << "target_surface = \"contact\"\npenalty = 1e17\n";
+    const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
+    run::Simulation simulation(scene, {sid, sid});
+    TouchObserver observer;
+    INFO("longitudes " << lon_l << " and " << lon_r << " deg");
+    REQUIRE(simulation.run(observer).completed());
+    REQUIRE(observer.touches.size() == 1);
+    const auto& [time, touch] = observer.touches.front();
+    CHECK(std::abs(time - 1e-6) < 1e-9);
+    CHECK(touch.point.norm() < 1e-9 * R);
+    // the parameters name the facing points: the left ball's surface there is its point at
+    // lon_l on the equator (body frame), and the right's at lon_r
+    run::DeformedPatch patch(*format::find_master_patch(sid, sid.contact_surfaces.front().master_patch), 3);
+    run::DeformedPatch::Point p;
+    for (const auto& [u, lon] : {std::pair{touch.slave_parameter, lon_l}, std::pair{touch.target_parameter, lon_r}}) {
+      patch.evaluate(u, p);
+      CHECK((p.C - R * Eigen::Vector3d(std::cos(lon * deg), 0, std::sin(lon * deg))).norm() < 1e-9 * R);
+    }
+  }
 }
