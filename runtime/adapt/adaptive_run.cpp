@@ -297,6 +297,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       out.penalty = lower;
       out.lowered = true;
       fine_scene.contacts[k].penalty = lower.value();
+      fine_scene.contacts[k].penalty_source = "penalty search: lowered after an error";
       impact.point = run.centre;
       double change = 0;
       fine = switch_models(*fine, fine_scene, fine_sids, std::vector<ElasticMap>(fine->system().bodies().size()), change);
@@ -333,6 +334,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       width[std::size_t(k)] = snapped_width(2 * estimate->contact_radius / kTargetUtilization);
     }
     std::optional<PenaltyFactor> penalty = learned_penalty[std::size_t(k)];  // set by the first try if not learned
+    std::string penalty_source = "penalty search: learned at an earlier impact";
     std::unique_ptr<Simulation> fine;
     std::vector<format::Sid> fine_sids;
     std::vector<std::size_t> refined;
@@ -380,12 +382,14 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                                          "): clear the model cache " + scene_.adaptive.cache);
         maps[i] = f.transfer->coarse_to_fine;
       }
-      if (penalty) fine_scene.contacts[std::size_t(k)].penalty = penalty->value();
+      if (penalty) fine_scene.contacts[std::size_t(k)].penalty = penalty->value(), fine_scene.contacts[std::size_t(k)].penalty_source = penalty_source;
       double into = 0;
       fine = switch_models(*simulation, fine_scene, fine_sids, maps, into);
       if (search && !penalty) {  // the search starts from the scene's penalty, or the one derived at the touch
         penalty = PenaltyFactor(fine->system().contacts()[std::size_t(k)].penalty());
+        penalty_source = fine->system().contacts()[std::size_t(k)].penalty_source() + " (the penalty search's start)";
         fine_scene.contacts[std::size_t(k)].penalty = penalty->value();
+        fine_scene.contacts[std::size_t(k)].penalty_source = penalty_source;
       }
       json try_entry = {{"kind", "impact"}, {"contact", contact}, {"try", attempt}, {"touch_s", found.time},
                         {"width_m", w}, {"refined", requests}, {"switch_energy_change", into}};
@@ -393,6 +397,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       ImpactRun run = run_impact(fine, fine_scene, fine_sids, impact, "impact-" + contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""),
                                  try_entry);
       if (search) penalty = run.penalty;  // lowered online: later tries start there
+      if (run.lowered) penalty_source = "penalty search: lowered after an error";
       IntervalDecision d = decide_interval(run.utilization, run.beyond, w);
       if (!run.over) d = {true, w, "the run ended during the impact"};  // it keeps what it has
       const bool accepted_now = d.acceptable || attempt == kMaxTries;
@@ -462,6 +467,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
         for (std::size_t e = accepted_entries; e < log.size(); ++e)
           log[e]["accepted"] = false, log[e]["decision"] = log[e]["decision"].get<std::string>() + "; penalty changed";
         fine_scene.contacts[std::size_t(k)].penalty = trial.result().value();
+        fine_scene.contacts[std::size_t(k)].penalty_source = "penalty search: found by trial";
         double into = 0;
         fine = switch_models(*simulation, fine_scene, fine_sids, maps, into);
         json entry = {{"kind", "impact"}, {"contact", contact}, {"try", "penalty"}, {"touch_s", found.time}, {"width_m", impact.width},

@@ -111,7 +111,7 @@ private:
   double derived_penalty(double contact_radius) const;
 
   ContactSpec spec_;
-  std::string penalty_source_ = "scene";
+  std::string penalty_source_;  ///< the spec's, or "derived: ..."
   const FloatingBody& body_;
   const ContactTarget& target_;
   const format::ContactSurface& surface_;

@@ -101,6 +101,9 @@ struct ContactSpec {
   /// The contact on a massless boundary solved exactly (augmented Lagrangian: the penalty
   /// becomes the augmentation, the gap of every active point closes); else penalty contact.
   bool exact = false;
+  /// Where a given penalty comes from, for the summary: the scene, or the adaptive loop's
+  /// penalty search (adapt/adaptive_run sets it with the penalty)
+  std::string penalty_source = "scene";
 };
 
 /// Hertz's law between two rigid spheres (contact/hertz_contact.hpp): seed 001's reference

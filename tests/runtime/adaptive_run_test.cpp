@@ -135,6 +135,7 @@ TEST_CASE("adaptive: a penalty far too soft is raised by decades until the force
   CHECK(impacts[0]["accepted"] == false);
   CHECK(impacts[1]["try"] == "penalty");
   CHECK(impacts[1]["penalty_n_m3"] == search["penalty_n_m3"]);
+  CHECK(s["contacts"][0]["penalty_source"] == "penalty search: found by trial");  // the accepted impact's
   // Hertz as scene A (+0.7 % at 5e18; at 5e15 the peak is 8 % low: bench/RESULTS.md stability)
   CHECK(test::rel_error(s, "peak_force_n") < 0.01);
   CHECK(test::rel_error(s, "contact_time_s") < 0.01);
