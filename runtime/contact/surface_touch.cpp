@@ -66,42 +66,29 @@ bool SurfaceTouch::distance(const double* y, const Eigen::Vector2d& u, double& g
   return true;
 }
 
-const Touch& SurfaceTouch::evaluate(const double* y) const {
-  touch_ = Touch{};
-  if (!patch_) return touch_;
-  const FloatingBody& body = contact_.body();
-  contact_.target().update(y);
-  patch_->deform(body.q(y));
-  A_ = body.orientation(y).toRotationMatrix();
-  r_ = body.r(y);
+bool SurfaceTouch::grid_start(const double* y, Eigen::Vector2d& u) const {
+  const int pd = patch_->parameter_dim();
+  double best = INFINITY, g = 0;
+  Eigen::Vector2d gradient;
+  u = Eigen::Vector2d::Constant(NAN);
+  for (int j = 0; j < (pd > 1 ? grid_[1] : 1); ++j)
+    for (int i = 0; i < grid_[0]; ++i) {
+      const Eigen::Vector2d c(lower_(0) + (upper_(0) - lower_(0)) * i / (grid_[0] - 1),
+                              pd > 1 ? lower_(1) + (upper_(1) - lower_(1)) * j / (grid_[1] - 1) : 0.0);
+      if (distance(y, c, g, gradient) && g < best) best = g, u = c;
+    }
+  return !std::isnan(u(0));
+}
+
+double SurfaceTouch::descend(const double* y, Eigen::Vector2d& u, Eigen::Vector2d& gradient) const {
   const int pd = patch_->parameter_dim();
   Eigen::Vector2d range = Eigen::Vector2d::Ones();
   for (int a = 0; a < pd; ++a) range(a) = upper_(a) - lower_(a);
-  auto clamp = [&](Eigen::Vector2d u) {
-    for (int a = 0; a < pd; ++a) u(a) = std::clamp(u(a), lower_(a), upper_(a));
-    return u;
-  };
-
-  // start: the last closest point, else the best of the start grid (9 points on a curve)
-  Eigen::Vector2d u = Eigen::Vector2d::Constant(NAN);
-  double gap = INFINITY;
-  Eigen::Vector2d gradient;
-  if (std::isnan(last_parameter_(0)) || !distance(y, last_parameter_, gap, gradient)) {
-    for (int j = 0; j < (pd > 1 ? grid_[1] : 1); ++j)
-      for (int i = 0; i < grid_[0]; ++i) {
-        Eigen::Vector2d c(lower_(0) + range(0) * i / (grid_[0] - 1), pd > 1 ? lower_(1) + range(1) * j / (grid_[1] - 1) : 0.0);
-        double g = 0;
-        if (distance(y, c, g, gradient) && g < gap) gap = g, u = c;
-      }
-    if (std::isnan(u(0))) return touch_;  // the target sees none of the surface
-  } else {
-    u = last_parameter_;
-  }
   // Newton on the gradient; its Jacobian exactly against a fixed plane (n . A C_ab), else by
   // central differences of the gradient (the target's curvature enters it, which an analytic
   // Hessian would need per kind of target)
   Eigen::Vector3d plane_normal;
-  double plane_offset = 0;
+  double plane_offset = 0, gap = INFINITY;
   const bool plane = contact_.target().fixed_plane(plane_normal, plane_offset);
   // the last parameter whose point the target saw: where Newton steps off the target (beside
   // its edge), the closest approach found so far stands instead of no touch at all
@@ -135,12 +122,44 @@ const Touch& SurfaceTouch::evaluate(const double* y) const {
       step = llt.info() == Eigen::Success ? Eigen::Vector2d(-llt.solve(gradient)) : Eigen::Vector2d(-0.1 * range.cwiseProduct(gradient.normalized()));
     }
     if (!step.allFinite()) break;  // a degenerate point: keep the last finite parameter
-    const Eigen::Vector2d next = clamp(u + step);
+    Eigen::Vector2d next = u + step;
+    for (int a = 0; a < pd; ++a) next(a) = std::clamp(next(a), lower_(a), upper_(a));
     const bool converged = ((next - u).cwiseQuotient(range)).cwiseAbs().maxCoeff() <= 1e-13;
     u = next;
     if (converged) break;
   }
-  if (!distance(y, u, gap, gradient)) return touch_;
+  return distance(y, u, gap, gradient) ? gap : INFINITY;
+}
+
+bool SurfaceTouch::held_by_bound(const Eigen::Vector2d& u, const Eigen::Vector2d& gradient) const {
+  for (int a = 0; a < patch_->parameter_dim(); ++a)
+    if ((u(a) <= lower_(a) && gradient(a) > 0) || (u(a) >= upper_(a) && gradient(a) < 0)) return true;
+  return false;
+}
+
+const Touch& SurfaceTouch::evaluate(const double* y) const {
+  touch_ = Touch{};
+  if (!patch_) return touch_;
+  const FloatingBody& body = contact_.body();
+  contact_.target().update(y);
+  patch_->deform(body.q(y));
+  A_ = body.orientation(y).toRotationMatrix();
+  r_ = body.r(y);
+
+  // from the last closest point; from the best point of the start grid where there is none,
+  // or where the last one ends held by a bound of the search with the distance still falling
+  // beyond it: a minimum the real one may have left (around a body of revolution the two
+  // ends of the longitude meet, and the closest approach crosses that seam)
+  Eigen::Vector2d u = last_parameter_, gradient, start;
+  double gap = INFINITY;
+  const bool warm = !std::isnan(u(0)) && distance(y, u, gap, gradient);
+  if (warm) gap = descend(y, u, gradient);
+  if ((!warm || (std::isfinite(gap) && held_by_bound(u, gradient))) && grid_start(y, start)) {
+    Eigen::Vector2d unused;
+    const double other = descend(y, start, unused);
+    if (other < gap) gap = other, u = start;
+  }
+  if (!std::isfinite(gap) || !distance(y, u, gap, gradient)) return touch_;  // the target sees none of the surface
   last_parameter_ = u;
   touch_.gap = gap;
   touch_.slave_parameter = u;
@@ -148,7 +167,7 @@ const Touch& SurfaceTouch::evaluate(const double* y) const {
   Eigen::Vector3d x = point_.C;
   if (dim_ == 2) x.z() = 0;
   touch_.point = r_ + A_ * x;
-  touch_.parameter_dim = pd;
+  touch_.parameter_dim = patch_->parameter_dim();
   return touch_;
 }
 

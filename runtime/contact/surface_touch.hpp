@@ -37,6 +37,13 @@ private:
   /// The target's signed distance to the slave surface at parameter u, with its gradient
   /// along u; false where the target sees no candidate there.
   bool distance(const double* y, const Eigen::Vector2d& u, double& gap, Eigen::Vector2d& gradient) const;
+  /// The start grid's parameter of least gap; false where the target sees none of them.
+  bool grid_start(const double* y, Eigen::Vector2d& u) const;
+  /// Newton's method from u to the nearest minimum of the gap within the search's bounds;
+  /// returns the gap there (INFINITY if the target does not see it), u and its gradient.
+  double descend(const double* y, Eigen::Vector2d& u, Eigen::Vector2d& gradient) const;
+  /// u lies on a bound of the search and the gap falls beyond it.
+  bool held_by_bound(const Eigen::Vector2d& u, const Eigen::Vector2d& gradient) const;
 
   const SurfaceContact& contact_;
   std::unique_ptr<DeformedPatch> patch_;

@@ -228,3 +228,48 @@ TEST_CASE("impact detection: balls touch wherever on the bands round their equat
     }
   }
 }
+
+TEST_CASE("impact detection: a spinning ball's closest approach crosses the seam of its longitudes", "[runtime][unit]") {
+  // scene E's coarse ball on the left spins about its poles (the hinge axis z) so that its
+  // point facing the other ball runs from longitude 20 deg down across the seam at 0 (the
+  // hinge's, outside its band) to 340 deg, where they touch: 2 mm apart, closing at 0.2 m/s,
+  // the touch at 10 ms. Tracked from the last call, the closest approach stops on the search's
+  // bound at the seam, where the gap still falls beyond it; the grid must find it again.
+  const test::ScratchDir dir("touch_seam");
+  const test::ProgramResult prep =
+      test::run_program(std::string(ISOSID_PREP_EXE) + " -q --coarse " + ISOSID_MODELS_DIR + "/pendulum_ball.model.toml -o " + dir.path("ball.sid.h5"));
+  INFO(prep.err);
+  REQUIRE(prep.exit_status == 0);
+  const format::Sid sid = format::read_sid(dir.path("ball.sid.h5"));
+  const double R = 0.01, deg = M_PI / 180, t_touch = 0.01;
+  // x-y-z angles of Rz(phi) R0 (R0: the model's poles to z, longitude 90 deg to +x); the facing
+  // longitude is 90 deg + phi, so phi0 = -70 deg and omega = -40 deg / t_touch
+  auto angles = [](double phi) {
+    const Eigen::Matrix3d A = Eigen::AngleAxisd(phi, Eigen::Vector3d::UnitZ()) * (Eigen::Matrix3d() << 0, 0, 1, 1, 0, 0, 0, 1, 0).finished();
+    std::ostringstream s;
+    s << std::setprecision(17) << "[" << std::atan2(-A(1, 2), A(2, 2)) << ", " << std::asin(A(0, 2)) << ", " << std::atan2(-A(0, 1), A(0, 0)) << "]";
+    return s.str();
+  };
+  std::ofstream(dir.path("s.scene.toml")) << std::setprecision(17) << "[simulation]\ndimension = \"3d\"\nend_time = " << 1.02 * t_touch
+                                          << "\noutput_interval = 1e-4\n[[flexible_body]]\nname = \"left\"\nsid = \"ball.sid.h5\"\nposition = ["
+                                          << -(R + 1e-3) << ", 0.0, 0.0]\norientation = " << angles(-70 * deg)
+                                          << "\nvelocity = [0.1, 0.0, 0.0]\nangular_velocity = [0.0, " << -40 * deg / t_touch
+                                          << ", 0.0]\nhigh_modes = \"quasistatic\"\n[[flexible_body]]\nname = \"right\"\nsid = \"ball.sid.h5\"\n"
+                                          << "position = [" << R + 1e-3 << ", 0.0, 0.0]\norientation = " << angles(120 * deg)
+                                          << "\nvelocity = [-0.1, 0.0, 0.0]\nhigh_modes = \"quasistatic\"\n"
+                                          << "[[contact]]\nname = \"balls\"\nbody = \"left\"\nsurface = \"contact\"\ntarget = \"right\"\n"
+                                          << "target_surface = \"contact\"\npenalty = 1e17\n";
+  const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
+  run::Simulation simulation(scene, {sid, sid});
+  TouchObserver observer;
+  REQUIRE(simulation.run(observer).completed());
+  REQUIRE(observer.touches.size() == 1);
+  const auto& [time, touch] = observer.touches.front();
+  // the spin stretches each ball by about rho omega^2 R^3 / E = 2e-10 m: the touch comes
+  // within 2e-9 s of the rigid balls' closing time
+  CHECK(std::abs(time - t_touch) < 1e-8);
+  run::DeformedPatch patch(*format::find_master_patch(sid, sid.contact_surfaces.front().master_patch), 3);
+  run::DeformedPatch::Point p;
+  patch.evaluate(touch.slave_parameter, p);
+  CHECK((p.C - R * Eigen::Vector3d(std::cos(340 * deg), 0, std::sin(340 * deg))).norm() < 1e-6 * R);  // the spin's round-off in angle
+}
