@@ -176,6 +176,26 @@ TEST_CASE("impact detection: two flexible spheres touch at their poles, found on
   CHECK(std::abs(touch.target_parameter(0) - pole) < 1e-9 * range);
 }
 
+namespace {
+/// Scene E's coarse ball (models/pendulum_ball.model.toml, spherical coordinates), built here.
+format::Sid scene_e_coarse_ball(const test::ScratchDir& dir) {
+  const test::ProgramResult prep =
+      test::run_program(std::string(ISOSID_PREP_EXE) + " -q --coarse " + ISOSID_MODELS_DIR + "/pendulum_ball.model.toml -o " + dir.path("ball.sid.h5"));
+  INFO(prep.err);
+  REQUIRE(prep.exit_status == 0);
+  return format::read_sid(dir.path("ball.sid.h5"));
+}
+
+/// The scene's x-y-z angles of Rz(phi) R0, where R0 turns that ball's poles (model y) to z and
+/// its longitude 90 deg to +x: its equator's point at longitude 90 deg + phi faces +x.
+std::string ball_turned_by(double phi) {
+  const Eigen::Matrix3d A = Eigen::AngleAxisd(phi, Eigen::Vector3d::UnitZ()) * (Eigen::Matrix3d() << 0, 0, 1, 1, 0, 0, 0, 1, 0).finished();
+  std::ostringstream s;  // A = Rx(a) Ry(b) Rz(c), away from b = +-90 deg
+  s << std::setprecision(17) << "[" << std::atan2(-A(1, 2), A(2, 2)) << ", " << std::asin(A(0, 2)) << ", " << std::atan2(-A(0, 1), A(0, 0)) << "]";
+  return s.str();
+}
+}  // namespace
+
 TEST_CASE("impact detection: balls touch wherever on the bands round their equators they meet", "[runtime][unit]") {
   // two of scene E's coarse balls (spherical coordinates), their contact surfaces bands of
   // +-18 deg round the equator but the hinge, turned so that the equator points at longitudes lon_l and
@@ -185,28 +205,14 @@ TEST_CASE("impact detection: balls touch wherever on the bands round their equat
   // 22.5 deg from the line of centres a point lies 1.4 mm from the other ball, beyond the
   // bounding sphere of its net (scene E's balls passed 56 um into each other unseen so)
   const test::ScratchDir dir("touch_band");
-  const double R = 0.01;
-  const test::ProgramResult prep =
-      test::run_program(std::string(ISOSID_PREP_EXE) + " -q --coarse " + ISOSID_MODELS_DIR + "/pendulum_ball.model.toml -o " + dir.path("ball.sid.h5"));
-  INFO(prep.err);
-  REQUIRE(prep.exit_status == 0);
-  const format::Sid sid = format::read_sid(dir.path("ball.sid.h5"));
-  const double deg = M_PI / 180;
-  // R0 turns the model's y (the poles) to z and longitude 90 deg to +x; then Rz(angle)
-  const Eigen::Matrix3d R0 = (Eigen::Matrix3d() << 0, 0, 1, 1, 0, 0, 0, 1, 0).finished();
-  auto angles = [](const Eigen::Matrix3d& A) {  // x-y-z angles of A = Rx(a) Ry(b) Rz(c), away from b = +-90 deg
-    std::ostringstream s;
-    s << std::setprecision(17) << "[" << std::atan2(-A(1, 2), A(2, 2)) << ", " << std::asin(A(0, 2)) << ", " << std::atan2(-A(0, 1), A(0, 0)) << "]";
-    return s.str();
-  };
+  const double R = 0.01, deg = M_PI / 180;
+  const format::Sid sid = scene_e_coarse_ball(dir);
   for (const auto& [lon_l, lon_r] : std::vector<std::pair<double, double>>{{119.04, 179.75}, {157.5, 67.5}, {202.5, 292.5}, {40, 300}, {330, 60}}) {
-    const Eigen::Matrix3d left = Eigen::AngleAxisd((lon_l - 90) * deg, Eigen::Vector3d::UnitZ()) * R0;
-    const Eigen::Matrix3d right = Eigen::AngleAxisd((lon_r + 90) * deg, Eigen::Vector3d::UnitZ()) * R0;
     std::ofstream(dir.path("s.scene.toml")) << std::setprecision(17) << "[simulation]\ndimension = \"3d\"\nend_time = 3e-6\noutput_interval = 1e-6\n"
                                             << "[[flexible_body]]\nname = \"left\"\nsid = \"ball.sid.h5\"\nposition = [" << -(R + 1e-7)
-                                            << ", 0.0, 0.0]\norientation = " << angles(left) << "\nvelocity = [0.1, 0.0, 0.0]\nhigh_modes = \"quasistatic\"\n"
+                                            << ", 0.0, 0.0]\norientation = " << ball_turned_by((lon_l - 90) * deg) << "\nvelocity = [0.1, 0.0, 0.0]\nhigh_modes = \"quasistatic\"\n"
                                             << "[[flexible_body]]\nname = \"right\"\nsid = \"ball.sid.h5\"\nposition = [" << R + 1e-7
-                                            << ", 0.0, 0.0]\norientation = " << angles(right) << "\nvelocity = [-0.1, 0.0, 0.0]\nhigh_modes = \"quasistatic\"\n"
+                                            << ", 0.0, 0.0]\norientation = " << ball_turned_by((lon_r + 90) * deg) << "\nvelocity = [-0.1, 0.0, 0.0]\nhigh_modes = \"quasistatic\"\n"
                                             << "[[contact]]\nname = \"balls\"\nbody = \"left\"\nsurface = \"contact\"\ntarget = \"right\"\n"
                                             << "target_surface = \"contact\"\npenalty = 1e17\n";
     const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
@@ -236,26 +242,15 @@ TEST_CASE("impact detection: a spinning ball's closest approach crosses the seam
   // the touch at 10 ms. Tracked from the last call, the closest approach stops on the search's
   // bound at the seam, where the gap still falls beyond it; the grid must find it again.
   const test::ScratchDir dir("touch_seam");
-  const test::ProgramResult prep =
-      test::run_program(std::string(ISOSID_PREP_EXE) + " -q --coarse " + ISOSID_MODELS_DIR + "/pendulum_ball.model.toml -o " + dir.path("ball.sid.h5"));
-  INFO(prep.err);
-  REQUIRE(prep.exit_status == 0);
-  const format::Sid sid = format::read_sid(dir.path("ball.sid.h5"));
+  const format::Sid sid = scene_e_coarse_ball(dir);
   const double R = 0.01, deg = M_PI / 180, t_touch = 0.01;
-  // x-y-z angles of Rz(phi) R0 (R0: the model's poles to z, longitude 90 deg to +x); the facing
-  // longitude is 90 deg + phi, so phi0 = -70 deg and omega = -40 deg / t_touch
-  auto angles = [](double phi) {
-    const Eigen::Matrix3d A = Eigen::AngleAxisd(phi, Eigen::Vector3d::UnitZ()) * (Eigen::Matrix3d() << 0, 0, 1, 1, 0, 0, 0, 1, 0).finished();
-    std::ostringstream s;
-    s << std::setprecision(17) << "[" << std::atan2(-A(1, 2), A(2, 2)) << ", " << std::asin(A(0, 2)) << ", " << std::atan2(-A(0, 1), A(0, 0)) << "]";
-    return s.str();
-  };
+  // the facing longitude is 90 deg + phi: phi0 = -70 deg and omega = -40 deg / t_touch
   std::ofstream(dir.path("s.scene.toml")) << std::setprecision(17) << "[simulation]\ndimension = \"3d\"\nend_time = " << 1.02 * t_touch
                                           << "\noutput_interval = 1e-4\n[[flexible_body]]\nname = \"left\"\nsid = \"ball.sid.h5\"\nposition = ["
-                                          << -(R + 1e-3) << ", 0.0, 0.0]\norientation = " << angles(-70 * deg)
+                                          << -(R + 1e-3) << ", 0.0, 0.0]\norientation = " << ball_turned_by(-70 * deg)
                                           << "\nvelocity = [0.1, 0.0, 0.0]\nangular_velocity = [0.0, " << -40 * deg / t_touch
                                           << ", 0.0]\nhigh_modes = \"quasistatic\"\n[[flexible_body]]\nname = \"right\"\nsid = \"ball.sid.h5\"\n"
-                                          << "position = [" << R + 1e-3 << ", 0.0, 0.0]\norientation = " << angles(120 * deg)
+                                          << "position = [" << R + 1e-3 << ", 0.0, 0.0]\norientation = " << ball_turned_by(120 * deg)
                                           << "\nvelocity = [-0.1, 0.0, 0.0]\nhigh_modes = \"quasistatic\"\n"
                                           << "[[contact]]\nname = \"balls\"\nbody = \"left\"\nsurface = \"contact\"\ntarget = \"right\"\n"
                                           << "target_surface = \"contact\"\npenalty = 1e17\n";
