@@ -28,6 +28,7 @@ const format::ContactSurface& find_surface(const ContactSpec& spec, const Floati
 SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body, const ContactTarget& target)
     : spec_(spec), penalty_source_(spec.penalty_source), body_(body), target_(target), surface_(find_surface(spec, body)), dim_(body.sid().dim()) {
   if (spec_.penalty <= 0) {  // none in the scene: derived from the materials and the contact resolution
+    derived_ = true;
     spec_.penalty = derived_penalty(0);
     penalty_source_ = "derived: 1000 E*/h";
   }
@@ -57,7 +58,7 @@ double SurfaceContact::derived_penalty(double contact_radius) const {
 }
 
 void SurfaceContact::fit_penalty_to_contact_radius(double contact_radius) {
-  if (penalty_source_.rfind("derived", 0) != 0) return;  // a given penalty stays
+  if (!derived_) return;  // a given penalty stays (its source may tell how it was derived before)
   const double fitted = derived_penalty(contact_radius);
   if (fitted == spec_.penalty) return;  // the elements are larger than the contact radius
   spec_.penalty = fitted;

@@ -112,6 +112,7 @@ private:
 
   ContactSpec spec_;
   std::string penalty_source_;  ///< the spec's, or "derived: ..."
+  bool derived_ = false;        ///< the penalty was derived here (none given)
   const FloatingBody& body_;
   const ContactTarget& target_;
   const format::ContactSurface& surface_;

@@ -118,6 +118,14 @@ TEST_CASE("SurfaceContact: without a penalty in the scene it takes 1000 E*/max(a
   given.contact.fit_penalty_to_contact_radius(1.0);
   CHECK(given.contact.penalty_source() == "scene");
   CHECK(given.contact.penalty() == 1e10);
+  // and so does one the adaptive loop gives, whatever its source says: its penalty search
+  // starts from a derived value and probes ten times it
+  run::ContactSpec spec{"impact", "body", setup.surface().name, "ground", "", 1e10, 0.0, 1e-6};
+  spec.penalty_source = "derived: 1000 E*/a (the penalty search's start)";
+  run::SurfaceContact probed(spec, given.body, given.ground);
+  probed.fit_penalty_to_contact_radius(1.0);
+  CHECK(probed.penalty() == 1e10);
+  CHECK(probed.penalty_source() == spec.penalty_source);
 
   // two elastic bodies add their compliances
   format::Sid aluminium = setup.sid;
