@@ -2,6 +2,7 @@
 // when its distance has closed, at the point of the sphere facing the plane. The run must find
 // that instant (to 1e-9 s) and the point's parameter on the sphere's NURBS surface (to 1e-9 of
 // the parameter range), for a level and a tilted plane.
+#include "body/floating_body.hpp"
 #include "contact/deformed_patch.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene/scene.hpp"
@@ -190,8 +191,9 @@ format::Sid scene_e_coarse_ball(const test::ScratchDir& dir) {
 /// its longitude 90 deg to +x: its equator's point at longitude 90 deg + phi faces +x.
 std::string ball_turned_by(double phi) {
   const Eigen::Matrix3d A = Eigen::AngleAxisd(phi, Eigen::Vector3d::UnitZ()) * (Eigen::Matrix3d() << 0, 0, 1, 1, 0, 0, 0, 1, 0).finished();
-  std::ostringstream s;  // A = Rx(a) Ry(b) Rz(c), away from b = +-90 deg
-  s << std::setprecision(17) << "[" << std::atan2(-A(1, 2), A(2, 2)) << ", " << std::asin(A(0, 2)) << ", " << std::atan2(-A(0, 1), A(0, 0)) << "]";
+  const Eigen::Vector3d angles = run::tait_bryan_angles(A);
+  std::ostringstream s;
+  s << std::setprecision(17) << "[" << angles(0) << ", " << angles(1) << ", " << angles(2) << "]";
   return s.str();
 }
 }  // namespace
