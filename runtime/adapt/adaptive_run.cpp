@@ -43,6 +43,12 @@ constexpr int kMaxTries = 4;
 /// decades and more (seed 001's slow decrease has no limit).
 constexpr int kMaxPenaltyLowerings = 20;
 
+/// Gives contact k of `scene` a penalty, with where it comes from (summary.json's penalty_source).
+void give_penalty(Scene& scene, std::size_t k, double value, std::string source) {
+  scene.contacts[k].penalty = value;
+  scene.contacts[k].penalty_source = std::move(source);
+}
+
 double total_energy(const MultibodySystem& system, const double* y) { return system.energies(y, system.contact_states(y)).total(); }
 
 /// The next phase: `scene` on `sids` from `from`'s state at its time, the bodies' coordinates
@@ -296,8 +302,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                      out.penalty.value(), lower.value());
       out.penalty = lower;
       out.lowered = true;
-      fine_scene.contacts[k].penalty = lower.value();
-      fine_scene.contacts[k].penalty_source = "penalty search: lowered after an error";
+      give_penalty(fine_scene, k, lower.value(), "penalty search: lowered after an error");
       impact.point = run.centre;
       double change = 0;
       fine = switch_models(*fine, fine_scene, fine_sids, std::vector<ElasticMap>(fine->system().bodies().size()), change);
@@ -382,14 +387,13 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                                          "): clear the model cache " + scene_.adaptive.cache);
         maps[i] = f.transfer->coarse_to_fine;
       }
-      if (penalty) fine_scene.contacts[std::size_t(k)].penalty = penalty->value(), fine_scene.contacts[std::size_t(k)].penalty_source = penalty_source;
+      if (penalty) give_penalty(fine_scene, std::size_t(k), penalty->value(), penalty_source);
       double into = 0;
       fine = switch_models(*simulation, fine_scene, fine_sids, maps, into);
       if (search && !penalty) {  // the search starts from the scene's penalty, or the one derived at the touch
         penalty = PenaltyFactor(fine->system().contacts()[std::size_t(k)].penalty());
         penalty_source = fine->system().contacts()[std::size_t(k)].penalty_source() + " (the penalty search's start)";
-        fine_scene.contacts[std::size_t(k)].penalty = penalty->value();
-        fine_scene.contacts[std::size_t(k)].penalty_source = penalty_source;
+        give_penalty(fine_scene, std::size_t(k), penalty->value(), penalty_source);
       }
       json try_entry = {{"kind", "impact"}, {"contact", contact}, {"try", attempt}, {"touch_s", found.time},
                         {"width_m", w}, {"refined", requests}, {"switch_energy_change", into}};
@@ -466,8 +470,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       if (trial.done() && trial.result().value() != penalty->value()) {  // the accepted try gives way to the impact at the found penalty
         for (std::size_t e = accepted_entries; e < log.size(); ++e)
           log[e]["accepted"] = false, log[e]["decision"] = log[e]["decision"].get<std::string>() + "; penalty changed";
-        fine_scene.contacts[std::size_t(k)].penalty = trial.result().value();
-        fine_scene.contacts[std::size_t(k)].penalty_source = "penalty search: found by trial";
+        give_penalty(fine_scene, std::size_t(k), trial.result().value(), "penalty search: found by trial");
         double into = 0;
         fine = switch_models(*simulation, fine_scene, fine_sids, maps, into);
         json entry = {{"kind", "impact"}, {"contact", contact}, {"try", "penalty"}, {"touch_s", found.time}, {"width_m", impact.width},
