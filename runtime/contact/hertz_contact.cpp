@@ -15,6 +15,12 @@ HertzContact::HertzContact(const HertzContactSpec& spec, const FloatingBody& a, 
 
 double HertzContact::gap(const double* y) const { return (a_.r(y) - b_.r(y)).norm() - ra_ - rb_; }
 
+double HertzContact::gap_rate(const double* y) const {
+  const Eigen::Vector3d between = a_.r(y) - b_.r(y);
+  const double distance = between.norm();
+  return distance > 0 ? between.dot(a_.v(y) - b_.v(y)) / distance : 0.0;
+}
+
 ContactState HertzContact::apply(const double* y, GeneralizedForce& fa, GeneralizedForce& fb) const {
   ContactState state;
   const Eigen::Vector3d between = a_.r(y) - b_.r(y);

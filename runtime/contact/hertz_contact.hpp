@@ -21,6 +21,8 @@ public:
   double stiffness() const { return stiffness_; }
   /// The surfaces' distance at y (negative: overlap), m.
   double gap(const double* y) const;
+  /// The gap's rate at y (the centres' relative velocity along the line of centres), m/s.
+  double gap_rate(const double* y) const;
   /// Adds the force on each sphere to fa and fb; returns the state (force on a, world).
   ContactState apply(const double* y, GeneralizedForce& fa, GeneralizedForce& fb) const;
 

@@ -1,7 +1,10 @@
 // What a run reports of one Hertz contact between rigid spheres (contact/hertz_contact.hpp):
 // its force and overlap at the output samples, and each impact from the accepted steps:
 // onset and release (where the surfaces' gap, smooth in time, crosses zero between two
-// steps, found by linear interpolation), peak force and its time, impulse.
+// steps, found by linear interpolation), peak force and its time, impulse. The peak is that
+// of the deepest overlap, found between the two steps where the gap's rate changes sign by
+// the cubic through their gaps and rates: the largest force at the steps alone falls short
+// by (pi h / 2 T)^2 / 2 for steps h in an impact of duration T (0.3 % at 20 steps).
 #pragma once
 #include "contact/hertz_contact.hpp"
 #include "isosid/format/hdf5_file.hpp"
@@ -29,7 +32,7 @@ private:
   std::vector<double> force_, overlap_;  ///< per sample: 3, 1
   std::vector<Impact> impacts_;
   bool started_ = false, touching_ = false;
-  double last_t_ = 0, last_gap_ = 0, last_force_ = 0;
+  double last_t_ = 0, last_gap_ = 0, last_rate_ = 0, last_force_ = 0;
 };
 
 }  // namespace isosid::run
