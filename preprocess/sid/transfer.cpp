@@ -47,6 +47,8 @@ NodalTransfer nodal_transfer(const BodyModel& coarse, const BodyModel& fine) {
   const int pd = coarse.space.param_dim();
   std::vector<QuadratureRule> rules;
   for (int d = 0; d < pd; ++d) rules.push_back(gauss_legendre(coarse.space.degrees[std::size_t(d)] + 1));
+  std::vector<int> slot(std::size_t(fine.dofs.node_count()), -1);  // a fine node's column in the element's W
+  std::vector<int> local_nodes;
   for (const Element& el : coarse.space.elements) {
     const int nf = int(el.functions.size());
     Eigen::MatrixXd Rc(nf, nf);
@@ -65,15 +67,25 @@ NodalTransfer nodal_transfer(const BodyModel& coarse, const BodyModel& fine) {
       at_fine.push_back(*point_operator_at(fine.space, fine.dofs, fine.elasticity, el.patch, xi));  // inside: same patch
     }
     const Eigen::MatrixXd Rinv = Eigen::PartialPivLU<Eigen::MatrixXd>(Rc).inverse();  // functions x Gauss points
+    // the element's coefficients from the fine nodes at its Gauss points, summed per fine node
+    // before they become triplets: a triplet per Gauss point and node pair, summed only by
+    // setFromTriplets, made scene E's refined ball spend 21 of its 27 s in page faults
+    local_nodes.clear();
+    for (const PointOperator& op : at_fine)
+      for (const int node : op.nodes)
+        if (slot[std::size_t(node)] < 0) slot[std::size_t(node)] = int(local_nodes.size()), local_nodes.push_back(node);
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(nf, Eigen::Index(local_nodes.size()));  // functions x fine nodes
+    for (int g = 0; g < nf; ++g) {
+      const PointOperator& op = at_fine[std::size_t(g)];
+      for (std::size_t k = 0; k < op.nodes.size(); ++k) W.col(slot[std::size_t(op.nodes[k])]) += Rinv.col(g) * op.R(Eigen::Index(k));
+    }
     for (int f = 0; f < nf; ++f) {
       const int node = coarse.dofs.node_of(el.functions[std::size_t(f)]);
       shares[std::size_t(node)] += 1.0;
-      for (int g = 0; g < nf; ++g) {
-        const PointOperator& op = at_fine[std::size_t(g)];
-        for (std::size_t k = 0; k < op.nodes.size(); ++k)
-          for (int a = 0; a < dim; ++a) t.emplace_back(node * dim + a, op.nodes[k] * dim + a, Rinv(f, g) * op.R(Eigen::Index(k)));
-      }
+      for (std::size_t j = 0; j < local_nodes.size(); ++j)
+        for (int a = 0; a < dim; ++a) t.emplace_back(node * dim + a, local_nodes[j] * dim + a, W(f, Eigen::Index(j)));
     }
+    for (const int node : local_nodes) slot[std::size_t(node)] = -1;
   }
   for (auto& x : t) x = {x.row(), x.col(), x.value() / shares[std::size_t(x.row() / dim)]};  // average over elements
   out.fine_to_coarse.resize(coarse.dofs.total_dofs(), fine.dofs.total_dofs());
