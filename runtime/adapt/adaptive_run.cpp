@@ -12,6 +12,7 @@
 #include "isosid/format/atomic_output.hpp"
 #include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"
+#include "output/paraview_series.hpp"
 #include "output/recorder.hpp"
 #include "output/reference_comparison.hpp"
 #include "output/run_report.hpp"
@@ -34,6 +35,10 @@ namespace {
 
 using nlohmann::json;
 
+/// An impact phase's output samples per Hertz contact time (its force history in results.h5),
+/// and its ParaView frames: one every few samples.
+constexpr double kSamplesPerImpact = 100, kSamplesPerFrame = 4;
+
 /// Seed 001 Sect. 4.2: the contact interval is used best at 70 % (the first impact's width
 /// makes the Hertz contact diameter 70 % of it).
 constexpr double kTargetUtilization = 0.7, kMinUtilization = 0.5, kMaxUtilization = 0.9;
@@ -42,6 +47,16 @@ constexpr int kMaxTries = 4;
 /// Errors in one impact run before the next ends the run: the penalty is then down by two
 /// decades and more (seed 001's slow decrease has no limit).
 constexpr int kMaxPenaltyLowerings = 20;
+
+/// The output interval of an impact of contact k from state y: the scene's [adaptive]
+/// impact_output_interval, or a hundredth of the impact's Hertz contact time, at most the
+/// scene's output interval (a coarse phase's samples are far too sparse for an impact).
+double impact_output_interval(const Scene& scene, const SurfaceContact& contact, const double* y) {
+  if (scene.adaptive.impact_output_interval > 0) return scene.adaptive.impact_output_interval;
+  const double interval = scene.simulation.output_interval;
+  const auto estimate = estimate_impact(contact, y);
+  return estimate && estimate->contact_time > 0 ? std::min(interval, estimate->contact_time / kSamplesPerImpact) : interval;
+}
 
 /// Gives contact k of `scene` a penalty, with where it comes from (summary.json's penalty_source).
 void give_penalty(Scene& scene, std::size_t k, double value, std::string source) {
@@ -155,8 +170,6 @@ IntervalDecision decide_interval(double utilization, bool beyond, double width) 
 
 AdaptiveRun::AdaptiveRun(Scene scene, std::string out_dir, bool quiet)
     : scene_(std::move(scene)), out_dir_(std::move(out_dir)), quiet_(quiet) {
-  if (scene_.output.paraview)
-    throw format::InputError(scene_.file, "output.paraview", "ParaView output of runs with adaptive bodies is not available yet");
   if (!scene_.hertz_contacts.empty())  // the phases' results would be joined without them
     throw format::InputError(scene_.file, "hertz_contact", "Hertz contacts in runs with adaptive bodies are not available yet");
 }
@@ -183,6 +196,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
 
   std::vector<json> summaries;        // of the phases that make up the run
   std::vector<std::string> files;
+  std::vector<format::vtk::CollectionEntry> frames;  // their ParaView frames, relative to out_dir/paraview
   json log = json::array();           // every phase run, tries included
   json searches = json::array();      // the penalty searches (seed 001 Fig. 3)
   Result result;
@@ -200,23 +214,28 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     std::string error;               ///< PhaseRecorder::error
     PhaseRecorder::Window window;
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< impact phases: the region's centre at the end
+    std::vector<format::vtk::CollectionEntry> frames;  ///< relative to out_dir/paraview
   };
   auto run_phase = [&](Simulation& simulation, const PhaseRecorder::Impact& impact, const std::string& label, json& entry) {
     PhaseRecorder recorder(simulation, adaptive_contact, impact, stop_requested);
-    if (phase == 0) {
+    std::optional<ParaviewSeries> series;  // refuses a flexible body without a viewing mesh
+    char name[96];
+    std::snprintf(name, sizeof name, "%02d-%s", phase, label.c_str());
+    const std::string folder = (std::filesystem::path(out_dir_) / "phases" / name).string();
+    if (scene_.output.paraview) series.emplace(simulation.system(), simulation.scene(), folder);
+    if (phase++ == 0) {
       // the scene, its models and monitors (the recorder refuses those the models lack) are
-      // accepted: the folder now holds this run, and no phases of an earlier one
+      // accepted: the folder now holds this run, and no phases or frames of an earlier one
       mark_run_started(out_dir_, scene_.file);
       std::filesystem::remove_all(std::filesystem::path(out_dir_) / "phases");
+      std::filesystem::remove_all(std::filesystem::path(out_dir_) / "paraview");
     }
+    if (series) recorder.draw_frames(&*series);
     const double start = simulation.time();
     PhaseRun out;
     out.outcome = simulation.run(recorder);
     out.over = recorder.phase_over() && out.outcome.status == "interrupted";
     if (out.over) out.outcome.status = "completed";
-    char name[96];
-    std::snprintf(name, sizeof name, "%02d-%s", phase++, label.c_str());
-    const std::string folder = (std::filesystem::path(out_dir_) / "phases" / name).string();
     std::filesystem::create_directories(folder);
     out.summary = write_run_report(folder, recorder, simulation, out.outcome);
     for (const PhaseRecorder::Found& other : recorder.overlapping())
@@ -241,14 +260,25 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     out.beyond = recorder.beyond();
     out.error = recorder.error();
     out.window = recorder.window();
+    if (series) {
+      series->write_collection();
+      for (format::vtk::CollectionEntry e : series->entries()) {
+        e.file = (std::filesystem::path("..") / "phases" / name / "paraview" / e.file).generic_string();
+        out.frames.push_back(std::move(e));
+      }
+    }
     return out;
   };
   // a phase's results join the run's, unless it failed before its first step: then it holds
   // only its start, where the phase before it ended, and that start may be non-finite (its
   // folder keeps it)
-  auto keep = [&](const json& summary, const std::string& file) {
-    summaries.push_back(summary);
-    if (summary["status"] != "failed" || summary["steps"].get<long>() > 0) files.push_back(file);
+  auto keep = [&](const PhaseRun& run) {
+    summaries.push_back(run.summary);
+    if (run.summary["status"] != "failed" || run.summary["steps"].get<long>() > 0) files.push_back(run.file);
+    // a phase starts where the one before it ended: its first frame replaces one there
+    if (!run.frames.empty())
+      std::erase_if(frames, [&](const format::vtk::CollectionEntry& e) { return e.time >= run.frames.front().time; });
+    frames.insert(frames.end(), run.frames.begin(), run.frames.end());
   };
   // the coarse phases' contacts are meant to be coarse: their resolution warnings say nothing
   auto drop_resolution_warnings = [](const MultibodySystem& system, json& summary) {
@@ -321,7 +351,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     coarse_phase.after = last_impact;
     PhaseRun coarse_run = run_phase(*simulation, coarse_phase, "coarse", entry);
     drop_resolution_warnings(simulation->system(), coarse_run.summary);
-    keep(coarse_run.summary, coarse_run.file);
+    keep(coarse_run);
     log.push_back(entry);
     if (!coarse_run.over) {
       result.outcome = coarse_run.outcome;
@@ -338,6 +368,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
         throw format::InputError(scene_.file, "adaptive.interval_width", "needed: contact '" + contact + "' has no Hertz estimate at its touch");
       width[std::size_t(k)] = snapped_width(2 * estimate->contact_radius / kTargetUtilization);
     }
+    const double sample_interval = impact_output_interval(scene_, simulation->system().contacts()[std::size_t(k)], simulation->state().data());
     std::optional<PenaltyFactor> penalty = learned_penalty[std::size_t(k)];  // set by the first try if not learned
     std::string penalty_source = "penalty search: learned at an earlier impact";
     std::unique_ptr<Simulation> fine;
@@ -353,6 +384,10 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       const double w = width[std::size_t(k)];
       fine_scene = coarse;
       fine_scene.simulation = scene_.simulation;  // the impact under the scene's own integrator
+      fine_scene.simulation.output_interval = sample_interval;
+      // frames every few samples, or at the scene's own interval where that is shorter
+      fine_scene.output.paraview_interval =
+          std::max(sample_interval, std::min(ParaviewSeries::frame_interval(scene_), kSamplesPerFrame * sample_interval));
       maps.assign(simulation->system().bodies().size(), ElasticMap());
       json requests = json::array();
       refined.clear();
@@ -396,7 +431,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
         give_penalty(fine_scene, std::size_t(k), penalty->value(), penalty_source);
       }
       json try_entry = {{"kind", "impact"}, {"contact", contact}, {"try", attempt}, {"touch_s", found.time},
-                        {"width_m", w}, {"refined", requests}, {"switch_energy_change", into}};
+                        {"width_m", w}, {"refined", requests}, {"switch_energy_change", into}, {"output_interval_s", sample_interval}};
       impact = {k, centre, w, attempt < kMaxTries, -1, PenaltySearch::kContactSteps, search};
       ImpactRun run = run_impact(fine, fine_scene, fine_sids, impact, "impact-" + contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""),
                                  try_entry);
@@ -484,7 +519,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
         impact_over = accepted.over;
       }
     }
-    for (const PhaseRun& part : accepted.parts) keep(part.summary, part.file);
+    for (const PhaseRun& part : accepted.parts) keep(part);
     if (search) learned_penalty[std::size_t(k)] = accepted.penalty;
     if (interrupted) {
       result.outcome = {"interrupted", ""};
@@ -514,6 +549,11 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   // the run's results from its phases
   const std::string results = (std::filesystem::path(out_dir_) / "results.h5").string();
   join_phase_results(files, results, scene_.simulation.output_interval);
+  if (scene_.output.paraview) {  // one time series over the phases that make up the run
+    const std::filesystem::path dir = std::filesystem::path(out_dir_) / "paraview";
+    std::filesystem::create_directories(dir);
+    format::vtk::write_pvd((dir / "scene.pvd").string(), frames);
+  }
   json summary = join_phase_summaries(summaries, results, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(),
                                       double(std::clock() - cpu0) / CLOCKS_PER_SEC);
   summary["status"] = result.outcome.status;

@@ -23,9 +23,7 @@ constexpr double kDefaultFrames = 200;
 ParaviewSeries::ParaviewSeries(const MultibodySystem& system, const Scene& scene, std::string results_dir)
     : system_(system),
       dir_((std::filesystem::path(std::move(results_dir)) / "paraview").string()),
-      interval_(scene.output.paraview_interval > 0
-                    ? scene.output.paraview_interval
-                    : std::max(scene.simulation.output_interval, scene.simulation.end_time / kDefaultFrames)) {
+      interval_(frame_interval(scene)) {
   for (const auto& b : system.bodies()) {
     const BodySpec* spec = scene.body(b->name());
     if (spec && spec->rigid) continue;
@@ -36,6 +34,11 @@ ParaviewSeries::ParaviewSeries(const MultibodySystem& system, const Scene& scene
                        b->sid().material.poisson_ratio});
   }
   for (const SurfaceContact& c : system.contacts()) contact_stems_.push_back("contact_" + vtk::file_safe(c.name()));
+}
+
+double ParaviewSeries::frame_interval(const Scene& scene) {
+  return scene.output.paraview_interval > 0 ? scene.output.paraview_interval
+                                            : std::max(scene.simulation.output_interval, scene.simulation.end_time / kDefaultFrames);
 }
 
 void ParaviewSeries::sample(double t, const double* y) {

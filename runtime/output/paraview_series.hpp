@@ -19,6 +19,9 @@ public:
   /// Refuses (InputError on the scene's [output].paraview) a flexible body whose SID has no
   /// viewing mesh. Writes nothing yet.
   ParaviewSeries(const MultibodySystem& system, const Scene& scene, std::string results_dir);
+  /// s between the frames of `scene`: its paraview_interval, or its output interval but at
+  /// most 200 frames.
+  static double frame_interval(const Scene& scene);
 
   /// Writes a frame at the first sample at or after each frame time (the system's
   /// quasistatic coordinates must be those of y, as after MultibodySystem::contact_states).
@@ -27,6 +30,10 @@ public:
   /// interrupted run) and returns its path.
   std::string write_collection() const;
   int frames() const { return frames_; }
+  /// The frames' files so far, relative to dir() (what write_collection lists).
+  const std::vector<format::vtk::CollectionEntry>& entries() const { return entries_; }
+  /// results_dir/paraview
+  const std::string& dir() const { return dir_; }
 
 private:
   struct BodyView {

@@ -6,6 +6,7 @@
 #include "isosid/format/hdf5_file.hpp"
 #include "contact/deformed_patch.hpp"
 #include "output/force_spectrum.hpp"
+#include "output/paraview_series.hpp"
 #include "output/reference_comparison.hpp"
 #include "output/velocity_events.hpp"
 #include "isosid/common/number_text.hpp"
@@ -125,6 +126,7 @@ void Recorder::sample(double t, const double* y) {
     if (time_.size() == 1) monitor_events_[m].start(t, value);
   }
   for (StressMonitor& s : stress_monitors_) s.sample(y);
+  if (frames_) frames_->sample(t, y);  // the quasistatic coordinates are y's (contact_states above)
 }
 
 void Recorder::step(double t, const double* y) {

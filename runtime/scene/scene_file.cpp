@@ -401,7 +401,7 @@ Scene read_scene_file(const std::string& path) {
   scene.adaptive.coarse_integrator = scene.simulation.integrator;  // unless [adaptive] says otherwise
   scene.adaptive.coarse_max_step = scene.simulation.max_step;
   if (auto a = top.optional_table("adaptive")) {
-    a->allow_only({"cache", "interval_width", "coarse_integrator", "coarse_max_step", "penalty_search"});
+    a->allow_only({"cache", "interval_width", "coarse_integrator", "coarse_max_step", "penalty_search", "impact_output_interval"});
     scene.adaptive.cache = resolve(path, a->string("cache", ""));
     scene.adaptive.interval_width = a->positive("interval_width", 0);
     scene.adaptive.coarse_integrator = read_integrator(*a, "coarse_integrator", scene.adaptive.coarse_integrator);
@@ -409,6 +409,9 @@ Scene read_scene_file(const std::string& path) {
       a->fail("coarse_integrator", "the leapfrog's fixed step and the adaptive integrators' tolerances do not mix between phases");
     scene.adaptive.coarse_max_step = a->positive("coarse_max_step", scene.adaptive.coarse_max_step);
     scene.adaptive.penalty_search = a->boolean("penalty_search", true);
+    scene.adaptive.impact_output_interval = a->positive("impact_output_interval", 0);
+    if (scene.adaptive.impact_output_interval > scene.simulation.output_interval)
+      a->fail("impact_output_interval", "exceeds simulation.output_interval (impact phases sample at least as often as the run)");
     if (!scene.has_adaptive_bodies()) top.fail("adaptive", "no flexible_body is adaptive");
   }
   if (scene.adaptive.cache.empty()) scene.adaptive.cache = resolve(path, ".isosid-cache");

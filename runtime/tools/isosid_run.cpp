@@ -27,17 +27,12 @@ volatile std::sig_atomic_t g_stop_signal = 0;
 void request_stop(int signal) { g_stop_signal = signal; }
 
 /// The recorder, with its progress on stderr about once a second unless quiet (one updating
-/// line on a terminal), and the ParaView frames if the scene asks for them.
+/// line on a terminal).
 class ReportingRecorder : public run::Recorder {
 public:
-  ReportingRecorder(const run::Simulation& simulation, bool quiet, run::ParaviewSeries* paraview)
-      : Recorder(simulation.system(), simulation.scene()), quiet_(quiet), paraview_(paraview) {}
+  ReportingRecorder(const run::Simulation& simulation, bool quiet) : Recorder(simulation.system(), simulation.scene()), quiet_(quiet) {}
   /// Ends the progress line before the run's report.
   void end_progress() { line_.finish(); }
-  void sample(double t, const double* y) override {
-    Recorder::sample(t, y);  // solves the quasistatic coordinates for y first
-    if (paraview_) paraview_->sample(t, y);
-  }
   void progress(double t, double end_time, long steps) override {
     if (quiet_) return;
     const double fraction = t / end_time;
@@ -51,7 +46,6 @@ public:
 
 private:
   bool quiet_;
-  run::ParaviewSeries* paraview_;
   common::ProgressLine line_{"isosid-run"};
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 };
@@ -118,7 +112,8 @@ int main(int argc, char** argv) {
 
     std::optional<run::ParaviewSeries> paraview;
     if (simulation.scene().output.paraview) paraview.emplace(simulation.system(), simulation.scene(), out_dir);
-    ReportingRecorder recorder(simulation, quiet, paraview ? &*paraview : nullptr);
+    ReportingRecorder recorder(simulation, quiet);
+    if (paraview) recorder.draw_frames(&*paraview);
     if (g_stop_signal) {
       std::cerr << "isosid-run: interrupted by " << strsignal(g_stop_signal) << " before the run started\n";
       return 128 + int(g_stop_signal);

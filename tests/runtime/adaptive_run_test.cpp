@@ -9,6 +9,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <set>
 
 using namespace isosid;
 using Catch::Matchers::Contains;
@@ -64,6 +66,50 @@ TEST_CASE("adaptive: a sphere's impact on its refined model, between coarse phas
   CHECK(std::abs(a["start_s"].get<double>() - w["start_s"].get<double>()) < 1e-8);
   CHECK(std::abs(a["end_s"].get<double>() - w["end_s"].get<double>()) < 1e-8);
   CHECK(a["touches"].size() == 1);
+}
+
+TEST_CASE("adaptive: an impact is sampled finely however sparse the run's output, and ParaView shows the run's phases as one series",
+          "[runtime][adaptive][paraview]") {
+  const test::ScratchDir dir("adaptive_frames");
+  test::copy_model_file(dir, "sphere_axisym_thb.model.toml");
+  std::ofstream(dir.path("sphere_axisym_thb.model.toml"), std::ios::app) << "\n[visual]\nsubdivisions = 1\nstress = true\n";
+  // the run samples every 50 us, under the impact's 83 us (scene E samples 1e-4 s, its impacts
+  // last 65 us: before, their results held the touch and the release, and no force between)
+  const std::string scene = test::replace(test::model_text("sphere_hertz_adaptive.scene.toml"), "output_interval = 0.5e-6", "output_interval = 50e-6");
+  const nlohmann::json s = test::run_scene(dir, scene + "[output]\nparaview = true\n");
+  const auto impacts = phases_of(s, "impact");
+  REQUIRE(impacts.size() == 1);
+  // a hundredth of the impact's Hertz contact time (83.1 us; the estimate at the touch)
+  CHECK(impacts[0]["output_interval_s"].get<double>() == Approx(0.831e-6).epsilon(0.02));
+  const double start = s["contacts"][0]["start_s"], end = s["contacts"][0]["end_s"];
+  const Eigen::VectorXd t = format::h5::Reader(dir.path("out-s.scene.toml/results.h5")).vector("/time");
+  const auto in_contact = std::count_if(t.data(), t.data() + t.size(), [&](double x) { return x > start && x < end; });
+  CHECK(in_contact >= 95);
+  CHECK(test::rel_error(s, "peak_force_n") < 0.01);  // the impact itself as in the test above
+
+  // paraview/scene.pvd: the coarse phases' and the impact's frames, each time once, the
+  // impact's every 4 samples (25 per contact time), the files in the phases' folders
+  const std::string pvd_dir = dir.path("out-s.scene.toml/paraview");
+  std::ifstream in(pvd_dir + "/scene.pvd");
+  const std::string pvd((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::regex entry("<DataSet timestep=\"([^\"]+)\" part=\"0\" name=\"sphere\" file=\"([^\"]+)\"/>");
+  std::vector<double> times;
+  std::set<std::string> phases;
+  int frames_in_contact = 0;
+  for (auto m = std::sregex_iterator(pvd.begin(), pvd.end(), entry); m != std::sregex_iterator(); ++m) {
+    const double time = std::stod((*m)[1]);
+    const std::string file = (*m)[2];
+    INFO(file);
+    CHECK(std::filesystem::file_size(pvd_dir + "/" + file) > 1000);
+    CHECK((times.empty() || time > times.back()));
+    times.push_back(time);
+    phases.insert(file.substr(0, file.find("/paraview/")));
+    frames_in_contact += time > start && time < end;
+  }
+  CHECK(phases == std::set<std::string>{"../phases/00-coarse", "../phases/01-impact-impact", "../phases/02-coarse"});
+  CHECK(frames_in_contact >= 23);
+  CHECK(times.back() == Approx(150e-6));  // the end of the run
+  CHECK(std::filesystem::exists(dir.path("out-s.scene.toml/phases/01-impact-impact/paraview/scene.pvd")));  // each phase alone
 }
 
 TEST_CASE("adaptive: a cached refined SID whose transfer fits other coarse modes is not used", "[runtime][adaptive]") {
@@ -220,7 +266,8 @@ TEST_CASE("adaptive: bad adaptive input is refused with exit 2 and one line", "[
   CHECK(summary["status"] == "failed");
   CHECK_THAT(summary["failure"].get<std::string>(), Contains("no [refinement.hierarchical]"));
   CHECK(summary["adaptive"]["phases"].size() == 1);
-  refused(scene + "[output]\nparaview = true\n", "ParaView output of runs with adaptive bodies");
+  refused(scene + "[output]\nparaview = true\n", "has no viewing mesh: add [visual] to its model file");
+  refused(scene + "[adaptive]\nimpact_output_interval = 1e-6\n", "exceeds simulation.output_interval");
   refused(scene + "[adaptive]\ncoarse_integrator = \"leapfrog\"\n", "do not mix between phases");
   refused(scene + "[adaptive]\ncoarse_integrator = \"rk4\"\n", "unknown integrator 'rk4'");
 }
