@@ -22,12 +22,12 @@ Extremum hermite_minimum(double t0, double g0, double r0, double t1, double g1, 
   if (std::abs(a) <= 1e-12 * (std::abs(b) + std::abs(c))) {
     if (b > 0) s = -c / (2 * b);
   } else {
-    // the root of the slope where it turns upward: the larger of a's parabola for a > 0, the
-    // smaller for a < 0; q keeps the formula free of cancellation
+    // of the slope's two roots, the one in [0, 1] where it rises (g'' >= 0); q keeps the
+    // quadratic formula free of cancellation
     const double disc = std::max(0.0, b * b - 3 * a * c);
     const double q = -(b + std::copysign(std::sqrt(disc), b));
-    const double r1_ = q / (3 * a), r2_ = q != 0 ? c / q : r1_;
-    for (const double root : {r1_, r2_})
+    const double first = q / (3 * a), second = q != 0 ? c / q : first;
+    for (const double root : {first, second})
       if (root >= 0 && root <= 1 && 6 * a * root + 2 * b >= 0) s = root;
   }
   s = std::clamp(s, 0.0, 1.0);
