@@ -48,13 +48,12 @@ constexpr int kMaxTries = 4;
 /// decades and more (seed 001's slow decrease has no limit).
 constexpr int kMaxPenaltyLowerings = 20;
 
-/// The output interval of an impact of contact k from state y: the scene's [adaptive]
-/// impact_output_interval, or a hundredth of the impact's Hertz contact time, at most the
-/// scene's output interval (a coarse phase's samples are far too sparse for an impact).
-double impact_output_interval(const Scene& scene, const SurfaceContact& contact, const double* y) {
+/// The output interval of an impact with the Hertz estimate `estimate` at its touch: the
+/// scene's [adaptive] impact_output_interval, or a hundredth of the impact's contact time, at
+/// most the scene's output interval (a coarse phase's samples are far too sparse for an impact).
+double impact_output_interval(const Scene& scene, const std::optional<ImpactEstimate>& estimate) {
   if (scene.adaptive.impact_output_interval > 0) return scene.adaptive.impact_output_interval;
   const double interval = scene.simulation.output_interval;
-  const auto estimate = estimate_impact(contact, y);
   return estimate && estimate->contact_time > 0 ? std::min(interval, estimate->contact_time / kSamplesPerImpact) : interval;
 }
 
@@ -191,6 +190,10 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     adaptive_contact.push_back((slave && slave->adaptive) || (target && target->adaptive && !c.target_surface.empty()));
   }
   std::vector<double> width(scene_.contacts.size(), scene_.adaptive.interval_width);  // learned per contact
+  // what an impact's accepted width taught, relative to its Hertz estimate's width (the contact
+  // diameter over 70 %), per contact: impacts of one contact differ in force, and the contact
+  // radius with it (scene E's: 36 to 840 N), so the next impact's width scales with its own estimate
+  std::vector<double> width_per_estimate(scene_.contacts.size(), 0.0);
   std::vector<std::optional<PenaltyFactor>> learned_penalty(scene_.contacts.size());  // the penalty search's, per contact
   const bool search = scene_.adaptive.penalty_search;
 
@@ -362,13 +365,16 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     const PhaseRecorder::Found found = *coarse_run.found;
     const int k = found.contact;
     const std::string contact = scene_.contacts[std::size_t(k)].name;
+    const auto estimate = estimate_impact(simulation->system().contacts()[std::size_t(k)], simulation->state().data());
+    const double estimated_width = estimate ? 2 * estimate->contact_radius / kTargetUtilization : 0.0;
+    if (estimated_width > 0 && width_per_estimate[std::size_t(k)] > 0)
+      width[std::size_t(k)] = snapped_width(width_per_estimate[std::size_t(k)] * estimated_width);
     if (!(width[std::size_t(k)] > 0)) {
-      const auto estimate = estimate_impact(simulation->system().contacts()[std::size_t(k)], simulation->state().data());
-      if (!estimate)
+      if (!(estimated_width > 0))
         throw format::InputError(scene_.file, "adaptive.interval_width", "needed: contact '" + contact + "' has no Hertz estimate at its touch");
-      width[std::size_t(k)] = snapped_width(2 * estimate->contact_radius / kTargetUtilization);
+      width[std::size_t(k)] = snapped_width(estimated_width);
     }
-    const double sample_interval = impact_output_interval(scene_, simulation->system().contacts()[std::size_t(k)], simulation->state().data());
+    const double sample_interval = impact_output_interval(scene_, estimate);
     std::optional<PenaltyFactor> penalty = learned_penalty[std::size_t(k)];  // set by the first try if not learned
     std::string penalty_source = "penalty search: learned at an earlier impact";
     std::unique_ptr<Simulation> fine;
@@ -431,7 +437,8 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
         give_penalty(fine_scene, std::size_t(k), penalty->value(), penalty_source);
       }
       json try_entry = {{"kind", "impact"}, {"contact", contact}, {"try", attempt}, {"touch_s", found.time},
-                        {"width_m", w}, {"refined", requests}, {"switch_energy_change", into}, {"output_interval_s", sample_interval}};
+                        {"width_m", w}, {"estimated_width_m", estimated_width}, {"refined", requests}, {"switch_energy_change", into},
+                        {"output_interval_s", sample_interval}};
       impact = {k, centre, w, attempt < kMaxTries, -1, PenaltySearch::kContactSteps, search};
       ImpactRun run = run_impact(fine, fine_scene, fine_sids, impact, "impact-" + contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""),
                                  try_entry);
@@ -455,8 +462,9 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
         e.update({{"decision", d.reason}, {"accepted", accepted_now}, {"next_width_m", d.next_width}});
         log.push_back(e);
       }
-      width[std::size_t(k)] = snapped_width(d.next_width);  // the next try, or the contact's next impact, starts from it
+      width[std::size_t(k)] = snapped_width(d.next_width);  // the next try starts from it
       if (accepted_now) {
+        if (estimated_width > 0) width_per_estimate[std::size_t(k)] = d.next_width / estimated_width;  // and the next impact
         impact_over = run.over;
         accepted = std::move(run);
         break;
