@@ -36,8 +36,9 @@ namespace {
 using nlohmann::json;
 
 /// An impact phase's output samples per Hertz contact time (its force history in results.h5),
-/// and its ParaView frames: one every few samples.
-constexpr double kSamplesPerImpact = 100, kSamplesPerFrame = 4;
+/// but at most this many per scene output interval (a contact that stays closed keeps its
+/// phase going), and its ParaView frames: one every few samples.
+constexpr double kSamplesPerImpact = 100, kMaxSamplesPerOutput = 1000, kSamplesPerFrame = 4;
 
 /// Seed 001 Sect. 4.2: the contact interval is used best at 70 % (the first impact's width
 /// makes the Hertz contact diameter 70 % of it).
@@ -50,11 +51,13 @@ constexpr int kMaxPenaltyLowerings = 20;
 
 /// The output interval of an impact with the Hertz estimate `estimate` at its touch: the
 /// scene's [adaptive] impact_output_interval, or a hundredth of the impact's contact time, at
-/// most the scene's output interval (a coarse phase's samples are far too sparse for an impact).
+/// most the scene's output interval (a coarse phase's samples are far too sparse for an
+/// impact). Without an estimate (flat or conforming surfaces) the scene's own.
 double impact_output_interval(const Scene& scene, const std::optional<ImpactEstimate>& estimate) {
   if (scene.adaptive.impact_output_interval > 0) return scene.adaptive.impact_output_interval;
   const double interval = scene.simulation.output_interval;
-  return estimate && estimate->contact_time > 0 ? std::min(interval, estimate->contact_time / kSamplesPerImpact) : interval;
+  if (!estimate || !(estimate->contact_time > 0)) return interval;
+  return std::min(interval, std::max(estimate->contact_time / kSamplesPerImpact, interval / kMaxSamplesPerOutput));
 }
 
 /// Gives contact k of `scene` a penalty, with where it comes from (summary.json's penalty_source).
@@ -278,6 +281,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   auto keep = [&](const PhaseRun& run) {
     summaries.push_back(run.summary);
     if (run.summary["status"] != "failed" || run.summary["steps"].get<long>() > 0) files.push_back(run.file);
+    if (run.summary["status"] == "failed" && run.summary["steps"].get<long>() == 0) return;  // its frame may be of that start
     // a phase starts where the one before it ended: its first frame replaces one there
     if (!run.frames.empty())
       std::erase_if(frames, [&](const format::vtk::CollectionEntry& e) { return e.time >= run.frames.front().time; });
@@ -464,7 +468,9 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       }
       width[std::size_t(k)] = snapped_width(d.next_width);  // the next try starts from it
       if (accepted_now) {
-        if (estimated_width > 0) width_per_estimate[std::size_t(k)] = d.next_width / estimated_width;  // and the next impact
+        // the next impact starts from the width asked for next, relative to this one's estimate
+        // (none: from the width itself)
+        width_per_estimate[std::size_t(k)] = estimated_width > 0 ? d.next_width / estimated_width : 0.0;
         impact_over = run.over;
         accepted = std::move(run);
         break;
@@ -557,11 +563,6 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   // the run's results from its phases
   const std::string results = (std::filesystem::path(out_dir_) / "results.h5").string();
   join_phase_results(files, results, scene_.simulation.output_interval);
-  if (scene_.output.paraview) {  // one time series over the phases that make up the run
-    const std::filesystem::path dir = std::filesystem::path(out_dir_) / "paraview";
-    std::filesystem::create_directories(dir);
-    format::vtk::write_pvd((dir / "scene.pvd").string(), frames);
-  }
   json summary = join_phase_summaries(summaries, results, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(),
                                       double(std::clock() - cpu0) / CLOCKS_PER_SEC);
   summary["status"] = result.outcome.status;
@@ -584,6 +585,15 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                          {"phases", log}};
   summary["reference"] = compare_with_reference(summary, scene_.reference);
   format::write_text_atomically((std::filesystem::path(out_dir_) / "summary.json").string(), summary.dump(2) + "\n");
+  if (scene_.output.paraview) {  // one time series over the phases that make up the run
+    const std::filesystem::path path = std::filesystem::path(out_dir_) / "paraview" / "scene.pvd";
+    try {
+      std::filesystem::create_directories(path.parent_path());
+      format::vtk::write_pvd(path.string(), frames);
+    } catch (const std::exception& e) {  // the results are written: the run fails with them kept
+      throw format::ComputationError("ParaView collection " + path.string() + ": " + e.what());
+    }
+  }
   result.summary = summary;
   result.end_time = summary["end_time_s"].get<double>();
   if (refusal) std::rethrow_exception(refusal);  // exit 2, with the results so far written

@@ -3,8 +3,9 @@
 // onset and release (where the surfaces' gap, smooth in time, crosses zero between two
 // steps, found by linear interpolation), peak force and its time, impulse. The peak is that
 // of the deepest overlap, found between the two steps where the gap's rate changes sign by
-// the cubic through their gaps and rates: the largest force at the steps alone falls short
-// by (pi h / 2 T)^2 / 2 for steps h in an impact of duration T (0.3 % at 20 steps).
+// the cubic through their gaps and rates: the largest force at the steps alone falls short by
+// up to about 1.5 (pi h / 2 T)^2 / 2 for steps h in an impact of duration T (the overlap's
+// shortfall of a half-sine, times the force's 1.5 power; scene E's Hertz variant: 0.3 %).
 #pragma once
 #include "contact/hertz_contact.hpp"
 #include "isosid/format/hdf5_file.hpp"

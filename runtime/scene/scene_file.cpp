@@ -412,6 +412,8 @@ Scene read_scene_file(const std::string& path) {
     scene.adaptive.impact_output_interval = a->positive("impact_output_interval", 0);
     if (scene.adaptive.impact_output_interval > scene.simulation.output_interval)
       a->fail("impact_output_interval", "exceeds simulation.output_interval (impact phases sample at least as often as the run)");
+    if (scene.adaptive.impact_output_interval > 0 && scene.simulation.end_time / scene.adaptive.impact_output_interval > kMaxSamples)
+      a->fail("impact_output_interval", "end_time / impact_output_interval exceeds the limit of 1e7 samples");
     if (!scene.has_adaptive_bodies()) top.fail("adaptive", "no flexible_body is adaptive");
   }
   if (scene.adaptive.cache.empty()) scene.adaptive.cache = resolve(path, ".isosid-cache");

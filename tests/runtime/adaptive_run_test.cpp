@@ -107,6 +107,9 @@ TEST_CASE("adaptive: an impact is sampled finely however sparse the run's output
     frames_in_contact += time > start && time < end;
   }
   CHECK(phases == std::set<std::string>{"../phases/00-coarse", "../phases/01-impact-impact", "../phases/02-coarse"});
+  // each frame once for each part: the sphere and the contact's points
+  const std::regex any_part("<DataSet ");
+  CHECK(std::distance(std::sregex_iterator(pvd.begin(), pvd.end(), any_part), std::sregex_iterator()) == long(2 * times.size()));
   CHECK(frames_in_contact >= 23);
   CHECK(times.back() == Approx(150e-6));  // the end of the run
   CHECK(std::filesystem::exists(dir.path("out-s.scene.toml/phases/01-impact-impact/paraview/scene.pvd")));  // each phase alone
@@ -268,6 +271,7 @@ TEST_CASE("adaptive: bad adaptive input is refused with exit 2 and one line", "[
   CHECK(summary["adaptive"]["phases"].size() == 1);
   refused(scene + "[output]\nparaview = true\n", "has no viewing mesh: add [visual] to its model file");
   refused(scene + "[adaptive]\nimpact_output_interval = 1e-6\n", "exceeds simulation.output_interval");
+  refused(scene + "[adaptive]\nimpact_output_interval = 1e-12\n", "exceeds the limit of 1e7 samples");
   refused(scene + "[adaptive]\ncoarse_integrator = \"leapfrog\"\n", "do not mix between phases");
   refused(scene + "[adaptive]\ncoarse_integrator = \"rk4\"\n", "unknown integrator 'rk4'");
 }

@@ -67,9 +67,9 @@ TEST_CASE("hertz contact: two rigid spheres meet head-on as Hertz's solution say
                << impact["duration_s"].get<double>() << " s (" << duration << ")");
   // the stiffness itself to round-off
   CHECK(h["stiffness_n_m1_5"].get<double>() == Approx(K).epsilon(1e-12));
-  // the peak is the largest force at the accepted steps (at most 20 ns apart, 1/3500 of the
-  // contact): sampled within (pi 20 ns / duration)^2 / 2 = 4e-7 of the true peak; the
-  // integration (rtol 1e-10) adds far less
+  // the peak from the deepest overlap between steps at most 20 ns apart (1/3500 of the
+  // contact): even the largest force at the steps would be within 1.5 (pi 20 ns / 2 T)^2 / 2
+  // = 1.5e-7 of it; the integration (rtol 1e-10) adds far less
   CHECK(impact["peak_force_n"].get<double>() == Approx(peak).epsilon(2e-6));
   // onset and release interpolate the gap linearly between steps where it moves at 2 v: exact
   // but for its curvature, (2e-8 s)^2 x acceleration / 2v, about 1e-12 s each
@@ -84,11 +84,12 @@ TEST_CASE("hertz contact: two rigid spheres meet head-on as Hertz's solution say
 
 TEST_CASE("hertz contact: the peak between coarse steps is that of the deepest overlap", "[runtime][hertz]") {
   // Scene E's Hertz variant takes about 20 steps in an impact, and the largest force at the
-  // steps fell 0.3 % short of the peak, a sixth of issue 17's 2 %. Here the steps are at
-  // most 4 us in a 67 us contact (the integration itself at rtol 1e-9): the largest force at
-  // the steps alone may miss by up to (pi 4 us / 2 / 67 us)^2 / 2 = 4e-3 (it missed by 7e-5
-  // before the interpolation); the cubic through the two steps around the deepest overlap
-  // errs by h^4 |g| / 384, about (h / T)^4 / 40 = 3e-7 of the overlap (2e-8 measured).
+  // steps fell 0.3 % short of the peak, a sixth of issue 17's 2 %. Here dopri5 at rtol 1e-9
+  // (max_step 4 us) takes about 0.4 us near the peak of a 67 us contact: the largest force at
+  // the steps missed by 7e-5 before the interpolation (1.5 (pi h / 2T)^2 / 2 = 7e-5 for
+  // h = 0.41 us). The cubic through the two steps around the deepest overlap errs by
+  // h^4 |g''''| / 384, about 0.5 (h / T)^4 = 7e-10 of the overlap; the integration's own
+  // error dominates (the peak lands 2e-8 from Hertz's), well inside 1e-6.
   const isosid::test::ScratchDir dir("hertz-coarse-steps");
   const double v = 0.5, r = 0.01, rho = 7850, E = 2.1e11, nu = 0.3;
   const double m_star = rho * 4.0 / 3.0 * M_PI * r * r * r / 2, R_star = r / 2;
@@ -99,7 +100,9 @@ TEST_CASE("hertz contact: the peak between coarse steps is that of the deepest o
   const json& impact = s["hertz_contacts"][0]["impacts"][0];
   INFO(std::setprecision(10) << "peak " << impact["peak_force_n"].get<double>() << " N (Hertz " << peak << "), " << s["steps"].get<long>() << " steps");
   CHECK(impact["peak_force_n"].get<double>() == Approx(peak).epsilon(1e-6));
-  // at the deepest overlap the spheres' centres meet at the middle of the contact
+  // by symmetry the deepest overlap is at the middle of the contact: onset and release are
+  // interpolated to about 1e-12 s (test above) and the cubic's minimum to far less, so 1e-6
+  // of the time (3e-11 s) leaves a margin of 30
   CHECK(impact["peak_time_s"].get<double>() == Approx(0.5 * (impact["start_s"].get<double>() + s["hertz_contacts"][0]["impacts"][0]["end_s"].get<double>())).epsilon(1e-6));
 }
 
