@@ -280,8 +280,8 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   // folder keeps it)
   auto keep = [&](const PhaseRun& run) {
     summaries.push_back(run.summary);
-    if (run.summary["status"] != "failed" || run.summary["steps"].get<long>() > 0) files.push_back(run.file);
-    if (run.summary["status"] == "failed" && run.summary["steps"].get<long>() == 0) return;  // its frame may be of that start
+    if (run.summary["status"] == "failed" && run.summary["steps"].get<long>() == 0) return;  // its results and frames stay out
+    files.push_back(run.file);
     // a phase starts where the one before it ended: its first frame replaces one there
     if (!run.frames.empty())
       std::erase_if(frames, [&](const format::vtk::CollectionEntry& e) { return e.time >= run.frames.front().time; });
@@ -585,15 +585,9 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                          {"phases", log}};
   summary["reference"] = compare_with_reference(summary, scene_.reference);
   format::write_text_atomically((std::filesystem::path(out_dir_) / "summary.json").string(), summary.dump(2) + "\n");
-  if (scene_.output.paraview) {  // one time series over the phases that make up the run
-    const std::filesystem::path path = std::filesystem::path(out_dir_) / "paraview" / "scene.pvd";
-    try {
-      std::filesystem::create_directories(path.parent_path());
-      format::vtk::write_pvd(path.string(), frames);
-    } catch (const std::exception& e) {  // the results are written: the run fails with them kept
-      throw format::ComputationError("ParaView collection " + path.string() + ": " + e.what());
-    }
-  }
+  // one time series over the phases that make up the run; the results are written, so a
+  // failure here fails the run with them kept
+  if (scene_.output.paraview) ParaviewSeries::write_collection((std::filesystem::path(out_dir_) / "paraview").string(), frames);
   result.summary = summary;
   result.end_time = summary["end_time_s"].get<double>();
   if (refusal) std::rethrow_exception(refusal);  // exit 2, with the results so far written

@@ -118,11 +118,13 @@ void ParaviewSeries::write_contact(const SurfaceContact& contact, const double* 
   vtk::write_vtu(file, grid);
 }
 
-std::string ParaviewSeries::write_collection() const {
-  const std::string path = (std::filesystem::path(dir_) / "scene.pvd").string();
+std::string ParaviewSeries::write_collection() const { return write_collection(dir_, entries_); }
+
+std::string ParaviewSeries::write_collection(const std::string& dir, const std::vector<vtk::CollectionEntry>& entries) {
+  const std::string path = (std::filesystem::path(dir) / "scene.pvd").string();
   try {
-    std::filesystem::create_directories(dir_);
-    vtk::write_pvd(path, entries_);
+    std::filesystem::create_directories(dir);
+    vtk::write_pvd(path, entries);
   } catch (const std::exception& e) {
     throw format::ComputationError("ParaView collection " + path + ": " + e.what());
   }

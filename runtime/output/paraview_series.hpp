@@ -29,11 +29,12 @@ public:
   /// Writes paraview/scene.pvd listing the frames written so far (also after a failed or
   /// interrupted run) and returns its path.
   std::string write_collection() const;
+  /// Writes `dir`/scene.pvd listing `entries` (their files relative to dir) and returns its
+  /// path; a failure to write is a ComputationError naming it.
+  static std::string write_collection(const std::string& dir, const std::vector<format::vtk::CollectionEntry>& entries);
   int frames() const { return frames_; }
-  /// The frames' files so far, relative to dir() (what write_collection lists).
+  /// The frames' files so far, relative to results_dir/paraview (what write_collection lists).
   const std::vector<format::vtk::CollectionEntry>& entries() const { return entries_; }
-  /// results_dir/paraview
-  const std::string& dir() const { return dir_; }
 
 private:
   struct BodyView {
