@@ -6,9 +6,9 @@
 
 namespace isosid::run {
 
-/// The closest point of a target to a slave point. Velocity, body point and Psi are only
-/// filled where the point penetrates (gap < 0), for a caller that applies loads: only there
-/// does a force act.
+/// The closest point of a target to a slave point. Velocity, body point and Psi are filled
+/// for a caller that applies loads, where the point penetrates (gap < 0: only there does a
+/// force act); ContactTarget::fill_loads() adds them for a free point that needs them.
 struct TargetPoint {
   double gap = 0;                                       ///< signed distance, m (negative: penetration)
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY();    ///< world unit normal, out of the target
@@ -38,6 +38,10 @@ public:
   /// warm start of iterative projections (NaN: none yet) and is updated. Returns false when
   /// x is no candidate (far from the target, or beside its edge).
   virtual bool project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d& hint, Fill fill) const = 0;
+  /// Fills the velocity, body point and Psi of `out`, the point of the last project() (a
+  /// free point of Fill::Loads, which has them only where it penetrates: the quasistatic
+  /// model's points that may close). Targets whose Fill::Loads fills every point do nothing.
+  virtual void fill_loads(const double* y, TargetPoint& out) const { (void)y, (void)out; }
   /// Principal curvatures (1/m, positive where convex) of the target at its point nearest
   /// the world point x, at the state of the last update(): for the Hertz estimate of an impact.
   virtual Eigen::Vector2d curvatures(const Eigen::Vector3d& x) const = 0;

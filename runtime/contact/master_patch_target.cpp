@@ -70,11 +70,14 @@ bool MasterPatchTarget::project(const Eigen::Vector3d& x_world, const double* y,
   // beside the edge of the patch rather than above it: no candidate
   if ((d - out.gap * n).norm() > std::abs(out.gap) + 1e-9 * radius_) return false;
   out.normal = A_ * n;
-  if (out.gap >= 0 || fill != Fill::Loads) return true;  // the rest only matters where a force acts
+  if (out.gap < 0 && fill == Fill::Loads) fill_loads(y, out);  // the rest only matters where a force acts
+  return true;
+}
+
+void MasterPatchTarget::fill_loads(const double* y, TargetPoint& out) const {
   out.body_point = point_.C;
   patch_.shape_rows(point_, out.Psi);
   out.velocity = body_.point_velocity(point_.C, out.Psi, y);
-  return true;
 }
 
 Eigen::Vector2d MasterPatchTarget::curvatures(const Eigen::Vector3d& x_world) const {

@@ -17,6 +17,7 @@ public:
   void update(const double* y) const override;
   double clearance(const Eigen::Vector3d& center, double radius) const override;
   bool project(const Eigen::Vector3d& x, const double* y, TargetPoint& out, Eigen::Vector2d& hint, Fill fill) const override;
+  void fill_loads(const double* y, TargetPoint& out) const override;
   Eigen::Vector2d curvatures(const Eigen::Vector3d& x) const override;
   /// max_i |Phi_i|_F: the patch lies in its control net's convex hull
   double displacement_bound() const override { return patch_.largest_row_norm(); }

@@ -51,6 +51,7 @@ void QuasistaticModes::scatter(const Eigen::VectorXd& z) const {
 
 void QuasistaticModes::residual(const double* y, Eigen::VectorXd& R) const {
   scatter(z_);
+  ++passes_;
   terms_.reset(size());
   // the model knows the free points that its step could close: within twice the deepest
   // penetration of the last solution (where new points enter as the contact grows), or within
@@ -140,21 +141,28 @@ int QuasistaticModes::newton(const double* y) const {
     predicted_force_ = model_.force();  // the trials below restart the model
     const bool model_solved = model_.solved();
     const double penalty_before = penalty_energy_, residual_before = R_.norm(), slope = R_.dot(move_);
+    // A full step on a solved model whose forces there are the real ones converged: the next
+    // update, J^-1 (f_model - f), is at most |f_model - f| / min K (J is K plus a positive
+    // semidefinite part without friction) on top of the model's round-off. "The real ones"
+    // to the round-off of the gaps, which both forces carry: below it the energy test would
+    // compare noise (near the solution the gaps' round-off outweighs a step's energy change,
+    // and the search halved such steps to nothing, 30 times over).
+    auto model_held = [&] {
+      return conservative_ && model_solved &&
+             (predicted_force_ - force_).norm() <= jacobian_.smallest_eigenvalue() * resolution + 2 * terms_.force_resolution();
+    };
     double alpha = 1.0;
+    bool held = false;
     for (int halving = 0; halving < 30; ++halving) {
       z_ = z_old_ + alpha * move_;
       residual(y, R_);
-      const bool accept = conservative_ ? potential_change(penalty_before) <= 1e-4 * alpha * slope : R_.norm() <= residual_before;
+      held = halving == 0 && model_held();
+      const bool accept = held || (conservative_ ? potential_change(penalty_before) <= 1e-4 * alpha * slope : R_.norm() <= residual_before);
       if (accept || halving == 29) break;
       alpha *= 0.5;
     }
-    // R_ and the recorded points are those of the accepted z_ (the last trial). A full step
-    // on a solved model, whose forces there are the real ones, converged: the next update,
-    // J^-1 (f_model - f), is at most |f_model - f| / min K (J is K plus a positive
-    // semidefinite part without friction) on top of the model's round-off
-    const bool model_held = conservative_ && alpha == 1 && model_solved &&
-                            (predicted_force_ - force_).norm() <= jacobian_.smallest_eigenvalue() * resolution;
-    if (model_held || alpha * move_.norm() <= resolution) {
+    // R_ and the recorded points are those of the accepted z_ (the last trial)
+    if (held || alpha * move_.norm() <= resolution) {
       scatter(z_);
       update_window();
       return iteration;

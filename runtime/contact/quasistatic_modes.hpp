@@ -39,6 +39,9 @@ public:
   /// Updates the bodies' quasistatic modes for state y (warm-started from their last values);
   /// returns the Newton iterations. Throws ComputationError (naming the bodies) on failure.
   int solve(const double* y) const;
+  /// Passes over the contact points so far (residual evaluations: Newton steps and their
+  /// line-search trials); what a static solve costs grows with them.
+  long passes() const { return passes_; }
   /// Power dissipated by friction through the quasistatic modes at the state y just solved:
   /// -f_t . dz/dt, f_t the friction part of their generalized contact force. The equilibrium
   /// R(z, y) = 0 moves z along with y, at dz/dt = -J^-1 (dR/dy) ydot; ydot has n entries.
@@ -73,6 +76,7 @@ private:
   std::string names_;
   mutable Eigen::VectorXd z_, R_, move_, step_, z_old_, z_sum_, force_, friction_force_, predicted_force_;
   mutable QuasistaticTerms terms_;
+  mutable long passes_ = 0;
   mutable double window_ = 0;                    ///< QuasistaticTerms::window of the next solve, m
   mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual
   mutable Eigen::VectorXd held_loads_;           ///< update_held_loads()

@@ -23,21 +23,25 @@ struct QuasistaticTerms {
   Eigen::Index count = 0;      ///< recorded points
   bool friction = false;       ///< some point has a friction direction (T in use)
   /// Free points are recorded too where their effective gap g - lambda / c_p is below
-  /// window + reach |Psi_h|_F, the most a change of z by `reach` (modal units) can close: the
-  /// active set of the linear model can only grow by points it knows. Points beyond (and the
-  /// free points of targets with quasistatic modes) cost the outer Newton an iteration when
-  /// they close after all.
+  /// window + reach |Psi_h|_F, the most a change of z by `reach` (modal units) can close
+  /// (against targets with quasistatic modes: below the window): the active set of the linear
+  /// model can only grow by points it knows. Points beyond cost the outer Newton an iteration
+  /// when they close after all.
   double window = INFINITY;  ///< m
   double reach = 0;          ///< modal units
   /// Some contact's broad phase found its surface clear and recorded nothing of it: its points
   /// are not bounded by the reach.
   bool unseen = false;
+  /// The round-off of the pressed points' gaps, m: differences of positions that are far
+  /// larger than the gaps (a few eps of their distance from the world's and bodies' origins).
+  double gap_resolution = 0;
 
   void reset(Eigen::Index n) {
     if (V.rows() != n) V.resize(n, 0), T.resize(n, 0);
     count = 0;
     friction = false;
     unseen = false;
+    gap_resolution = 0;
   }
   /// Appends a point with zeroed v and t; fill V.col(k) (and T.col(k)) for the returned k.
   Eigen::Index add_point(double gap_m, double lambda, double c_p, double w) {
@@ -57,6 +61,14 @@ struct QuasistaticTerms {
   }
   /// Pressure of point k at gap g, Pa.
   double pressure(Eigen::Index k, double g) const { return std::max(0.0, multiplier(k) - penalty(k) * g); }
+  /// How far the generalized contact force at the recorded gaps is known: the gap round-off
+  /// moves a pressed point's force by c_p w |v| per metre.
+  double force_resolution() const {
+    double sum = 0;
+    for (Eigen::Index k = 0; k < count; ++k)
+      if (pressure(k, gap(k)) > 0) sum += penalty(k) * weight(k) * V.col(k).norm();
+    return gap_resolution * sum;
+  }
 };
 
 }  // namespace isosid::run

@@ -6,6 +6,7 @@
 #include "isosid/format/error.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace isosid::run {
 
@@ -13,6 +14,10 @@ namespace {
 /// The gap bounds start over once the slave has moved relative to the target by this fraction
 /// of its contact surface's radius: 9 um for a ball of 10 mm, some steps of an impact.
 constexpr double kRefreshPerRadius = 2e-3;
+
+/// The round-off of a gap per metre of the positions it is formed from: the slave point and
+/// the target point each pass through a frame (rotation and translation) and the difference.
+constexpr double kGapRoundoff = 8 * std::numeric_limits<double>::epsilon();
 
 /// A penalty point presses only inside the target: beyond a zero gap it does not matter.
 constexpr auto unpressed = [](Eigen::Index) { return 0.0; };
@@ -219,19 +224,26 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
     if (master_qs) free_z_target_ = master->q(y).tail(master->n_quasistatic());
     free_gap_.assign(std::size_t(surface_.points()), -INFINITY);
   }
-  // a free point is left out where its gap (less lambda / c_p) reaches this: at once against a
-  // target with quasistatic modes, whose shape rows at the point are known only where it
-  // penetrates; else beyond the window and what a change of z by terms.reach could close
-  // (|Psi_h u| <= |Psi_h|_F |u|)
-  auto left_out_from = [&](Eigen::Index g) { return master_qs ? 0.0 : terms.window + terms.reach * quasistatic_row_norms_(g); };
+  // a free point is left out where its gap (less lambda / c_p) reaches the window plus what a
+  // change of z by terms.reach could close (|Psi_h u| <= |Psi_h|_F |u|); against a target
+  // with quasistatic modes beyond the window alone: the target's rows must be formed for each
+  // recorded point, and the reach of a massless boundary's large coordinates records most of
+  // a beam's face (the sphere on the free-free beam took twice as long)
+  auto left_out_from = [&](Eigen::Index g) { return master_qs ? terms.window : terms.window + terms.reach * quasistatic_row_norms_(g); };
   auto skip = [&](Eigen::Index g) {
     return same_pose && free_gap_[std::size_t(g)] - quasistatic_row_norms_(g) * slave_move - target_move >= left_out_from(g);
   };
-  const double clearance = for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
+  // a gap is n . (x - c), its points some distance from the origins of the world and of both
+  // bodies' frames: it is known to a few eps of those distances
+  const double origins = body_.r(y).norm() + (master ? master->r(y).norm() : 0.0);
+  const double clearance = for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, TargetPoint& t) {
     const double lambda = spec_.exact ? multiplier_[std::size_t(g)] : 0.0;
     if (pressure(g, t.gap) <= 0) {
       if (!same_pose) free_gap_[std::size_t(g)] = t.gap;
       if (t.gap - lambda / spec_.penalty >= left_out_from(g)) return;
+      target_.fill_loads(y, t);  // recorded free: its rows on the target too
+    } else {
+      terms.gap_resolution = std::max(terms.gap_resolution, kGapRoundoff * (origins + P.norm() + t.body_point.norm()));
     }
     const Eigen::Index k = terms.add_point(t.gap, lambda, spec_.penalty, surface_.weight(g));
     Eigen::Vector3d direction = Eigen::Vector3d::Zero();

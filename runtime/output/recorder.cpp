@@ -304,6 +304,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
                        {"floating_frame", cost.floating_frame_s}, {"output", output_s_}};
   j["rhs_cost"] = {{"evaluations", cost.evaluations},
                    {"repeated", cost.repeated},
+                   {"quasistatic_passes", system_.quasistatic_passes()},
                    {"mean_active_points", cost.evaluations ? double(cost.active_points) / double(cost.evaluations) : 0.0}};
   j["contacts"] = json::array();
   for (std::size_t k = 0; k < system_.contacts().size(); ++k) {

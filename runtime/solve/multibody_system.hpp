@@ -87,6 +87,8 @@ public:
   void estimate_impacts(const double* y);
   /// Newton iterations of the quasistatic modes so far.
   long quasistatic_iterations() const { return quasistatic_iterations_; }
+  /// Their passes over the contact points so far (QuasistaticModes::passes()).
+  long quasistatic_passes() const { return quasistatic_ ? quasistatic_->passes() : 0; }
   /// Where the right-hand side's time went so far (bench/cost_model.py sets it against the
   /// work the evaluations cannot avoid).
   struct RhsCost {
