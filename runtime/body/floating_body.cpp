@@ -201,10 +201,13 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
     // Gr(q, qdot) = sum_k (Gr0_k + sum_j Gr1_kj q_j) qdot_k. The 3x3 blocks of a 3 x 3nq term
     // are consecutive 9-vectors, so each sum over k is one 9 x nq matrix-vector product
     // (the order-1 part reads 9 nq^2 numbers per call: this is the floating frame's largest term)
+    // Only the leading nv coordinates have velocities (quasistatic modes have none): the
+    // products stop there.
     using Blocks = Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic>>;
-    Eigen::Matrix<double, 9, 1> gr = Blocks(sid_.Gr.M0.data(), 9, ni) * qd.head(ni);
+    const Index nv = std::min(ni, nd);
+    Eigen::Matrix<double, 9, 1> gr = Blocks(sid_.Gr.M0.data(), 9, nv) * qd.head(nv);
     for (Index j = 0; j < std::min<Index>(ni, Index(sid_.Gr.M1.size())); ++j)
-      if (qv(j) != 0) gr.noalias() += qv(j) * (Blocks(sid_.Gr.M1[std::size_t(j)].data(), 9, ni) * qd.head(ni));
+      if (qv(j) != 0) gr.noalias() += qv(j) * (Blocks(sid_.Gr.M1[std::size_t(j)].data(), 9, nv) * qd.head(nv));
     const Eigen::Map<const Matrix3d> Gr(gr.data());
     hr.tail<3>() += -W * (J * w) - Gr * w;
     add_rotation_loads(qv, qd, w, hq);
@@ -265,8 +268,9 @@ void FloatingBody::load_response(const GeneralizedForce& load, double* ydot) con
 void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, const Vector3d& w, Eigen::Ref<VectorXd> out) const {
   if (!rotates_) return;
   // Ge(qdot) = sum_j Ge_j qdot_j: the nq x 3 blocks are consecutive, one matrix-vector product
-  const Index ni = n_inertial_;
-  Eigen::Map<VectorXd>(Ge_.data(), Ge_.size()).noalias() = Eigen::Map<const MatrixXd>(sid_.Ge.M0.data(), 3 * nq(), ni) * qd.head(ni);
+  // over the coordinates with velocities (quasistatic modes have none)
+  const Index ni = n_inertial_, nv = std::min(ni, n_dynamic_);
+  Eigen::Map<VectorXd>(Ge_.data(), Ge_.size()).noalias() = Eigen::Map<const MatrixXd>(sid_.Ge.M0.data(), 3 * nq(), nv) * qd.head(nv);
   Eigen::Matrix<double, 6, 1> wq;
   wq << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
   sid_.Oe.evaluate(qv, Oe_, ni, ni);
