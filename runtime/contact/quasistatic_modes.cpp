@@ -194,8 +194,8 @@ double QuasistaticModes::friction_power(const double* y, const double* ydot, Eig
   // the Jacobian of the shifted state: it differs from that at y by O(h)
   const Eigen::Index r = model_.jacobian_terms(terms_, terms_.gap);
   jacobian_.solve(model_.U(), model_.V(), r, (R0 - R_) / h, z_rate_);
-  update_held_loads(y);
-  residual(y, R_);  // leaves R_, the terms and the penalty energy those of y again
+  // R_, the terms, the model and the held loads stay those of the shifted state: the next
+  // solve sets them all anew before it reads any (z_ is still the solution at y)
   return -friction_.dot(z_rate_);
 }
 
