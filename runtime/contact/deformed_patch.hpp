@@ -40,8 +40,8 @@ public:
   /// Displacement rows of a point: Psi = sum R_i Phi_i (dim x nq).
   void shape_rows(const Point& point, Eigen::MatrixXd& Psi) const;
   /// Closest point of the patch to the body-frame point x: Newton's method from u (a warm
-  /// start; NaN: none), else from the nearest span midpoint. On success u is its parameter
-  /// and `point` the evaluated point; on failure u is NaN.
+  /// start; NaN: none), else from the knot-span midpoint nearest on the undeformed patch. On
+  /// success u is its parameter and `point` the evaluated point; on failure u is NaN.
   bool closest_point(const Eigen::Vector3d& x, Eigen::Vector2d& u, Point& point) const;
 
 private:
@@ -63,6 +63,7 @@ private:
   double reference_radius_ = 0;
   double largest_row_norm_ = 0;       ///< max_i |Phi_i|_F
   std::vector<Eigen::Vector2d> midpoints_;  ///< knot-span midpoints: starting guesses of projections
+  std::vector<Eigen::Vector3d> midpoint_positions_;  ///< their points on the undeformed patch
 };
 
 }  // namespace isosid::run
