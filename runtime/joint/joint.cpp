@@ -106,20 +106,31 @@ AttachmentMotion Joint::motion(int s, const double* y) const {
   return m;
 }
 
-Eigen::Matrix<double, 3, Eigen::Dynamic> Joint::directions(const double* y) const {
-  Eigen::Matrix<double, 3, Eigen::Dynamic> D(3, rows());
-  D.leftCols<3>().setIdentity();
+JointPose Joint::pose(const double* y) const {
+  JointPose p;
+  Matrix3d R1 = Matrix3d::Identity();  // side 1's attachment frame (as motion(1, y).R)
+  for (int s = 0; s < 2; ++s) {
+    const JointAttachment& a = sides_[std::size_t(s)];
+    if (!a.body) continue;
+    const Eigen::VectorXd& q = a.body->q(y);
+    p.A[std::size_t(s)] = a.body->orientation(y).toRotationMatrix();
+    p.s_now[std::size_t(s)] = a.point + a.phi * q;
+    if (s == 1) R1 = p.A[1] * (Matrix3d::Identity() + format::skew(a.psi * q));
+  }
+  p.D.resize(3, rows());
+  p.D.leftCols<3>().setIdentity();
   if (kind_ == JointSpec::Kind::Revolute) {
     // across side 1's axis, turning with side 1 (so their rate is w1 x D)
     const auto [u, v] = across(sides_[1].axis);
-    const Matrix3d R1 = motion(1, y).R;
-    D.col(3) = R1 * u;
-    D.col(4) = R1 * v;
+    p.D.col(3) = R1 * u;
+    p.D.col(4) = R1 * v;
   } else if (kind_ == JointSpec::Kind::Fixed) {
-    D.rightCols<3>().setIdentity();
+    p.D.rightCols<3>().setIdentity();
   }
-  return D;
+  return p;
 }
+
+Eigen::Matrix<double, 3, Eigen::Dynamic> Joint::directions(const double* y) const { return pose(y).D; }
 
 Vector3d Joint::rotation_error(const AttachmentMotion& a, const AttachmentMotion& b) const {
   if (kind_ == JointSpec::Kind::Revolute)  // side 0's axis turned away from side 1's by e (small)
@@ -128,28 +139,28 @@ Vector3d Joint::rotation_error(const AttachmentMotion& a, const AttachmentMotion
   return 0.5 * Vector3d(E(2, 1) - E(1, 2), E(0, 2) - E(2, 0), E(1, 0) - E(0, 1));
 }
 
-Eigen::VectorXd Joint::row_acceleration(int s, const double* y, const double* delta) const {
+Eigen::VectorXd Joint::row_acceleration(int s, const JointPose& pose, const double* delta) const {
   Eigen::VectorXd out = Eigen::VectorXd::Zero(rows());
   const JointAttachment& a = sides_[std::size_t(s)];
   if (!a.body) return out;
   const FloatingBody& b = *a.body;
   const BodyAccelerations acc = accelerations(b, delta);
-  const Matrix3d A = b.orientation(y).toRotationMatrix();
-  const Vector3d s_now = a.point + a.phi * b.q(y);
+  const Matrix3d& A = pose.A[std::size_t(s)];
   // the accelerations of the integrated modes only (quasistatic ones are not in the state)
   const Eigen::Index nd = b.n_dynamic();
-  out.head<3>() = acc.a + A * (acc.alpha.cross(s_now) + a.phi.leftCols(nd) * acc.qdd);
+  out.head<3>() = acc.a + A * (acc.alpha.cross(pose.s_now[std::size_t(s)]) + a.phi.leftCols(nd) * acc.qdd);
   if (rotation_rows_)
-    out.tail(rotation_rows_) = directions(y).rightCols(rotation_rows_).transpose() * (A * (acc.alpha + a.psi.leftCols(nd) * acc.qdd));
+    out.tail(rotation_rows_) = pose.D.rightCols(rotation_rows_).transpose() * (A * (acc.alpha + a.psi.leftCols(nd) * acc.qdd));
   return out;
 }
 
 Eigen::VectorXd Joint::stabilized_acceleration(const double* y, const double* ydot, double rate) const {
   const AttachmentMotion m0 = motion(0, y), m1 = motion(1, y);
-  Eigen::VectorXd c = row_acceleration(0, y, ydot) - row_acceleration(1, y, ydot);
+  const JointPose p = pose(y);
+  Eigen::VectorXd c = row_acceleration(0, p, ydot) - row_acceleration(1, p, ydot);
   c.head<3>() += m0.a_known - m1.a_known + 2 * rate * (m0.v - m1.v) + rate * rate * (m0.x - m1.x);
   if (rotation_rows_) {
-    const Eigen::Matrix<double, 3, Eigen::Dynamic> D = directions(y).rightCols(rotation_rows_);  // owned, not a view of a temporary
+    const Eigen::Matrix<double, 3, Eigen::Dynamic> D = p.D.rightCols(rotation_rows_);
     const Vector3d w_rel = m0.w - m1.w;
     c.tail(rotation_rows_) += D.transpose() * (m0.alpha_known - m1.alpha_known + 2 * rate * w_rel + rate * rate * rotation_error(m0, m1));
     // the directions turn with side 1: d/dt (D^T w_rel) also holds (w1 x D)^T w_rel
@@ -159,17 +170,17 @@ Eigen::VectorXd Joint::stabilized_acceleration(const double* y, const double* yd
   return c;
 }
 
-void Joint::add_load(int s, int row, double amount, const double* y, GeneralizedForce& f) const {
+void Joint::add_load(int s, int row, double amount, const JointPose& pose, GeneralizedForce& f) const {
   const JointAttachment& a = sides_[std::size_t(s)];
   if (!a.body) return;
   const FloatingBody& b = *a.body;
   const double signed_amount = s == 0 ? amount : -amount;
-  const Matrix3d A = b.orientation(y).toRotationMatrix();
+  const Matrix3d& A = pose.A[std::size_t(s)];
   if (row < 3) {
-    b.apply_force(signed_amount * Vector3d::Unit(row), a.point + a.phi * b.q(y), a.phi, A, f);
+    b.apply_force(signed_amount * Vector3d::Unit(row), pose.s_now[std::size_t(s)], a.phi, A, f);
     return;
   }
-  const Vector3d T = A.transpose() * (signed_amount * directions(y).col(row));  // body frame torque
+  const Vector3d T = A.transpose() * (signed_amount * pose.D.col(row));  // body frame torque
   f.torque += T;
   f.elastic.noalias() += a.psi.transpose() * T;
 }

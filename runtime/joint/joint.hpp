@@ -37,6 +37,15 @@ struct AttachmentMotion {
   Eigen::Matrix3d R;  ///< world orientation of the attachment's frame (body frame and small node rotation)
 };
 
+/// What a joint's rows need of a state, formed once per evaluation (the reactions' assembly
+/// asks for the rows of every side many times at one state): each side's body rotation and
+/// attachment point in the body frame, and the row directions (world, 3 x rows()).
+struct JointPose {
+  std::array<Eigen::Matrix3d, 2> A{Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity()};
+  std::array<Eigen::Vector3d, 2> s_now{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6> D;
+};
+
 class Joint {
 public:
   /// `bodies` in system order, `y0` the initial state (fixes the attachments and, for a fixed
@@ -51,6 +60,8 @@ public:
   bool grounded() const { return sides_[1].body == nullptr; }
 
   AttachmentMotion motion(int s, const double* y) const;
+  /// The sides' rotations, attachment points and row directions at y.
+  JointPose pose(const double* y) const;
   /// Row directions at y (world, 3 x rows(): translational rows first, then rotational).
   Eigen::Matrix<double, 3, Eigen::Dynamic> directions(const double* y) const;
   /// The rows' accelerations with the bodies' accelerations from ydot, plus their
@@ -58,10 +69,10 @@ public:
   Eigen::VectorXd stabilized_acceleration(const double* y, const double* ydot, double rate) const;
   /// The rows' acceleration of side s that is linear in its body's accelerations, taken from
   /// the state derivative `delta` (zero for the ground).
-  Eigen::VectorXd row_acceleration(int s, const double* y, const double* delta) const;
+  Eigen::VectorXd row_acceleration(int s, const JointPose& pose, const double* delta) const;
   /// Adds row j's unit load (force or torque along its direction, of sign +1 on side 0 and -1
   /// on side 1) times `amount` to the generalized force `f` of side s's body.
-  void add_load(int s, int row, double amount, const double* y, GeneralizedForce& f) const;
+  void add_load(int s, int row, double amount, const JointPose& pose, GeneralizedForce& f) const;
   /// The rows' position-level residuals at y: the attachments' separation (m, world), then
   /// the orientation error along the rotational rows (rad); zero where the joint holds.
   Eigen::VectorXd residual(const double* y) const;

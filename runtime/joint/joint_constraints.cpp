@@ -6,6 +6,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
+
 namespace isosid::run {
 
 JointConstraints::JointConstraints(const Scene& scene, const std::vector<std::unique_ptr<FloatingBody>>& bodies,
@@ -15,6 +17,11 @@ JointConstraints::JointConstraints(const Scene& scene, const std::vector<std::un
     joints_.emplace_back(spec, bodies, y0, scene.file);
     first_row_.push_back(rows_);
     rows_ += joints_.back().rows();
+    for (int s = 0; s < 2; ++s) {
+      const JointAttachment& a = joints_.back().side(s);
+      const bool seen = std::any_of(jointed_.begin(), jointed_.end(), [&](const auto& j) { return j.first == a.body; });
+      if (a.body && !seen) jointed_.emplace_back(a.body, a.index);
+    }
     // a joint holds positions and velocities: attachments that move apart at the start are refused
     const Joint& j = joints_.back();
     const AttachmentMotion m0 = j.motion(0, y0), m1 = j.motion(1, y0);
@@ -36,10 +43,8 @@ void JointConstraints::refuse_redundant_rows(const std::vector<std::unique_ptr<F
   if (joints_.empty()) return;
   std::vector<GeneralizedForce> none(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) none[i].reset(bodies[i]->nq());
-  for (const Joint& j : joints_)
-    for (int s = 0; s < 2; ++s)
-      if (const FloatingBody* b = j.side(s).body) b->derivatives(y0, none[j.side(s).index], gravity, base_.data());
-  assemble_response(y0);
+  prepare(y0, gravity, none);
+  assemble_response();
   // rows no body can move (a planar scene's out-of-plane rows) are left out; among the others a
   // dependent row is one the other joints already impose: their reactions would not be unique
   const double largest = response_.diagonal().cwiseAbs().maxCoeff();
@@ -73,25 +78,29 @@ void JointConstraints::refuse_redundant_rows(const std::vector<std::unique_ptr<F
                                " at the start); drop or loosen one");
 }
 
+void JointConstraints::prepare(const double* y, const Eigen::Vector3d& gravity, const std::vector<GeneralizedForce>& forces) const {
+  // each body once: its accelerations do not depend on the joint that holds it
+  for (const auto& [body, index] : jointed_) body->derivatives(y, forces[index], gravity, base_.data());
+  poses_.clear();
+  for (const Joint& j : joints_) poses_.push_back(j.pose(y));
+}
+
 void JointConstraints::apply(const double* y, const Eigen::Vector3d& gravity, std::vector<GeneralizedForce>& forces) const {
   if (joints_.empty()) return;
-  // every jointed body's accelerations under its other loads
-  for (const Joint& j : joints_)
-    for (int s = 0; s < 2; ++s)
-      if (const FloatingBody* b = j.side(s).body) b->derivatives(y, forces[j.side(s).index], gravity, base_.data());
+  prepare(y, gravity, forces);  // every jointed body's accelerations under its other loads
   Eigen::VectorXd residual(rows_);
   for (std::size_t k = 0; k < joints_.size(); ++k)
     residual.segment(first_row_[k], joints_[k].rows()) = joints_[k].stabilized_acceleration(y, base_.data(), rate_);
-  assemble_response(y);
+  assemble_response();
   // rows no body can move (a planar scene's out-of-plane rows) have no response: least squares
   lambda_ = response_.completeOrthogonalDecomposition().solve(-residual);
   for (std::size_t k = 0; k < joints_.size(); ++k)
     for (int row = 0; row < joints_[k].rows(); ++row)
       for (int s = 0; s < 2; ++s)
-        if (joints_[k].side(s).body) joints_[k].add_load(s, row, lambda_(first_row_[k] + row), y, forces[joints_[k].side(s).index]);
+        if (joints_[k].side(s).body) joints_[k].add_load(s, row, lambda_(first_row_[k] + row), poses_[k], forces[joints_[k].side(s).index]);
 }
 
-void JointConstraints::assemble_response(const double* y) const {
+void JointConstraints::assemble_response() const {
   // the rows' response to each row's unit reaction, through the bodies it loads
   response_.setZero();
   for (std::size_t k = 0; k < joints_.size(); ++k)
@@ -100,14 +109,14 @@ void JointConstraints::assemble_response(const double* y) const {
         const FloatingBody* b = joints_[k].side(s).body;
         if (!b) continue;
         unit_.reset(b->nq());
-        joints_[k].add_load(s, row, 1.0, y, unit_);
+        joints_[k].add_load(s, row, 1.0, poses_[k], unit_);
         b->load_response(unit_, loaded_.data());  // the mass matrix of the derivatives at y above
         // every joint row that moves with this body
         for (std::size_t i = 0; i < joints_.size(); ++i)
           for (int t = 0; t < 2; ++t)
             if (joints_[i].side(t).body == b)
               response_.block(first_row_[i], first_row_[k] + row, joints_[i].rows(), 1) +=
-                  (t == 0 ? 1.0 : -1.0) * joints_[i].row_acceleration(t, y, loaded_.data());
+                  (t == 0 ? 1.0 : -1.0) * joints_[i].row_acceleration(t, poses_[i], loaded_.data());
       }
 }
 

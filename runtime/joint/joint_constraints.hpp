@@ -22,9 +22,12 @@ public:
   std::pair<Eigen::Vector3d, Eigen::Vector3d> reaction(std::size_t k, const double* y) const;
 
 private:
-  /// response_ = the rows' accelerations per unit reaction of each row at y, through the mass
-  /// matrices of the jointed bodies' derivatives at y (evaluated just before).
-  void assemble_response(const double* y) const;
+  /// Every jointed body's accelerations at y under `forces` (its other loads) into base_, each
+  /// body once however many joints hold it; and each joint's pose at y into poses_.
+  void prepare(const double* y, const Eigen::Vector3d& gravity, const std::vector<GeneralizedForce>& forces) const;
+  /// response_ = the rows' accelerations per unit reaction of each row, through the mass
+  /// matrices of the jointed bodies' derivatives and at the poses of the last prepare().
+  void assemble_response() const;
   /// InputError naming the joints if, at the start, some rows repeat what others impose (a
   /// rank-deficient constraint Jacobian: an over-constrained mechanism, reactions not unique).
   void refuse_redundant_rows(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const double* y0,
@@ -34,6 +37,9 @@ private:
   std::vector<Eigen::Index> first_row_;   ///< joint k's rows start here in the stacked multipliers
   Eigen::Index rows_ = 0;
   double rate_;                           ///< Baumgarte rate, 1/s
+  /// the bodies some joint holds, each once, with their indices in the system
+  std::vector<std::pair<const FloatingBody*, std::size_t>> jointed_;
+  mutable std::vector<JointPose> poses_;  ///< per joint, at the state of the last prepare()
   mutable Eigen::VectorXd base_, loaded_, lambda_;
   mutable Eigen::MatrixXd response_;
   mutable GeneralizedForce unit_;
