@@ -137,6 +137,17 @@ bool SurfaceTouch::held_by_bound(const Eigen::Vector2d& u, const Eigen::Vector2d
   return false;
 }
 
+double SurfaceTouch::clearance(const double* y) const {
+  if (!patch_) return -INFINITY;
+  const FloatingBody& body = contact_.body();
+  contact_.target().update(y);
+  patch_->deform(body.q(y));
+  Eigen::Vector3d center;
+  double radius = 0;
+  patch_->bounding_sphere(center, radius);
+  return contact_.target().clearance(body.r(y) + body.orientation(y).toRotationMatrix() * center, radius);
+}
+
 const Touch& SurfaceTouch::evaluate(const double* y) const {
   touch_ = Touch{};
   if (!patch_) return touch_;

@@ -32,6 +32,10 @@ public:
   /// The closest approach at state y (the bodies' quasistatic modes as last solved), by
   /// Newton's method on the distance's parametric gradient, warm-started from the last call.
   const Touch& evaluate(const double* y) const;
+  /// A lower bound of the closest approach at state y, from the slave patch's bounding sphere
+  /// (its control net's, grown by its displacement bound) and the target's broad phase:
+  /// where it is positive, the exact search need not run to know the surfaces are apart.
+  double clearance(const double* y) const;
 
 private:
   /// The target's signed distance to the slave surface at parameter u, with its gradient

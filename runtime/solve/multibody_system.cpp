@@ -237,7 +237,10 @@ void MultibodySystem::roots(const double* y, double* g) const {
     double& root = g[contacts_.size() + k];
     root = 1.0;
     if (touch_state_[k] != TouchState::Armed) continue;
-    const double gap = touches_[k].evaluate(y).gap;
+    // apart by the bounding spheres: that positive lower bound has the exact gap's sign, and
+    // the root lies where the exact gap vanishes, which the exact search finds
+    const double bound = touches_[k].clearance(y);
+    const double gap = bound > 0 ? bound : touches_[k].evaluate(y).gap;
     root = std::isfinite(gap) ? (gap != 0.0 ? gap : -1e-30) : 1.0;
   }
 }
