@@ -4,8 +4,10 @@
 // the parameter range), for a level and a tilted plane.
 #include "body/floating_body.hpp"
 #include "contact/deformed_patch.hpp"
+#include "contact/surface_touch.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene/scene.hpp"
+#include "solve/multibody_system.hpp"
 #include "solve/simulation.hpp"
 #include "support/run_program.hpp"
 
@@ -175,6 +177,38 @@ TEST_CASE("impact detection: two flexible spheres touch at their poles, found on
   const double pole = std::abs(p.C.x()) < 1e-12 ? curve.lower(0) : curve.upper(0), range = curve.upper(0) - curve.lower(0);
   CHECK(std::abs(touch.slave_parameter(0) - pole) < 1e-9 * range);
   CHECK(std::abs(touch.target_parameter(0) - pole) < 1e-9 * range);
+}
+
+TEST_CASE("impact detection: the bounding spheres' clearance bounds the closest approach from below", "[runtime][unit]") {
+  // Two flexible spheres apart by 0.2 um to 40 mm: the root functions take the clearance for
+  // the exact search where it is positive, which holds only as a lower bound of the gap
+  const test::ScratchDir dir("touch_clearance");
+  std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 1e-6\n"
+                                          << "[[flexible_body]]\nname = \"upper\"\nsid = \"" << ISOSID_GOLDEN_DIR << "/sphere_small.sid.h5\"\n"
+                                          << "position = [0.0, 0.0100001, 0.0]\nhigh_modes = \"quasistatic\"\n"
+                                          << "[[flexible_body]]\nname = \"lower\"\nsid = \"" << ISOSID_GOLDEN_DIR << "/sphere_small.sid.h5\"\n"
+                                          << "position = [0.0, -0.0100001, 0.0]\norientation = [3.141592653589793, 0.0, 0.0]\nhigh_modes = \"quasistatic\"\n"
+                                          << "[[contact]]\nname = \"pair\"\nbody = \"lower\"\nsurface = \"contact\"\ntarget = \"upper\"\n"
+                                          << "target_surface = \"contact\"\npenalty = 5e17\n";
+  const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
+  const format::Sid sid = format::read_sid(scene.bodies[0].sid_file);
+  const run::MultibodySystem system(scene, {sid, sid});
+  const run::SurfaceTouch touch(system.contacts().front());
+  REQUIRE(touch.available());
+  Eigen::VectorXd y(system.size());
+  system.initial_state(y.data());
+  const Eigen::Index upper = system.bodies()[0]->offset() + 1;
+  int positive = 0;
+  for (double lift : {0.0, 1e-6, 1e-4, 1e-3, 1e-2, 2e-2, 4e-2}) {
+    Eigen::VectorXd state = y;
+    state(upper) += lift;
+    const double bound = touch.clearance(state.data()), gap = touch.evaluate(state.data()).gap;
+    INFO("lift " << lift << " m: clearance " << bound << " m, gap " << gap << " m");
+    CHECK(bound <= gap);  // infinite where the target sees none of the surface (far apart)
+    if (std::isfinite(gap)) CHECK(std::abs(gap - (2e-7 + lift)) < 1e-9);  // the poles face each other
+    positive += bound > 0;
+  }
+  CHECK(positive >= 2);  // apart by more than their patches' bounding spheres (12.5 mm here): cleared
 }
 
 namespace {
