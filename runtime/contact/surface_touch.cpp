@@ -145,7 +145,11 @@ double SurfaceTouch::clearance(const double* y) const {
   Eigen::Vector3d center;
   double radius = 0;
   patch_->bounding_sphere(center, radius);
-  return contact_.target().clearance(body.r(y) + body.orientation(y).toRotationMatrix() * center, radius);
+  const double bound = contact_.target().clearance(body.r(y) + body.orientation(y).toRotationMatrix() * center, radius);
+  // a warm start from before a stretch apart can lead Newton to a minimum the real closest
+  // approach has left (a touch at 0.9736 s of scene E went unseen that way)
+  if (bound > 0) last_parameter_ = Eigen::Vector2d::Constant(NAN);
+  return bound;
 }
 
 const Touch& SurfaceTouch::evaluate(const double* y) const {

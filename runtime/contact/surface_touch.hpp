@@ -34,7 +34,8 @@ public:
   const Touch& evaluate(const double* y) const;
   /// A lower bound of the closest approach at state y, from the slave patch's bounding sphere
   /// (its control net's, grown by its displacement bound) and the target's broad phase:
-  /// where it is positive, the exact search need not run to know the surfaces are apart.
+  /// where it is positive, the exact search need not run to know the surfaces are apart. The
+  /// search has then lost track of its minimum: its next evaluate() starts from its grid.
   double clearance(const double* y) const;
 
 private:
