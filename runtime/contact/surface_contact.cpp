@@ -293,11 +293,11 @@ double SurfaceContact::update_multipliers(const double* y) const {
 
 double SurfaceContact::min_gap(const double* y) const {
   double smallest = INFINITY;
-  // exact contact presses a point at a gap that closes to round-off, of either sign: its
-  // effective gap g - lambda / c_p is negative exactly while it carries pressure
-  // a point whose gap bound is at or beyond the smallest gap found so far cannot be the
-  // smallest: the bounds leave it out unprojected (the event functions evaluate this at every
-  // step, and a refined ball has thousands of points)
+  // Exact contact presses a point at a gap that closes to round-off, of either sign: its
+  // effective gap g - lambda / c_p is negative exactly while it carries pressure. A point whose
+  // gap bound is at or beyond the smallest gap found so far cannot be the smallest: the bounds
+  // leave it out unprojected (the event functions evaluate this at every step, and a refined
+  // ball has thousands of points).
   const double clearance = for_each_point(y, ContactTarget::Fill::Gap, [&](Eigen::Index g, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) {
     smallest = std::min(smallest, spec_.exact ? t.gap - multiplier_[std::size_t(g)] / spec_.penalty : t.gap);
   }, [&](Eigen::Index) { return smallest; }, never);
