@@ -154,9 +154,8 @@ Eigen::VectorXd Joint::row_acceleration(int s, const JointPose& pose, const doub
   return out;
 }
 
-Eigen::VectorXd Joint::stabilized_acceleration(const double* y, const double* ydot, double rate) const {
+Eigen::VectorXd Joint::stabilized_acceleration(const double* y, const JointPose& p, const double* ydot, double rate) const {
   const AttachmentMotion m0 = motion(0, y), m1 = motion(1, y);
-  const JointPose p = pose(y);
   Eigen::VectorXd c = row_acceleration(0, p, ydot) - row_acceleration(1, p, ydot);
   c.head<3>() += m0.a_known - m1.a_known + 2 * rate * (m0.v - m1.v) + rate * rate * (m0.x - m1.x);
   if (rotation_rows_) {

@@ -65,8 +65,8 @@ public:
   /// Row directions at y (world, 3 x rows(): translational rows first, then rotational).
   Eigen::Matrix<double, 3, Eigen::Dynamic> directions(const double* y) const;
   /// The rows' accelerations with the bodies' accelerations from ydot, plus their
-  /// stabilization 2 a c' + a^2 c: zero when the joint holds.
-  Eigen::VectorXd stabilized_acceleration(const double* y, const double* ydot, double rate) const;
+  /// stabilization 2 a c' + a^2 c: zero when the joint holds (`pose`: this joint's pose(y)).
+  Eigen::VectorXd stabilized_acceleration(const double* y, const JointPose& pose, const double* ydot, double rate) const;
   /// The rows' acceleration of side s that is linear in its body's accelerations, taken from
   /// the state derivative `delta` (zero for the ground).
   Eigen::VectorXd row_acceleration(int s, const JointPose& pose, const double* delta) const;

@@ -90,7 +90,7 @@ void JointConstraints::apply(const double* y, const Eigen::Vector3d& gravity, st
   prepare(y, gravity, forces);  // every jointed body's accelerations under its other loads
   Eigen::VectorXd residual(rows_);
   for (std::size_t k = 0; k < joints_.size(); ++k)
-    residual.segment(first_row_[k], joints_[k].rows()) = joints_[k].stabilized_acceleration(y, base_.data(), rate_);
+    residual.segment(first_row_[k], joints_[k].rows()) = joints_[k].stabilized_acceleration(y, poses_[k], base_.data(), rate_);
   assemble_response();
   // rows no body can move (a planar scene's out-of-plane rows) have no response: least squares
   lambda_ = response_.completeOrthogonalDecomposition().solve(-residual);
