@@ -137,15 +137,21 @@ bool SurfaceTouch::held_by_bound(const Eigen::Vector2d& u, const Eigen::Vector2d
   return false;
 }
 
-double SurfaceTouch::clearance(const double* y) const {
-  if (!patch_) return -INFINITY;
+void SurfaceTouch::place(const double* y) const {
   const FloatingBody& body = contact_.body();
   contact_.target().update(y);
   patch_->deform(body.q(y));
+  A_ = body.orientation(y).toRotationMatrix();
+  r_ = body.r(y);
+}
+
+double SurfaceTouch::clearance(const double* y) const {
+  if (!patch_) return -INFINITY;
+  place(y);
   Eigen::Vector3d center;
   double radius = 0;
   patch_->bounding_sphere(center, radius);
-  const double bound = contact_.target().clearance(body.r(y) + body.orientation(y).toRotationMatrix() * center, radius);
+  const double bound = contact_.target().clearance(r_ + A_ * center, radius);
   // a warm start from before a stretch apart can lead Newton to a minimum the real closest
   // approach has left (a touch at 0.9736 s of scene E went unseen that way)
   if (bound > 0) last_parameter_ = Eigen::Vector2d::Constant(NAN);
@@ -155,11 +161,7 @@ double SurfaceTouch::clearance(const double* y) const {
 const Touch& SurfaceTouch::evaluate(const double* y) const {
   touch_ = Touch{};
   if (!patch_) return touch_;
-  const FloatingBody& body = contact_.body();
-  contact_.target().update(y);
-  patch_->deform(body.q(y));
-  A_ = body.orientation(y).toRotationMatrix();
-  r_ = body.r(y);
+  place(y);
 
   // from the last closest point; from the best point of the start grid where there is none,
   // or where the last one ends held by a bound of the search with the distance still falling

@@ -39,6 +39,8 @@ public:
   double clearance(const double* y) const;
 
 private:
+  /// Brings the target and the deformed slave patch to state y, and the slave's frame (A_, r_).
+  void place(const double* y) const;
   /// The target's signed distance to the slave surface at parameter u, with its gradient
   /// along u; false where the target sees no candidate there.
   bool distance(const double* y, const Eigen::Vector2d& u, double& gap, Eigen::Vector2d& gradient) const;
