@@ -4,6 +4,7 @@
 #include "isosid/format/sid_io.hpp"
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
+#include "support/flexible_sphere_pair.hpp"
 #include "support/lumped_sid.hpp"
 #include "support/run_program.hpp"
 
@@ -81,19 +82,11 @@ TEST_CASE("MultibodySystem: a repeated right-hand side answers from the call bef
 }
 
 namespace {
-/// Two flexible spheres (the golden sphere_small, interface modes quasistatic) head-on, the
-/// lower one's points on the upper one's deformed master patch; states(): the initial state
-/// moved 0 .. 4 um closer in steps of 0.1 um, through the onset, and back again.
+/// test::flexible_sphere_pair at rest; states(): the initial state moved 0 .. 4 um closer in
+/// steps of 0.1 um, through the onset, and back again.
 struct FlexiblePair {
   explicit FlexiblePair(const test::ScratchDir& dir) {
-    auto sphere = [](const std::string& name, const std::string& y, const std::string& extra) {
-      return "[[flexible_body]]\nname = \"" + name + "\"\nsid = \"" + std::string(ISOSID_GOLDEN_DIR) + "/sphere_small.sid.h5\"\nposition = [0.0, " +
-             y + ", 0.0]\nhigh_modes = \"quasistatic\"\n" + extra;
-    };
-    std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 1e-4\n"
-                                            << sphere("upper", "0.0100001", "") << sphere("lower", "-0.0100001", "orientation = [3.141592653589793, 0.0, 0.0]\n")
-                                            << "[[contact]]\nname = \"pair\"\nbody = \"lower\"\nsurface = \"contact\"\ntarget = \"upper\"\n"
-                                            << "target_surface = \"contact\"\npenalty = 5e17\n";
+    std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 1e-4\n" << test::flexible_sphere_pair("0.0");
     scene = run::read_scene_file(dir.path("s.scene.toml"));
   }
   std::unique_ptr<run::MultibodySystem> system() const {

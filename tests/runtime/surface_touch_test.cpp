@@ -9,6 +9,7 @@
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
 #include "solve/simulation.hpp"
+#include "support/flexible_sphere_pair.hpp"
 #include "support/run_program.hpp"
 
 #include <catch2/catch.hpp>
@@ -153,15 +154,8 @@ TEST_CASE("impact detection: two flexible spheres touch at their poles, found on
   // 0.2 um apart, closing at 0.2 m/s: the touch at 1 us, at each sphere's pole (the end of its
   // patch on the axis), the target's parameter from the projection onto its deformed patch
   const test::ScratchDir dir("touch_pair");
-  auto sphere = [](const std::string& name, const std::string& y, const std::string& vy, const std::string& extra) {
-    return "[[flexible_body]]\nname = \"" + name + "\"\nsid = \"" + std::string(ISOSID_GOLDEN_DIR) + "/sphere_small.sid.h5\"\n" +
-           "position = [0.0, " + y + ", 0.0]\nvelocity = [0.0, " + vy + ", 0.0]\nhigh_modes = \"quasistatic\"\n" + extra;
-  };
   std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 3e-6\noutput_interval = 1e-6\n"
-                                          << sphere("upper", "0.0100001", "-0.1", "")
-                                          << sphere("lower", "-0.0100001", "0.1", "orientation = [3.141592653589793, 0.0, 0.0]\n")
-                                          << "[[contact]]\nname = \"pair\"\nbody = \"lower\"\nsurface = \"contact\"\ntarget = \"upper\"\n"
-                                          << "target_surface = \"contact\"\npenalty = 5e17\n";
+                                          << test::flexible_sphere_pair("0.1");
   const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
   const format::Sid sid = format::read_sid(scene.bodies[0].sid_file);
   run::Simulation simulation(scene, {sid, sid});
@@ -183,13 +177,7 @@ TEST_CASE("impact detection: the bounding spheres' clearance bounds the closest 
   // Two flexible spheres apart by 0.2 um to 40 mm: the root functions take the clearance for
   // the exact search where it is positive, which holds only as a lower bound of the gap
   const test::ScratchDir dir("touch_clearance");
-  std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 1e-6\n"
-                                          << "[[flexible_body]]\nname = \"upper\"\nsid = \"" << ISOSID_GOLDEN_DIR << "/sphere_small.sid.h5\"\n"
-                                          << "position = [0.0, 0.0100001, 0.0]\nhigh_modes = \"quasistatic\"\n"
-                                          << "[[flexible_body]]\nname = \"lower\"\nsid = \"" << ISOSID_GOLDEN_DIR << "/sphere_small.sid.h5\"\n"
-                                          << "position = [0.0, -0.0100001, 0.0]\norientation = [3.141592653589793, 0.0, 0.0]\nhigh_modes = \"quasistatic\"\n"
-                                          << "[[contact]]\nname = \"pair\"\nbody = \"lower\"\nsurface = \"contact\"\ntarget = \"upper\"\n"
-                                          << "target_surface = \"contact\"\npenalty = 5e17\n";
+  std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 1e-6\n" << test::flexible_sphere_pair("0.0");
   const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
   const format::Sid sid = format::read_sid(scene.bodies[0].sid_file);
   const run::MultibodySystem system(scene, {sid, sid});
