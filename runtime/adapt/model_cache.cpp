@@ -5,9 +5,13 @@
 #include "isosid/format/error.hpp"
 #include "scene/prep_process.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <deque>
+#include <exception>
 #include <filesystem>
+#include <thread>
 
 namespace isosid::run {
 namespace fs = std::filesystem;
@@ -29,42 +33,90 @@ std::string prep_identity() {
 
 ModelCache::ModelCache(std::string directory, bool quiet) : directory_(std::move(directory)), quiet_(quiet) {}
 
-CachedSid ModelCache::coarse(const std::string& model_file) { return lookup(model_file, {"--coarse"}, " (its coarse model)"); }
+CachedSid ModelCache::coarse(const std::string& model_file) { return lookup({{model_file, {"--coarse"}, " (its coarse model)"}}).front(); }
 
-CachedSid ModelCache::fine(const std::string& model_file, const RefinementRequest& request) {
-  std::string at = request.surface + ":";
-  for (std::size_t k = 0; k < request.at.size(); ++k) {
-    char number[32];
-    std::snprintf(number, sizeof number, "%s%.17g", k ? "," : "", request.at[k]);
-    at += number;
+CachedSid ModelCache::fine(const std::string& model_file, const RefinementRequest& request) { return fine({{model_file, request}}).front(); }
+
+std::vector<CachedSid> ModelCache::fine(const std::vector<FineRequest>& requests) {
+  std::vector<Request> asked;
+  for (const FineRequest& r : requests) {
+    std::string at = r.request.surface + ":";
+    for (std::size_t k = 0; k < r.request.at.size(); ++k) {
+      char number[32];
+      std::snprintf(number, sizeof number, "%s%.17g", k ? "," : "", r.request.at[k]);
+      at += number;
+    }
+    char width[32];
+    std::snprintf(width, sizeof width, "%.17g", r.request.width);
+    asked.push_back({r.model_file, {"--refine-at", at, "--refine-width", width}, std::string(" (refined at ") + at + ", " + width + " m wide)"});
   }
-  char width[32];
-  std::snprintf(width, sizeof width, "%.17g", request.width);
-  return lookup(model_file, {"--refine-at", at, "--refine-width", width},
-                std::string(" (refined at ") + at + ", " + width + " m wide)");
+  return lookup(asked);
 }
 
-CachedSid ModelCache::lookup(const std::string& model_file, const std::vector<std::string>& options, const std::string& what) {
+std::string ModelCache::cached_file(const Request& request) const {
   common::Sha256 key;
   key.update("isosid model cache 1\n");
-  key.update(common::sha256_file(model_file) + "\n");  // the content, wherever the file lives
+  key.update(common::sha256_file(request.model_file) + "\n");  // the content, wherever the file lives
   key.update(prep_identity() + "\n");
-  for (const std::string& option : options) key.update(option + "\n");
-  const std::string stem = fs::path(model_file).filename().string();
-  const fs::path file = fs::path(directory_) / (stem.substr(0, stem.find('.')) + "-" + key.hex_digest().substr(0, 20) + ".sid.h5");
-  CachedSid out{file.string(), false, 0};
-  std::error_code ec;
-  if (fs::is_regular_file(file, ec)) {  // isosid-prep writes atomically: a file there is whole
-    out.hit = true;
-    ++hits_;
-    return out;
+  for (const std::string& option : request.options) key.update(option + "\n");
+  const std::string stem = fs::path(request.model_file).filename().string();
+  return (fs::path(directory_) / (stem.substr(0, stem.find('.')) + "-" + key.hex_digest().substr(0, 20) + ".sid.h5")).string();
+}
+
+std::vector<CachedSid> ModelCache::lookup(const std::vector<Request>& requests) {
+  using Clock = std::chrono::steady_clock;
+  std::vector<CachedSid> out;
+  std::vector<std::size_t> missing;  // requests to build, each file once
+  for (const Request& request : requests) {
+    CachedSid sid{cached_file(request), false, 0};
+    std::error_code ec;
+    bool found = fs::is_regular_file(sid.file, ec);  // isosid-prep writes atomically: a file there is whole
+    for (std::size_t m : missing) found = found || out[m].file == sid.file;
+    sid.hit = found;
+    if (found) ++hits_;
+    else missing.push_back(out.size());
+    out.push_back(sid);
   }
+  if (missing.empty()) return out;
+  std::error_code ec;
   fs::create_directories(directory_, ec);
   if (ec) throw format::InputError(directory_, "", "cannot create the model cache directory: " + ec.message());
-  const auto start = std::chrono::steady_clock::now();
-  run_prep(model_file, out.file, options, quiet_, what);
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  ++builds_;
+
+  // one build per core; each build's assembly gets its share of the cores
+  const int cores = std::max(1, int(std::thread::hardware_concurrency()));
+  const std::size_t side_by_side = std::min(missing.size(), std::size_t(cores));
+  const int threads = side_by_side > 1 ? std::max(1, cores / int(side_by_side)) : 0;
+  struct Running {
+    std::size_t index;
+    PrepProcess process;
+    Clock::time_point start;
+  };
+  std::deque<Running> running;
+  std::exception_ptr failure;
+  std::size_t next = 0;
+  while (next < missing.size() || !running.empty()) {
+    while (!failure && next < missing.size() && running.size() < side_by_side) {  // no new build after a failure
+      const std::size_t i = missing[next++];
+      const Request& r = requests[i];
+      try {
+        running.push_back({i, start_prep(r.model_file, out[i].file, r.options, quiet_, r.what, threads), Clock::now()});
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    }
+    if (running.empty()) break;
+    Running done = std::move(running.front());  // output is read to its end, one build after the other
+    running.pop_front();
+    try {
+      finish_prep(done.process);
+      // until this program had the SID: a build that ends before the one ahead of it waits for it
+      out[done.index].seconds = std::chrono::duration<double>(Clock::now() - done.start).count();
+      ++builds_;
+    } catch (...) {
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
   return out;
 }
 

@@ -17,11 +17,17 @@ struct RefinementRequest {
   double width = 0;  ///< m
 };
 
+/// One fine model of a batch: the body's model file and where it is refined.
+struct FineRequest {
+  std::string model_file;
+  RefinementRequest request;
+};
+
 /// A SID the cache holds.
 struct CachedSid {
   std::string file;
-  bool hit = false;      ///< found in the cache: no preprocessing ran
-  double seconds = 0;    ///< wall time of the preprocessing (0 on a hit)
+  bool hit = false;      ///< found in the cache (or built for an equal request of its batch): no preprocessing ran
+  double seconds = 0;    ///< wall time from its isosid-prep's start to its SID (0 on a hit; builds side by side overlap)
 };
 
 class ModelCache {
@@ -36,13 +42,26 @@ public:
   /// SID's /transfer maps states from and to coarse(model_file). A refused request (a point
   /// off the surface, a model without hierarchical refinement) throws InputError.
   CachedSid fine(const std::string& model_file, const RefinementRequest& request);
+  /// The same for several requests (an impact's two bodies), in order. The missing ones are
+  /// built side by side, one isosid-prep per core, each with its share of the cores for its
+  /// parallel assembly: the rest of isosid-prep runs on one thread. A refusal or failure is
+  /// thrown once every build started has ended.
+  std::vector<CachedSid> fine(const std::vector<FineRequest>& requests);
 
   int hits() const { return hits_; }
   int builds() const { return builds_; }
 
 private:
-  /// The SID of `model_file` built with `options`: from the cache, or built into it.
-  CachedSid lookup(const std::string& model_file, const std::vector<std::string>& options, const std::string& what);
+  /// What isosid-prep is asked for: `options` on `model_file` (`what` says why, in its progress line).
+  struct Request {
+    std::string model_file;
+    std::vector<std::string> options;
+    std::string what;
+  };
+  /// The SIDs of the requests: from the cache, or built into it, side by side.
+  std::vector<CachedSid> lookup(const std::vector<Request>& requests);
+  /// Where the cache keeps the SID of a request.
+  std::string cached_file(const Request& request) const;
 
   std::string directory_;
   bool quiet_;

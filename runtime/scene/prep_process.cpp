@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -25,30 +26,50 @@ std::string find_prep() {
   return "isosid-prep";
 }
 
-void run_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,
-              const std::string& what) {
+PrepProcess start_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,
+                       const std::string& what, int threads) {
   const std::string prep = find_prep();
   if (!quiet) std::fprintf(stderr, "isosid-run: building %s from %s%s\n", sid.c_str(), model.c_str(), what.c_str());
-  int channel[2];
-  if (::pipe(channel) != 0) throw format::ComputationError("cannot start isosid-prep (no pipe)");
+  // everything the child needs is built before fork: only async-signal-safe calls after it
+  std::vector<std::string> arguments = {prep, model, "-o", sid};
+  if (quiet) arguments.push_back("-q");
+  arguments.insert(arguments.end(), extra.begin(), extra.end());
+  std::vector<const char*> args;
+  for (const std::string& a : arguments) args.push_back(a.c_str());
+  args.push_back(nullptr);
+  std::vector<std::string> variables;
+  for (char** v = environ; *v; ++v)
+    if (threads <= 0 || std::strncmp(*v, "OMP_NUM_THREADS=", 16) != 0) variables.emplace_back(*v);
+  if (threads > 0) variables.push_back("OMP_NUM_THREADS=" + std::to_string(threads));
+  std::vector<const char*> env;
+  for (const std::string& v : variables) env.push_back(v.c_str());
+  env.push_back(nullptr);
+  const std::string cannot = "isosid-prep: failed: cannot execute " + prep + " (set ISOSID_PREP)\n";
+
+  int channel[2];  // close-on-exec: a build started beside this one must not inherit its pipe
+  if (::pipe2(channel, O_CLOEXEC) != 0) throw format::ComputationError("cannot start isosid-prep (no pipe)");
   const pid_t pid = ::fork();
-  if (pid < 0) throw format::ComputationError("cannot start isosid-prep");
+  if (pid < 0) {
+    ::close(channel[0]);
+    ::close(channel[1]);
+    throw format::ComputationError("cannot start isosid-prep");
+  }
   if (pid == 0) {
     ::close(channel[0]);
-    ::dup2(channel[1], STDERR_FILENO);
+    ::dup2(channel[1], STDERR_FILENO);  // dup2's copies are not close-on-exec
     ::dup2(channel[1], STDOUT_FILENO);  // isosid-run's stdout carries only its own output (--json)
     ::close(channel[1]);
-    std::vector<const char*> args = {prep.c_str(), model.c_str(), "-o", sid.c_str()};
-    if (quiet) args.push_back("-q");
-    for (const std::string& option : extra) args.push_back(option.c_str());
-    args.push_back(nullptr);
-    ::execvp(prep.c_str(), const_cast<char* const*>(args.data()));
-    std::fprintf(stderr, "isosid-prep: failed: cannot execute %s (set ISOSID_PREP)\n", prep.c_str());
+    ::execvpe(prep.c_str(), const_cast<char* const*>(args.data()), const_cast<char* const*>(env.data()));
+    [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, cannot.data(), cannot.size());
     ::_exit(127);
   }
   ::close(channel[1]);
+  return {pid, channel[0], model, quiet};
+}
+
+void finish_prep(PrepProcess& process) {
   std::string message;  // the program's own "error:" or "failed:" line
-  if (FILE* output = ::fdopen(channel[0], "r")) {
+  if (FILE* output = ::fdopen(process.output, "r")) {
     char* line = nullptr;
     std::size_t capacity = 0;
     for (ssize_t n; (n = ::getline(&line, &capacity, output)) > 0;) {
@@ -56,14 +77,19 @@ void run_prep(const std::string& model, const std::string& sid, const std::vecto
       if (text.back() == '\n') text.pop_back();
       for (const char* prefix : {"isosid-prep: error: ", "isosid-prep: failed: "})
         if (text.rfind(prefix, 0) == 0) message = text.substr(std::strlen(prefix));
-      if (message.empty() && !quiet) std::fprintf(stderr, "%s\n", text.c_str());  // its report too: quiet is quiet
+      if (message.empty() && !process.quiet) std::fprintf(stderr, "%s\n", text.c_str());  // its report too: quiet is quiet
     }
     std::free(line);
     std::fclose(output);
+  } else {
+    ::close(process.output);
   }
+  process.output = -1;
   int status = 0;
-  ::waitpid(pid, &status, 0);
+  ::waitpid(process.pid, &status, 0);
+  process.pid = -1;
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+  const std::string& model = process.model;
   if (code == 2) {  // "file: field: problem", passed on as this program's own line
     const std::size_t colon = message.find(": ");
     if (colon == std::string::npos) throw format::InputError(model, "", "refused by isosid-prep: " + message);
@@ -72,6 +98,12 @@ void run_prep(const std::string& model, const std::string& sid, const std::vecto
   if (code != 0)
     throw format::ComputationError("isosid-prep failed on " + model + " (exit " + std::to_string(code) + ")" +
                                    (message.empty() ? "" : ": " + message));
+}
+
+void run_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,
+              const std::string& what) {
+  PrepProcess process = start_prep(model, sid, extra, quiet, what);
+  finish_prep(process);
 }
 
 }  // namespace isosid::run

@@ -2,6 +2,7 @@
 // on demand (stale SIDs of a scene, the contact-sized rebuild, refined models at an impact).
 #pragma once
 #include <string>
+#include <sys/types.h>
 #include <vector>
 
 namespace isosid::run {
@@ -9,10 +10,25 @@ namespace isosid::run {
 /// isosid-prep: $ISOSID_PREP, else beside this program (install) or in the build tree, else PATH.
 std::string find_prep();
 
-/// Runs isosid-prep on `model`, writing `sid`, with further options `extra` (e.g. --coarse).
-/// Its progress lines pass through to stderr (`what` says why it runs); its one-line error is
-/// held back and becomes this program's: InputError for a refused model (its exit 2),
+/// A started isosid-prep: its process and the pipe that carries its output.
+struct PrepProcess {
+  pid_t pid = -1;
+  int output = -1;
+  std::string model;
+  bool quiet = true;
+};
+
+/// Starts isosid-prep on `model`, writing `sid`, with further options `extra` (e.g. --coarse);
+/// `threads` > 0 limits its OpenMP assembly to that many threads (for builds side by side).
+PrepProcess start_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,
+                       const std::string& what, int threads = 0);
+
+/// Waits for a started isosid-prep. Its progress lines pass through to stderr; its one-line
+/// error is held back and becomes this program's: InputError for a refused model (its exit 2),
 /// ComputationError for any other failure.
+void finish_prep(PrepProcess& process);
+
+/// start_prep, then finish_prep (`what` says why it runs, in the progress line).
 void run_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,
               const std::string& what);
 
