@@ -11,7 +11,6 @@
 #include <deque>
 #include <exception>
 #include <filesystem>
-#include <thread>
 
 namespace isosid::run {
 namespace fs = std::filesystem;
@@ -82,8 +81,9 @@ std::vector<CachedSid> ModelCache::lookup(const std::vector<Request>& requests) 
   fs::create_directories(directory_, ec);
   if (ec) throw format::InputError(directory_, "", "cannot create the model cache directory: " + ec.message());
 
-  // one build per core; each build's assembly gets its share of the cores
-  const int cores = std::max(1, int(std::thread::hardware_concurrency()));
+  // one build per core; each build's assembly gets its share of the cores (an impact asks for
+  // at most one model per body, two, so reading the builds in start order costs nothing here)
+  const int cores = usable_cores();
   const std::size_t side_by_side = std::min(missing.size(), std::size_t(cores));
   const int threads = side_by_side > 1 ? std::max(1, cores / int(side_by_side)) : 0;
   struct Running {

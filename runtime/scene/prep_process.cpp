@@ -3,13 +3,19 @@
 
 #include "isosid/format/error.hpp"
 
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <sched.h>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
+#include <utility>
 
 namespace isosid::run {
 namespace fs = std::filesystem;
@@ -26,6 +32,28 @@ std::string find_prep() {
   return "isosid-prep";
 }
 
+PrepProcess::PrepProcess(pid_t pid_, int output_, std::string model_, bool quiet_)
+    : pid(pid_), output(output_), model(std::move(model_)), quiet(quiet_) {}
+
+PrepProcess::PrepProcess(PrepProcess&& other) noexcept
+    : pid(std::exchange(other.pid, -1)), output(std::exchange(other.output, -1)), model(std::move(other.model)), quiet(other.quiet) {}
+
+PrepProcess::~PrepProcess() {
+  if (output >= 0) ::close(output);
+  if (pid > 0) {  // abandoned: isosid-prep writes atomically, so stopping it leaves no half-written SID
+    ::kill(pid, SIGTERM);
+    while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+    }
+  }
+}
+
+int usable_cores() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (::sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
+  return std::max(1, int(std::thread::hardware_concurrency()));
+}
+
 PrepProcess start_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,
                        const std::string& what, int threads) {
   const std::string prep = find_prep();
@@ -38,9 +66,8 @@ PrepProcess start_prep(const std::string& model, const std::string& sid, const s
   for (const std::string& a : arguments) args.push_back(a.c_str());
   args.push_back(nullptr);
   std::vector<std::string> variables;
-  for (char** v = environ; *v; ++v)
-    if (threads <= 0 || std::strncmp(*v, "OMP_NUM_THREADS=", 16) != 0) variables.emplace_back(*v);
-  if (threads > 0) variables.push_back("OMP_NUM_THREADS=" + std::to_string(threads));
+  for (char** v = environ; *v; ++v) variables.emplace_back(*v);
+  if (threads > 0 && !std::getenv("OMP_NUM_THREADS")) variables.push_back("OMP_NUM_THREADS=" + std::to_string(threads));
   std::vector<const char*> env;
   for (const std::string& v : variables) env.push_back(v.c_str());
   env.push_back(nullptr);
@@ -64,12 +91,13 @@ PrepProcess start_prep(const std::string& model, const std::string& sid, const s
     ::_exit(127);
   }
   ::close(channel[1]);
-  return {pid, channel[0], model, quiet};
+  return PrepProcess(pid, channel[0], model, quiet);
 }
 
 void finish_prep(PrepProcess& process) {
   std::string message;  // the program's own "error:" or "failed:" line
   if (FILE* output = ::fdopen(process.output, "r")) {
+    process.output = -1;  // the stream owns it now
     char* line = nullptr;
     std::size_t capacity = 0;
     for (ssize_t n; (n = ::getline(&line, &capacity, output)) > 0;) {
@@ -81,13 +109,15 @@ void finish_prep(PrepProcess& process) {
     }
     std::free(line);
     std::fclose(output);
-  } else {
-    ::close(process.output);
   }
-  process.output = -1;
+  if (process.output >= 0) ::close(std::exchange(process.output, -1));
   int status = 0;
-  ::waitpid(process.pid, &status, 0);
+  pid_t waited;
+  while ((waited = ::waitpid(process.pid, &status, 0)) < 0 && errno == EINTR) {
+  }
+  const int wait_error = errno;
   process.pid = -1;
+  if (waited < 0) throw format::ComputationError("lost isosid-prep on " + process.model + " (waitpid: " + std::strerror(wait_error) + ")");
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 1;
   const std::string& model = process.model;
   if (code == 2) {  // "file: field: problem", passed on as this program's own line

@@ -10,16 +10,27 @@ namespace isosid::run {
 /// isosid-prep: $ISOSID_PREP, else beside this program (install) or in the build tree, else PATH.
 std::string find_prep();
 
-/// A started isosid-prep: its process and the pipe that carries its output.
+/// A started isosid-prep: its process and the pipe that carries its output. Dropped before
+/// finish_prep (an exception on the way), it stops the process and waits for it.
 struct PrepProcess {
   pid_t pid = -1;
   int output = -1;
   std::string model;
   bool quiet = true;
+
+  PrepProcess(pid_t pid, int output, std::string model, bool quiet);
+  PrepProcess(PrepProcess&& other) noexcept;
+  PrepProcess& operator=(PrepProcess&&) = delete;
+  PrepProcess(const PrepProcess&) = delete;
+  ~PrepProcess();
 };
 
+/// The cores this process may run on (its CPU affinity), at least 1.
+int usable_cores();
+
 /// Starts isosid-prep on `model`, writing `sid`, with further options `extra` (e.g. --coarse);
-/// `threads` > 0 limits its OpenMP assembly to that many threads (for builds side by side).
+/// `threads` > 0 limits its OpenMP assembly to that many threads (for builds side by side),
+/// unless the user set OMP_NUM_THREADS.
 PrepProcess start_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,
                        const std::string& what, int threads = 0);
 
