@@ -38,12 +38,21 @@ PrepProcess::PrepProcess(pid_t pid_, int output_, std::string model_, bool quiet
 PrepProcess::PrepProcess(PrepProcess&& other) noexcept
     : pid(std::exchange(other.pid, -1)), output(std::exchange(other.output, -1)), model(std::move(other.model)), quiet(other.quiet) {}
 
+namespace {
+/// waitpid, again after a signal: the child's pid, or -1 with errno set.
+pid_t reap(pid_t pid, int* status) {
+  pid_t waited;
+  while ((waited = ::waitpid(pid, status, 0)) < 0 && errno == EINTR) {
+  }
+  return waited;
+}
+}  // namespace
+
 PrepProcess::~PrepProcess() {
   if (output >= 0) ::close(output);
   if (pid > 0) {  // abandoned: isosid-prep writes atomically, so stopping it leaves no half-written SID
     ::kill(pid, SIGTERM);
-    while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
-    }
+    reap(pid, nullptr);
   }
 }
 
@@ -65,11 +74,11 @@ PrepProcess start_prep(const std::string& model, const std::string& sid, const s
   std::vector<const char*> args;
   for (const std::string& a : arguments) args.push_back(a.c_str());
   args.push_back(nullptr);
-  std::vector<std::string> variables;
-  for (char** v = environ; *v; ++v) variables.emplace_back(*v);
-  if (threads > 0 && !std::getenv("OMP_NUM_THREADS")) variables.push_back("OMP_NUM_THREADS=" + std::to_string(threads));
+  // this program's environment, plus OMP_NUM_THREADS where asked for and the user set none
+  const std::string omp_threads = "OMP_NUM_THREADS=" + std::to_string(threads);
   std::vector<const char*> env;
-  for (const std::string& v : variables) env.push_back(v.c_str());
+  for (char** v = environ; *v; ++v) env.push_back(*v);
+  if (threads > 0 && !std::getenv("OMP_NUM_THREADS")) env.push_back(omp_threads.c_str());
   env.push_back(nullptr);
   const std::string cannot = "isosid-prep: failed: cannot execute " + prep + " (set ISOSID_PREP)\n";
 
@@ -112,9 +121,7 @@ void finish_prep(PrepProcess& process) {
   }
   if (process.output >= 0) ::close(std::exchange(process.output, -1));
   int status = 0;
-  pid_t waited;
-  while ((waited = ::waitpid(process.pid, &status, 0)) < 0 && errno == EINTR) {
-  }
+  const pid_t waited = reap(process.pid, &status);
   const int wait_error = errno;
   process.pid = -1;
   if (waited < 0) throw format::ComputationError("lost isosid-prep on " + process.model + " (waitpid: " + std::strerror(wait_error) + ")");
