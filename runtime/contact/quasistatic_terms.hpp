@@ -32,6 +32,9 @@ struct QuasistaticTerms {
   /// Some contact's broad phase found its surface clear and recorded nothing of it: its points
   /// are not bounded by the reach.
   bool unseen = false;
+  /// Points pressed for the first time at the pose (bodies' positions and integrated
+  /// coordinates) of this recording: the model before did not know them.
+  Eigen::Index newly_pressed = 0;
   /// The round-off of the pressed points' gaps, m: differences of positions that are far
   /// larger than the gaps (a few eps of their distance from the world's and bodies' origins).
   double gap_resolution = 0;
@@ -41,6 +44,7 @@ struct QuasistaticTerms {
     count = 0;
     friction = false;
     unseen = false;
+    newly_pressed = 0;
     gap_resolution = 0;
   }
   /// Appends a point with zeroed v and t; fill V.col(k) (and T.col(k)) for the returned k.

@@ -223,13 +223,21 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
     free_z_slave_ = z_slave;
     if (master_qs) free_z_target_ = master->q(y).tail(master->n_quasistatic());
     free_gap_.assign(std::size_t(surface_.points()), -INFINITY);
+    pressed_at_pose_.assign(std::size_t(surface_.points()), 0);
   }
   // a free point is left out where its gap (less lambda / c_p) reaches the window plus what a
   // change of z by terms.reach could close (|Psi_h u| <= |Psi_h|_F |u|); against a target
   // with quasistatic modes beyond the window alone: the target's rows must be formed for each
   // recorded point, and the reach of a massless boundary's large coordinates records most of
   // a beam's face (the sphere on the free-free beam took twice as long)
-  auto left_out_from = [&](Eigen::Index g) { return master_qs ? terms.window : terms.window + terms.reach * quasistatic_row_norms_(g); };
+  // A point that pressed at some z of this pose is recorded at every later z of it, free or
+  // not: it lies where the solve's steps go, and a model without it oversteps there again (two
+  // balls at first touch: a point at zero gap beyond the window made the line search halve
+  // each step nine times over).
+  auto left_out_from = [&](Eigen::Index g) {
+    if (pressed_at_pose_[std::size_t(g)]) return std::numeric_limits<double>::infinity();
+    return master_qs ? terms.window : terms.window + terms.reach * quasistatic_row_norms_(g);
+  };
   auto skip = [&](Eigen::Index g) {
     return same_pose && free_gap_[std::size_t(g)] - quasistatic_row_norms_(g) * slave_move - target_move >= left_out_from(g);
   };
@@ -244,6 +252,7 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
       target_.fill_loads(y, t);  // recorded free: its rows on the target too
     } else {
       terms.gap_resolution = std::max(terms.gap_resolution, kGapRoundoff * (origins + P.norm() + t.body_point.norm()));
+      if (!pressed_at_pose_[std::size_t(g)]) ++terms.newly_pressed, pressed_at_pose_[std::size_t(g)] = 1;
     }
     const Eigen::Index k = terms.add_point(t.gap, lambda, spec_.penalty, surface_.weight(g));
     Eigen::Vector3d direction = Eigen::Vector3d::Zero();

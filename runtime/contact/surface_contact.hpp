@@ -130,6 +130,7 @@ private:
   /// Later evaluations at that y skip a point that the change of the quasistatic coordinates
   /// since cannot close (gaps move by at most the points' displacement bounds).
   mutable std::vector<double> free_gap_;
+  mutable std::vector<char> pressed_at_pose_;    ///< per point: pressed at some evaluation of this pose
   mutable Eigen::VectorXd free_key_, key_, free_z_slave_, free_z_target_;
   Eigen::MatrixXd shape_columns_;                ///< Psi transposed (nq x dim points): each point's rows contiguous
   Eigen::VectorXd quasistatic_row_norms_;        ///< per point: the Frobenius norm of its quasistatic rows
