@@ -57,7 +57,7 @@ bool inertia_only_in_leading(const format::Sid& s, Index m) {
 
 FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dimension)
     : name_(spec.name), sid_(std::move(sid)), spec_(spec), stiffness_(sid_.Ke.M0), damping_(sid_.De.M0),
-      B_(sid_.nq(), 6), Ge_(sid_.nq(), 3), Oe_(sid_.nq(), 6), hq_(sid_.nq()) {
+      B_(sid_.nq(), 6), hq_(sid_.nq()) {
   const Index n = nq();
   // the Schur-complement solve below relies on the SID's normal form Me = I (a MacNeal SID:
   // I on the modes, zero on the massless boundary)
@@ -93,7 +93,13 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
   // the massless boundary carries no inertia: the floating-frame terms (quadratic in nq)
   // then run over the modes alone (seed 003's beam: 40 of 283 coordinates)
   n_inertial_ = massless > 0 && inertia_only_in_leading(sid_, n - massless) ? n - massless : n;
-  B_.setZero(), Oe_.setZero();  // rows beyond n_inertial_ stay zero
+  B_.setZero();  // rows beyond n_inertial_ stay zero
+  if (rotates_ && !sid_.Oe.M1.empty()) {
+    const Index ni = std::min(n_inertial_, Index(sid_.Oe.M1.size()));
+    oe1_.resize(n, 6 * ni);
+    for (Index j = 0; j < ni; ++j) oe1_.middleCols(6 * j, 6) = sid_.Oe.M1[std::size_t(j)];
+    q_w2_.resize(6 * ni);
+  }
   q_high_ = VectorXd::Zero(n - n_dynamic_);
   // in the normal form Ke's off-diagonal entries are round-off, dropped as ModalMatrix drops them
   const MatrixXd coupling = sid_.Ke.M0.bottomLeftCorner(n - n_dynamic_, n_dynamic_);
@@ -116,9 +122,9 @@ void FloatingBody::initial_state(double* y) const {
   if (spec_.elastic_start == "steady" && nd > 0) {
     // in equilibrium with the initial spin: Ke q = -Oe(0) w^2 (first order in q), so a
     // spinning body does not start ringing
-    VectorXd load = VectorXd::Zero(nq());
-    add_rotation_loads(VectorXd::Zero(nq()), VectorXd::Zero(nq()), spec_.angular_velocity, load);
-    Eigen::Map<VectorXd>(s + 7, nd) = sid_.Ke.M0.topLeftCorner(nd, nd).ldlt().solve(load.head(nd));
+    VectorXd load = VectorXd::Zero(nd);
+    add_rotation_loads(VectorXd::Zero(nq()), VectorXd::Zero(nq()), spec_.angular_velocity, 0, load);
+    Eigen::Map<VectorXd>(s + 7, nd) = sid_.Ke.M0.topLeftCorner(nd, nd).ldlt().solve(load);
   }
   Vector3d v = spec_.velocity, w = spec_.angular_velocity;
   for (int a = 0; a < 3; ++a) {
@@ -210,7 +216,7 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
       if (qv(j) != 0) gr.noalias() += qv(j) * (Blocks(sid_.Gr.M1[std::size_t(j)].data(), 9, nv) * qd.head(nv));
     const Eigen::Map<const Matrix3d> Gr(gr.data());
     hr.tail<3>() += -W * (J * w) - Gr * w;
-    add_rotation_loads(qv, qd, w, hq);
+    add_rotation_loads(qv, qd, w, 0, hq.head(nd));  // the quasistatic rows are the static solve's
   } else {
     Cr.setZero();
     A6.bottomRightCorner<3, 3>() = sid_.J.M0;
@@ -265,24 +271,32 @@ void FloatingBody::load_response(const GeneralizedForce& load, double* ydot) con
   accelerations_from(hr, load.elastic.head(n_dynamic_), ydot + offset_);
 }
 
-void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, const Vector3d& w, Eigen::Ref<VectorXd> out) const {
-  if (!rotates_) return;
-  // Ge(qdot) = sum_j Ge_j qdot_j: the nq x 3 blocks are consecutive, one matrix-vector product
-  // over the coordinates with velocities (quasistatic modes have none)
-  const Index ni = n_inertial_, nv = std::min(ni, n_dynamic_);
-  Eigen::Map<VectorXd>(Ge_.data(), Ge_.size()).noalias() = Eigen::Map<const MatrixXd>(sid_.Ge.M0.data(), 3 * nq(), nv) * qd.head(nv);
-  Eigen::Matrix<double, 6, 1> wq;
-  wq << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
-  sid_.Oe.evaluate(qv, Oe_, ni, ni);
-  out.noalias() -= Ge_ * w;
-  out.noalias() -= Oe_ * wq;
+void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, const Vector3d& w, Index first, Eigen::Ref<VectorXd> out) const {
+  // rows beyond n_inertial_ (a massless boundary) carry no inertia
+  const Index ni = n_inertial_, rows = std::min(first + out.size(), ni) - first;
+  if (!rotates_ || rows <= 0) return;
+  auto part = out.head(rows);
+  // Ge(qdot) w = sum_a w_a sum_j Ge_j(:, a) qdot_j: the SID's nq x 3 blocks Ge_j lie one after
+  // the other, so column a of all of them is a 3nq-strided matrix; the sum runs over the
+  // coordinates with velocities (quasistatic modes have none)
+  const Index nv = std::min(ni, n_dynamic_);
+  const Eigen::Map<const MatrixXd> ge(sid_.Ge.M0.data(), 3 * nq(), nv);
+  for (int a = 0; a < 3; ++a)
+    if (w(a) != 0) part.noalias() -= w(a) * (ge.middleRows(a * nq() + first, rows) * qd.head(nv));
+  // Oe(q) w^2 = Oe0 w^2 + [Oe1_0 ... Oe1_(ni-1)] (q (x) w^2): reads the first-order terms once
+  // (6 nq^2 numbers, the floating frame's largest term) instead of summing the matrix first
+  Eigen::Matrix<double, 6, 1> w2;
+  w2 << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
+  part.noalias() -= sid_.Oe.M0.middleRows(first, rows) * w2;
+  if (oe1_.size()) {
+    for (Index j = 0; j < oe1_.cols() / 6; ++j) q_w2_.segment<6>(6 * j) = qv(j) * w2;
+    part.noalias() -= oe1_.middleRows(first, rows) * q_w2_;
+  }
 }
 
 void FloatingBody::add_quasistatic_loads(const double* y, Eigen::Ref<VectorXd> out) const {
   const VectorXd& qv = q(y);
-  hq_.setZero();
-  add_rotation_loads(qv, qdot(y), omega(y), hq_);
-  out += hq_.tail(n_quasistatic());
+  add_rotation_loads(qv, qdot(y), omega(y), n_dynamic_, out);
   if (quasistatic_coupling_.size()) out.noalias() -= quasistatic_coupling_ * qv.head(n_dynamic_);
 }
 

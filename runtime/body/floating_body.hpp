@@ -131,8 +131,9 @@ public:
   const ModalMatrix& stiffness() const { return stiffness_; }
 
 private:
-  /// out -= Ge(qdot) w + Oe(q) w^2 (no-op for bodies that cannot rotate)
-  void add_rotation_loads(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, const Eigen::Vector3d& w,
+  /// out -= rows [first, first + out.size()) of Ge(qdot) w + Oe(q) w^2 (no-op for bodies that
+  /// cannot rotate): the integrated modes need their rows, the static solve the others.
+  void add_rotation_loads(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, const Eigen::Vector3d& w, Eigen::Index first,
                           Eigen::Ref<Eigen::VectorXd> out) const;
 
   std::string name_;
@@ -160,8 +161,12 @@ private:
   void accelerations_from(const Eigen::Matrix<double, 6, 1>& hr, const Eigen::Ref<const Eigen::VectorXd>& hd, double* d) const;
   mutable MassFactor mass_;
   mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
-  // workspace of derivatives(): [Ct(q) Cr(q)], Ge(qdot), Oe(q), h_q
-  mutable Eigen::MatrixXd B_, Ge_, Oe_;
+  /// Oe's first-order terms side by side, [Oe1_0 ... Oe1_(n_inertial - 1)] (nq x 6 n_inertial):
+  /// Oe1(q) w^2 is then one matrix-vector product with q (x) w^2
+  Eigen::MatrixXd oe1_;
+  // workspace of derivatives(): [Ct(q) Cr(q)], h_q; of add_rotation_loads(): q (x) w^2
+  mutable Eigen::MatrixXd B_;
+  mutable Eigen::VectorXd q_w2_;
   mutable Eigen::VectorXd hq_;
 };
 

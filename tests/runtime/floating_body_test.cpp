@@ -99,3 +99,42 @@ TEST_CASE("FloatingBody: a torque-free rigid box keeps its world angular momentu
   CHECK((body.r(y) - 0.5 * box.velocity).norm() < 1e-9);
   CHECK((body.omega(y) - box.angular_velocity).norm() > 1e-2);  // it did tumble
 }
+
+TEST_CASE("FloatingBody: the rotation loads on the quasistatic modes are the SID's -Ge(qdot) w - Oe(q) w^2 there",
+          "[runtime][unit]") {
+  // The loads are formed by rows (the integrated modes' in derivatives(), the quasistatic
+  // modes' here) from a side-by-side copy of Oe's first-order terms; the reference sums the
+  // SID's Taylor terms directly. The beam's SID carries first-order terms (Oe1).
+  const format::Sid sid = format::read_sid(std::string(ISOSID_GOLDEN_DIR) + "/beam_small.sid.h5");
+  REQUIRE(sid.Oe.order() == 1);
+  const Eigen::Index nq = sid.nq();
+  for (double split_hz : {2000.0, 1.0}) {  // 2 integrated modes, or none (every row quasistatic)
+    run::BodySpec spec;
+    spec.name = "beam";
+    spec.high_modes = "quasistatic";
+    spec.quasistatic_above_hz = split_hz;
+    const run::FloatingBody body(spec, sid, run::Dimension::Solid);
+    const Eigen::Index nd = body.n_dynamic();
+    REQUIRE(body.n_quasistatic() > 0);
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(body.state_size());
+    body.initial_state(y.data());
+    const Eigen::Vector3d w(0.5, 3.0, 40.0);
+    y.segment(7, nd) = Eigen::VectorXd::LinSpaced(nd, 1e-4, 3e-4);            // q of the integrated modes
+    y.segment<3>(10 + nd) = w;
+    y.segment(13 + nd, nd) = Eigen::VectorXd::LinSpaced(nd, -0.2, 0.1);       // their velocities
+    body.quasistatic_modes() = Eigen::VectorXd::LinSpaced(nq - nd, -2e-4, 5e-4);
+    const Eigen::VectorXd q = body.q(y.data()), qdot = body.qdot(y.data());
+
+    Eigen::Matrix<double, 6, 1> w2;
+    w2 << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
+    Eigen::VectorXd expected = -sid.Oe.at(q) * w2;
+    for (Eigen::Index j = 0; j < nq; ++j) expected -= qdot(j) * (sid.Ge.M0.middleCols(3 * j, 3) * w);
+    Eigen::VectorXd loads = Eigen::VectorXd::Zero(nq - nd);
+    body.add_quasistatic_loads(y.data(), loads);
+    INFO(nd << " integrated modes");
+    // the same sums in another order: round-off of the largest term, a few eps of |Oe| |w|^2
+    const double scale = (sid.Oe.M0.cwiseAbs() * w2.cwiseAbs()).maxCoeff();
+    CHECK((loads - expected.tail(nq - nd)).cwiseAbs().maxCoeff() <= 1e-13 * scale);
+    CHECK(loads.norm() > 1e3 * 1e-13 * scale);  // the loads themselves are far above that
+  }
+}
