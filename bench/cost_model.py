@@ -4,6 +4,9 @@ split into the quasistatic static solve, contact detection and forces, joints, t
 equations and output (summary.json `time_split_s`), set against a bound from the work no
 evaluation can avoid:
   - the dense floating-frame terms: one product with each body's coupled (nq + 6)^2 mass matrix,
+    and, for a body that can rotate, the contractions of the SID's first-order rotation terms
+    with q (and qdot): Cr1 3 nq^2, Gr1 9 nv nq, Ge 3 nq nv, Oe1 6 nq^2 (nv: the integrated
+    modes, the only ones with velocities), each where the SID carries it,
   - mapping displacements to and forces from the loaded contact points: 2 x 3 x nq multiply-adds
     each way per point (summary.json `rhs_cost.mean_active_points`),
 at this core's dense floating-point rate, measured here with one BLAS thread. The ratio says how
@@ -18,7 +21,9 @@ import sys  # noqa: E402
 import tempfile  # noqa: E402
 import time  # noqa: E402
 
+import h5py  # noqa: E402
 import numpy as np  # noqa: E402
+import tomllib  # noqa: E402
 
 from bench_common import BUILD, ROOT, machine, run_json, update_section  # noqa: E402
 
@@ -41,21 +46,39 @@ def dense_rate():
     return 600 ** 2 / best
 
 
-def bound_multiply_adds(summary):
+def rotation_multiply_adds(scene_file, body, n, nv):
+    """The first-order rotation terms' contractions per evaluation of a flexible body (n
+    coordinates, nv with velocities): none where the scene locks its rotations."""
+    with open(scene_file, "rb") as f:
+        scene = tomllib.load(f)
+    dimension = scene["simulation"].get("dimension", "3d")
+    spec = next(b for b in scene.get("flexible_body", []) if b["name"] == body)
+    free = {"axisymmetric": set(), "planar": {"rz"}}.get(dimension, {"rx", "ry", "rz"}) - set(spec.get("locked", []))
+    if not free:
+        return 0
+    with h5py.File(os.path.join(os.path.dirname(scene_file), spec["sid"]), "r") as sid:
+        first_order = {t for t in ("Cr", "Gr", "Oe") if f"terms/{t}/M1" in sid}
+    return (3 * n * n * ("Cr" in first_order) + 9 * nv * n * ("Gr" in first_order) + 3 * n * nv +
+            6 * n * n * ("Oe" in first_order))
+
+
+def bound_multiply_adds(summary, scene_file):
     nq = [b["nq"] for b in summary["bodies"]]
     frame = sum((n + 6) ** 2 for n in nq)
+    frame += sum(rotation_multiply_adds(scene_file, b["name"], b["nq"], b["nq"] - b["quasistatic_modes"])
+                 for b in summary["bodies"] if b["nq"] > 0)
     points = summary["rhs_cost"]["mean_active_points"]
     # a loaded point maps through the rows of the body it belongs to (the larger one, to bound from below)
     mapping = 2 * 3 * max(nq, default=0) * points
     return frame + mapping
 
 
-def per_rhs(summary, rate):
+def per_rhs(summary, scene_file, rate):
     """The computed right-hand sides (repeated ones are answered from the one before), µs per
     computed RHS by part, their total, and the bound in µs at `rate` multiply-adds per second."""
     n = summary["rhs_cost"]["evaluations"] - summary["rhs_cost"]["repeated"]
     per = {p: 1e6 * summary["time_split_s"][p] / n for p in PARTS}
-    return n, per, sum(per.values()), 1e6 * bound_multiply_adds(summary) / rate
+    return n, per, sum(per.values()), 1e6 * bound_multiply_adds(summary, scene_file) / rate
 
 
 def main():
@@ -65,15 +88,18 @@ def main():
              f"{info['date']}, {info['machine']}, commit {info['commit']}; `bench/cost_model.py`. "
              f"Time per computed right-hand side (RHS) from summary.json `time_split_s` (output: per RHS as well, though it runs per step; "
              f"RHS at the state of the one before are answered from it and not counted); "
-             f"bound: the unavoidable multiply-adds (one product with each body's (nq + 6)^2 mass matrix, and 2 x 3 x nq per loaded "
-             f"contact point) at this core's dense rate, {rate / 1e9:.1f} G multiply-adds/s (600 x 600 matrix-vector product, one thread).",
+             f"bound: the unavoidable multiply-adds (one product with each body's (nq + 6)^2 mass matrix; for a body that can rotate, "
+             f"the SID's first-order rotation terms contracted with q and qdot, Cr1 3 nq^2 + Gr1 9 nv nq + Ge 3 nq nv + Oe1 6 nq^2 with "
+             f"nv the integrated modes; and 2 x 3 x nq per loaded contact point) at this core's dense rate, {rate / 1e9:.1f} G "
+             f"multiply-adds/s (600 x 600 matrix-vector product, one thread).",
              "", "| scene | nq (quasistatic) | RHS (repeated) | mean loaded points | µs per RHS | " + " | ".join(PARTS) +
              " | bound [µs] | ratio |", "|---|---|---|---|---|" + "---|" * len(PARTS) + "---|---|"]
     with tempfile.TemporaryDirectory() as scratch:
         for label, name in SCENES:
-            s = run_json([RUN, "-q", "--json", os.path.join(ROOT, "models", name + ".scene.toml"), "-o", scratch])
+            scene_file = os.path.join(ROOT, "models", name + ".scene.toml")
+            s = run_json([RUN, "-q", "--json", scene_file, "-o", scratch])
             repeated = s["rhs_cost"]["repeated"]
-            n, per, total, bound = per_rhs(s, rate)
+            n, per, total, bound = per_rhs(s, scene_file, rate)
             nq = " + ".join(f"{b['nq']} ({b['quasistatic_modes']})" for b in s["bodies"] if b["nq"] > 0)
             lines.append(f"| {label} `{name}` | {nq} | {n + repeated} ({repeated}) | {s['rhs_cost']['mean_active_points']:.1f} | {total:.1f} | " +
                          " | ".join(f"{per[p]:.2f}" for p in PARTS) + f" | {bound:.2f} | {total / bound:.0f} |")

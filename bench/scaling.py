@@ -46,11 +46,12 @@ def scene(work, sid, speed, name):
     path = os.path.join(work, name + ".scene.toml")
     with open(path, "w") as f:
         f.write(text)
-    return run_json([RUN, "-q", "--json", path, "-o", os.path.join(work, name)])
+    return run_json([RUN, "-q", "--json", path, "-o", os.path.join(work, name)]), path
 
 
-def row(label, s, rate):
-    n, per, total, bound = per_rhs(s, rate)
+def row(label, run, rate):
+    s, scene_file = run
+    n, per, total, bound = per_rhs(s, scene_file, rate)
     b = s["bodies"][0]
     return (f"| {label} | {b['nq']} ({b['quasistatic_modes']}) | {s['steps']} | {1e6 * s['cpu_time_s'] / s['steps']:.0f} | "
             f"{n / s['steps']:.1f} | {s['rhs_cost']['mean_active_points']:.1f} | {total:.1f} | {per['static_solve']:.1f} | "
@@ -71,13 +72,11 @@ def main():
         sids = {}
         for normal in (6, 70, 118, 270):
             sids[normal] = sphere_sid(work, normal)
-            s = scene(work, sids[normal], 0.1, f"nq{normal}")
-            lines.append(row(f"{normal} normal modes", s, rate))
+            lines.append(row(f"{normal} normal modes", scene(work, sids[normal], 0.1, f"nq{normal}"), rate))
             print(lines[-1], file=sys.stderr, flush=True)
         lines += ["", "Against loaded points (nq = 36; a faster impact spreads the contact over more points):", ""] + header
         for speed in (0.03, 0.1, 0.3, 1.0):
-            s = scene(work, sids[6], speed, f"v{speed}")
-            lines.append(row(f"{speed} m/s", s, rate))
+            lines.append(row(f"{speed} m/s", scene(work, sids[6], speed, f"v{speed}"), rate))
             print(lines[-1], file=sys.stderr, flush=True)
     update_section("scaling", "\n".join(lines))
     print("\n".join(lines))
