@@ -126,6 +126,7 @@ int QuasistaticModes::newton(const double* y) const {
       R_ = model_.residual();
       penalty_energy_ = model_.energy();
       scatter(z_);
+      for (const SurfaceContact* c : contacts_) c->take_model_gaps(y, terms_);
       update_window();
       return iteration;
     }

@@ -158,15 +158,37 @@ Eigen::Vector3d SurfaceContact::point_force(Eigen::Index g, double p, const Eige
   return fn * t.normal + fn * friction_per_normal_force(vt);
 }
 
+template <class F>
+bool SurfaceContact::for_each_pressed(const double* y, F&& f) const {
+  solution_key(y, current_key_);
+  if (!recorded_valid_ || current_key_ != recorded_key_) {
+    for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A,
+                                                      const TargetPoint& t) {
+      if (pressure(g, t.gap) > 0) f(g, Psi, P, A, t);
+    }, unpressed, never);
+    return false;
+  }
+  // the static solve's points at this solution: only the pressed ones are placed again
+  const Eigen::Matrix3d A = body_.orientation(y).toRotationMatrix();
+  const Eigen::VectorXd& q = body_.q(y);
+  Eigen::Vector3d P = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < recorded_count_; ++i) {
+    const RecordedPoint& point = recorded_[i];
+    if (pressure(point.g, point.target.gap) <= 0) continue;
+    for (int a = 0; a < dim_; ++a) P(a) = surface_.position(point.g, a) + shape_columns_.col(point.g * dim_ + a).dot(q);
+    f(point.g, surface_.Psi.middleRows(point.g * dim_, dim_), P, A, point.target);
+  }
+  return true;
+}
+
 std::vector<PointLoad> SurfaceContact::point_loads(const double* y) const {
   std::vector<PointLoad> loads;
   const Eigen::Vector3d r = body_.r(y);
-  for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
+  for_each_pressed(y, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
     const double p = pressure(g, t.gap);
-    if (p <= 0) return;
     Eigen::Vector3d vt;
     loads.push_back({r + A * P, point_force(g, p, Psi, P, y, t, vt), p, t.gap});
-  }, unpressed, never);
+  });
   return loads;
 }
 
@@ -174,9 +196,8 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
   ContactState s;
   const FloatingBody* master = target_.body();
   const Eigen::Matrix3d A_master = master ? master->orientation(y).toRotationMatrix() : Eigen::Matrix3d::Identity();
-  for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
+  auto load = [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, const TargetPoint& t) {
     const double p = pressure(g, t.gap);
-    if (p <= 0) return;
     const double w = surface_.weight(g);
     Eigen::Vector3d vt;
     const Eigen::Vector3d F = point_force(g, p, Psi, P, y, t, vt);
@@ -189,7 +210,8 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
     s.max_penetration = std::max(s.max_penetration, -t.gap);
     // the energy of the actual penetration (exact contact: none once the gaps have closed)
     if (t.gap < 0) s.penalty_energy += 0.5 * spec_.penalty * t.gap * t.gap * w;
-  }, unpressed, never);
+  };
+  s.from_static_solve = for_each_pressed(y, load);
   return s;
 }
 
@@ -213,6 +235,8 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
   // (exact contact's multipliers change between evaluations: no skipping there)
   pose_key(y, key_);
   const bool same_pose = !spec_.exact && key_.size() == free_key_.size() && key_ == free_key_;
+  recorded_valid_ = false;  // until this recording is complete
+  recorded_count_ = 0;
   const auto z_slave = body_.q(y).tail(nh);
   double slave_move = 0, target_move = 0;
   if (same_pose) {
@@ -255,6 +279,11 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
       if (!pressed_at_pose_[std::size_t(g)]) ++terms.newly_pressed, pressed_at_pose_[std::size_t(g)] = 1;
     }
     const Eigen::Index k = terms.add_point(t.gap, lambda, spec_.penalty, surface_.weight(g));
+    if (!spec_.exact) {
+      if (recorded_count_ == recorded_.size()) recorded_.emplace_back();
+      RecordedPoint& kept = recorded_[recorded_count_++];
+      kept.g = g, kept.k = k, kept.target = t;
+    }
     Eigen::Vector3d direction = Eigen::Vector3d::Zero();
     if (spec_.friction > 0) {
       // Along the point's rigid-body sliding, held during the Newton iterations. The quasistatic
@@ -276,6 +305,26 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
     if (master_qs) add_target_side(t.Psi, t.normal, direction, k);
   }, left_out_from, skip);
   if (clearance > 0) terms.unseen = true;
+  // exact contact's multipliers change after the solve: its loads are found anew
+  if (!spec_.exact) solution_key(y, recorded_key_), recorded_valid_ = true;
+}
+
+void SurfaceContact::take_model_gaps(const double* y, const QuasistaticTerms& terms) const {
+  if (!recorded_valid_) return;
+  for (std::size_t i = 0; i < recorded_count_; ++i) recorded_[i].target.gap = terms.gap(recorded_[i].k);
+  solution_key(y, recorded_key_);
+}
+
+void SurfaceContact::solution_key(const double* y, Eigen::VectorXd& key) const {
+  const FloatingBody* master = target_.body();
+  const Eigen::Index ns = 7 + body_.n_dynamic(), nm = master ? 7 + master->n_dynamic() : 0;
+  const Eigen::Index hs = body_.n_quasistatic(), hm = master ? master->n_quasistatic() : 0;
+  key.resize(ns + nm + hs + hm);
+  key.head(ns) = Eigen::Map<const Eigen::VectorXd>(y + body_.offset(), ns);
+  key.segment(ns, hs) = body_.quasistatic_modes();
+  if (!master) return;
+  key.segment(ns + hs, nm) = Eigen::Map<const Eigen::VectorXd>(y + master->offset(), nm);
+  key.tail(hm) = master->quasistatic_modes();
 }
 
 void SurfaceContact::pose_key(const double* y, Eigen::VectorXd& key) const {

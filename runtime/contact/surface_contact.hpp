@@ -26,6 +26,7 @@ struct ContactState {
   double penalty_energy = 0;    ///< J, sum of 1/2 c_p g^2 w over active points
   double friction_power = 0;    ///< W dissipated by friction (>= 0)
   int edge_points = 0;          ///< active points in the surface's edge elements (surface_edge.hpp)
+  bool from_static_solve = false;  ///< loaded from the static solve's points, without a pass over the surface
 };
 
 /// One loaded contact point (for viewing): where it is and what it carries, world frame.
@@ -50,8 +51,15 @@ public:
   /// Records every point of this contact that presses on the quasistatic modes of the slave
   /// or target body at y, or is free by less than what terms.window and terms.reach allow,
   /// with its gap linearized in those modes (nothing if neither body has quasistatic modes).
+  /// Penalty contact keeps the recorded points with their target points: apply() at the same
+  /// state and quasistatic coordinates loads them without another pass over the surface.
   void add_quasistatic_terms(const double* y, QuasistaticTerms& terms) const;
-  /// The points that carry load at y, as apply() loads them.
+  /// The static solve moved the quasistatic coordinates to the solution of the linear model
+  /// of `terms`, which is exact against fixed planes: the kept points take the model's gaps
+  /// and hold for the coordinates now set.
+  void take_model_gaps(const double* y, const QuasistaticTerms& terms) const;
+  /// The points that carry load at y, as apply() loads them (from the static solve's
+  /// recorded points where they hold, as apply() does).
   std::vector<PointLoad> point_loads(const double* y) const;
   bool frictionless() const { return spec_.friction == 0; }
   /// Penalty factor, N/m^3: the scene's, or derived by default_penalty() where it gave none.
@@ -93,9 +101,16 @@ private:
   /// gaps), and so are those for which skip(g) holds.
   template <class F, class Beyond, class Skip>
   double for_each_point(const double* y, ContactTarget::Fill fill, F&& f, Beyond&& beyond, Skip&& skip) const;
+  /// Calls f(g, Psi_g, P, A, target point) as for_each_point() does, for the points that press
+  /// at y: from the static solve's recorded points where they hold for y and the quasistatic
+  /// coordinates now set (then returns true), else from a pass over the surface.
+  template <class F>
+  bool for_each_pressed(const double* y, F&& f) const;
   /// What the poses and integrated coordinates of both bodies are at y: the quasistatic solve
   /// evaluates its terms many times at one y, changing only the quasistatic coordinates.
   void pose_key(const double* y, Eigen::VectorXd& key) const;
+  /// The pose key followed by both bodies' quasistatic coordinates as set now.
+  void solution_key(const double* y, Eigen::VectorXd& key) const;
   /// The world force on slave point g at pressure p: normal, plus friction against the
   /// sliding velocity `vt` it returns (zero without friction).
   Eigen::Vector3d point_force(Eigen::Index g, double p, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Vector3d& P,
@@ -132,6 +147,19 @@ private:
   mutable std::vector<double> free_gap_;
   mutable std::vector<char> pressed_at_pose_;    ///< per point: pressed at some evaluation of this pose
   mutable Eigen::VectorXd free_key_, key_, free_z_slave_, free_z_target_;
+  /// The points of the last add_quasistatic_terms() (penalty contact), in the order of g:
+  /// every point that pressed there or was free within the model's window and reach, so
+  /// every point that can press at the solution; if recorded_valid_, at `recorded_key_`
+  /// (solution_key()).
+  struct RecordedPoint {
+    Eigen::Index g = 0;  ///< the slave point
+    Eigen::Index k = 0;  ///< its column in the quasistatic terms
+    TargetPoint target;  ///< a plane's body_point is that of the recording (no body takes a reaction)
+  };
+  mutable std::vector<RecordedPoint> recorded_;  ///< the first recorded_count_ are current (capacity kept)
+  mutable std::size_t recorded_count_ = 0;
+  mutable Eigen::VectorXd recorded_key_, current_key_;
+  mutable bool recorded_valid_ = false;
   Eigen::MatrixXd shape_columns_;                ///< Psi transposed (nq x dim points): each point's rows contiguous
   Eigen::VectorXd quasistatic_row_norms_;        ///< per point: the Frobenius norm of its quasistatic rows
   GapBounds bounds_;                             ///< between full evaluations of the points

@@ -305,6 +305,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
   j["rhs_cost"] = {{"evaluations", cost.evaluations},
                    {"repeated", cost.repeated},
                    {"quasistatic_passes", system_.quasistatic_passes()},
+                   {"kept_contact_loads", cost.kept_contact_loads},
                    {"mean_active_points", cost.evaluations ? double(cost.active_points) / double(cost.evaluations) : 0.0}};
   j["contacts"] = json::array();
   for (std::size_t k = 0; k < system_.contacts().size(); ++k) {

@@ -186,6 +186,7 @@ void MultibodySystem::rhs(double, const double* y, double* ydot) const {
     const ContactState state = contacts_[k].apply(y, forces_[slave_body_[k]], reaction);
     dissipation += state.friction_power;
     cost_.active_points += state.active_points;
+    cost_.kept_contact_loads += state.from_static_solve;
   }
   for (std::size_t k = 0; k < hertz_.size(); ++k)
     cost_.active_points += hertz_[k].apply(y, forces_[hertz_bodies_[k][0]], forces_[hertz_bodies_[k][1]]).active_points;

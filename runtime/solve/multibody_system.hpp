@@ -95,6 +95,7 @@ public:
     long evaluations = 0;
     long repeated = 0;       ///< evaluations at the state of the one before, answered from it
     long active_points = 0;  ///< contact points carrying load, summed over the evaluations
+    long kept_contact_loads = 0;  ///< contact evaluations loaded from the static solve's points (ContactState)
     double static_solve_s = 0, contacts_s = 0, joints_s = 0, floating_frame_s = 0;
   };
   const RhsCost& rhs_cost() const { return cost_; }
