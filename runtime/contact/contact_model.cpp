@@ -23,11 +23,13 @@ double ContactModel::forces(const QuasistaticTerms& terms, const Eigen::VectorXd
 }
 
 Eigen::Index ContactModel::jacobian_terms(const QuasistaticTerms& terms, const Eigen::VectorXd& gaps) const {
-  if (U_.rows() != terms.V.rows() || U_.cols() < terms.V.cols()) U_.resize(terms.V.rows(), terms.V.cols()), V_.resize(terms.V.rows(), terms.V.cols());
+  if (U_.rows() != terms.V.rows() || U_.cols() < terms.V.cols())
+    U_.resize(terms.V.rows(), terms.V.cols()), V_.resize(terms.V.rows(), terms.V.cols()), weights_.resize(terms.V.cols());
   Eigen::Index r = 0;
   for (Eigen::Index k = 0; k < terms.count; ++k) {
     if (terms.pressure(k, gaps(k)) <= 0) continue;
     const double stiffness = terms.penalty(k) * terms.weight(k);
+    weights_(r) = stiffness;
     V_.col(r) = terms.V.col(k);
     if (terms.friction) U_.col(r).noalias() = stiffness * (terms.V.col(k) + terms.T.col(k));
     else U_.col(r).noalias() = stiffness * terms.V.col(k);
@@ -70,7 +72,8 @@ int ContactModel::solve(const QuasistaticJacobian& K, const QuasistaticTerms& te
   for (int iteration = 1; iteration <= kMaxIterations; ++iteration) {
     const Eigen::Index r = jacobian_terms(terms, gaps_);
     for (Eigen::Index k = 0; k < m; ++k) pressed_[std::size_t(k)] = terms.pressure(k, gaps_(k)) > 0;
-    K.solve(U_, V_, r, R_, step_);  // the Newton move is -step_
+    // the Newton move is -step_; without friction U = V diag(c_p w), and K can use the symmetry
+    K.solve(U_, V_, r, R_, step_, terms.friction ? nullptr : &weights_);
     rates_.head(m).noalias() = terms.V.leftCols(m).transpose() * step_;
     double alpha = 1;
     if (conservative) {

@@ -13,6 +13,7 @@ QuasistaticJacobian::QuasistaticJacobian(const std::vector<Eigen::MatrixXd>& blo
   for (const Eigen::MatrixXd& K : blocks) stiffness_.segment(at, K.rows()) = K.diagonal(), at += K.rows();
   if (diagonal) {
     smallest_eigenvalue_ = n ? std::max(0.0, stiffness_.minCoeff()) : 0.0;
+    inverse_root_stiffness_ = stiffness_.cwiseMax(0.0).cwiseSqrt().cwiseInverse();  // used only where K is positive
     return;
   }
   dense_stiffness_ = Eigen::MatrixXd::Zero(n, n);
@@ -75,7 +76,7 @@ bool same_columns(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, Eigen::Ind
 }  // namespace
 
 const QuasistaticJacobian::Factorization& QuasistaticJacobian::factorization(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V,
-                                                                             Eigen::Index r) const {
+                                                                             Eigen::Index r, const Eigen::VectorXd* weights) const {
   ++uses_;
   Factorization* oldest = &kept_.front();
   for (Factorization& f : kept_) {
@@ -85,7 +86,7 @@ const QuasistaticJacobian::Factorization& QuasistaticJacobian::factorization(con
     }
     if (f.last_use < oldest->last_use) oldest = &f;
   }
-  factor(U, V, r, *oldest);
+  factor(U, V, r, weights, *oldest);
   oldest->last_use = uses_;
   return *oldest;
 }
@@ -98,7 +99,8 @@ void QuasistaticJacobian::solve_stiffness(const Eigen::VectorXd& b, Eigen::Vecto
   }
 }
 
-void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::MatrixXd& V_all, Eigen::Index r, Factorization& f) const {
+void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::MatrixXd& V_all, Eigen::Index r, const Eigen::VectorXd* weights,
+                                 Factorization& f) const {
   const auto U = U_all.leftCols(r), V = V_all.leftCols(r);
   // buffers sized to the columns' capacity: no allocation once the largest active set has been seen
   const Eigen::Index capacity = U_all.cols();
@@ -143,14 +145,30 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
   } else {
     scaled_U = U.array().colwise() / stiffness_.array();
   }
-  f.capacitance.topLeftCorner(r, r).setIdentity();
-  f.capacitance.topLeftCorner(r, r).noalias() += V.transpose() * f.scaled_U.leftCols(r);
+  auto capacitance = f.capacitance.topLeftCorner(r, r);
+  if (weights && !dense) {
+    // U = V D: I + V^T K^-1 V D, whose Gram part G = (K^-1/2 V)^T (K^-1/2 V) is symmetric,
+    // formed as its lower triangle (the n r^2 products are this factorization's cost)
+    if (root_scaled_V_.rows() != size() || root_scaled_V_.cols() < capacity) root_scaled_V_.resize(size(), capacity);
+    auto W = root_scaled_V_.leftCols(r);
+    W = V.array().colwise() * inverse_root_stiffness_.array();
+    capacitance.setZero();
+    capacitance.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());
+    for (Eigen::Index j = 1; j < r; ++j) capacitance.col(j).head(j) = capacitance.row(j).head(j).transpose();  // the upper triangle
+    for (Eigen::Index j = 0; j < r; ++j) {
+      capacitance.col(j) *= (*weights)(j);
+      capacitance(j, j) += 1;
+    }
+  } else {
+    capacitance.setIdentity();
+    capacitance.noalias() += V.transpose() * f.scaled_U.leftCols(r);
+  }
   factor_leading_block(f.capacitance, r, f.pivots);
 }
 
 void QuasistaticJacobian::solve(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd& b,
-                                Eigen::VectorXd& x) const {
-  const Factorization& f = factorization(U, V, r);
+                                Eigen::VectorXd& x, const Eigen::VectorXd* weights) const {
+  const Factorization& f = factorization(U, V, r, weights);
   if (f.direct) {
     x = f.lu.solve(b);
     return;

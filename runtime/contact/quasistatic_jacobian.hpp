@@ -31,8 +31,11 @@ public:
   void multiply(const Eigen::VectorXd& z, Eigen::VectorXd& out) const;
   /// z^T K_h w.
   double product(const Eigen::VectorXd& z, const Eigen::VectorXd& w) const;
-  /// Solves (K_h + U V^T) x = b with the first r columns of U and V.
-  void solve(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  /// Solves (K_h + U V^T) x = b with the first r columns of U and V. `weights`, if given,
+  /// promises U = V diag(weights) (contact without friction): Woodbury's capacitance then
+  /// comes from the symmetric V^T K^-1 V, half the products.
+  void solve(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+             const Eigen::VectorXd* weights = nullptr) const;
 
   /// Factorizations kept.
   static constexpr std::size_t kKeptFactorizations = 8;
@@ -51,13 +54,15 @@ private:
     long last_use = 0;
   };
   /// The kept factorization of these terms, factoring them in place of the least recently used.
-  const Factorization& factorization(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r) const;
-  /// Factors K + U V^T for the first r columns into f.
-  void factor(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, Factorization& f) const;
+  const Factorization& factorization(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd* weights) const;
+  /// Factors K + U V^T for the first r columns into f (`weights` as for solve()).
+  void factor(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd* weights, Factorization& f) const;
   /// x = K^-1 b.
   void solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
 
   Eigen::VectorXd stiffness_;                 ///< diagonal of K_h
+  Eigen::VectorXd inverse_root_stiffness_;    ///< its K^-1/2, for the symmetric capacitance
+  mutable Eigen::MatrixXd root_scaled_V_;     ///< K^-1/2 V (capacity columns)
   Eigen::MatrixXd dense_stiffness_;           ///< K_h if it is not diagonal
   /// K_h^-1 if K_h is dense and positive definite (else empty: the Jacobian is then factored
   /// each time). Kept whole: Woodbury's K^-1 U then reads only the columns where U has

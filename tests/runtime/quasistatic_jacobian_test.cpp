@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 using namespace isosid;
 
 namespace {
@@ -14,11 +16,11 @@ Eigen::MatrixXd spd(Eigen::Index n, unsigned seed) {
   return A * A.transpose() + double(n) * Eigen::MatrixXd::Identity(n, n);
 }
 
-/// The relative error of the solver's x against a dense LU solve.
+/// The relative error of the solver's x against a dense LU solve (`weights`: U = V diag(weights), as solve() takes them).
 double solve_error(const run::QuasistaticJacobian& J, const Eigen::MatrixXd& K, const Eigen::MatrixXd& U, const Eigen::MatrixXd& V,
-                   Eigen::Index r, const Eigen::VectorXd& b) {
+                   Eigen::Index r, const Eigen::VectorXd& b, const Eigen::VectorXd* weights = nullptr) {
   Eigen::VectorXd x;
-  J.solve(U, V, r, b, x);
+  J.solve(U, V, r, b, x, weights);
   const Eigen::MatrixXd full = K + U.leftCols(r) * V.leftCols(r).transpose();
   const Eigen::VectorXd expected = full.partialPivLu().solve(b);
   return (x - expected).norm() / expected.norm();
@@ -42,6 +44,12 @@ TEST_CASE("QuasistaticJacobian solves K + U V^T as a dense solve does", "[runtim
       INFO("diagonal K " << diagonal << ", rank " << r);
       // the dense reference and the solver differ by the round-off of a condition number near 1e3
       CHECK(solve_error(J, K, U, V, r, b) < 1e-11);
+      // without friction U = V diag(c_p w): the symmetric capacitance (diagonal K), weights
+      // spread over six decades as penalties times Gauss weights are
+      const Eigen::VectorXd weights = Eigen::VectorXd::LinSpaced(16, 0.0, 6.0).unaryExpr([](double e) { return std::pow(10.0, e); });
+      const Eigen::MatrixXd U_symmetric = V * weights.asDiagonal();
+      const run::QuasistaticJacobian fresh({K}, diagonal);  // no kept factorization of these terms
+      CHECK(solve_error(fresh, K, U_symmetric, V, r, b, &weights) < 1e-11);
     }
   }
 }
