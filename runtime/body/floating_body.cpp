@@ -96,8 +96,8 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
   B_.setZero();  // rows beyond n_inertial_ stay zero
   if (rotates_ && !sid_.Oe.M1.empty()) {
     const Index ni = std::min(n_inertial_, Index(sid_.Oe.M1.size()));
-    oe1_.resize(n, 6 * ni);
-    for (Index j = 0; j < ni; ++j) oe1_.middleCols(6 * j, 6) = sid_.Oe.M1[std::size_t(j)];
+    oe1_.resize(n_inertial_, 6 * ni);  // rows beyond n_inertial_ carry no inertia
+    for (Index j = 0; j < ni; ++j) oe1_.middleCols(6 * j, 6) = sid_.Oe.M1[std::size_t(j)].topRows(n_inertial_);
     q_w2_.resize(6 * ni);
   }
   q_high_ = VectorXd::Zero(n - n_dynamic_);

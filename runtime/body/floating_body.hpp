@@ -161,7 +161,8 @@ private:
   void accelerations_from(const Eigen::Matrix<double, 6, 1>& hr, const Eigen::Ref<const Eigen::VectorXd>& hd, double* d) const;
   mutable MassFactor mass_;
   mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
-  /// Oe's first-order terms side by side, [Oe1_0 ... Oe1_(n_inertial - 1)] (nq x 6 n_inertial):
+  /// Oe's first-order terms side by side, [Oe1_0 ... Oe1_(n_inertial - 1)], their leading
+  /// n_inertial rows (n_inertial x 6 n_inertial):
   /// Oe1(q) w^2 is then one matrix-vector product with q (x) w^2
   Eigen::MatrixXd oe1_;
   // workspace of derivatives(): [Ct(q) Cr(q)], h_q; of add_rotation_loads(): q (x) w^2

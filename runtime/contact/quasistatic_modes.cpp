@@ -110,6 +110,7 @@ int QuasistaticModes::newton(const double* y) const {
   // search on Pi guards it where the gaps curve. With friction (not a potential) the search
   // falls back to |R|.
   residual(y, R_);
+  int remodels = 0;
   for (int iteration = 1; iteration <= 60; ++iteration) {
     model_.solve(jacobian_, terms_, held_loads_, conservative_, move_);
     // converged when the update is at round-off relative to the solution (an absolute
@@ -162,9 +163,11 @@ int QuasistaticModes::newton(const double* y) const {
       if (accept || halving == 29) break;
       // The full step pressed points its model did not know, and they are recorded from now
       // on: the model at z_old with them makes a better step than the halvings of this one
-      // (one pass instead of about nine). Bounded: a point is new once per pose.
-      if (halving == 0 && terms_.newly_pressed > 0) {
+      // (one pass instead of about nine). A point is unknown once per state; a contact that
+      // grows ring by ring gets a few new models, then halvings.
+      if (halving == 0 && terms_.newly_pressed > 0 && remodels < kMaxRemodels) {
         remodel = true;
+        ++remodels;
         break;
       }
       alpha *= 0.5;

@@ -30,6 +30,9 @@ class QuasistaticModes {
 public:
   /// Augmented-Lagrangian passes of exact contact before the solve gives up.
   static constexpr int kMaxUzawaPasses = 100;
+  /// New linear models per Newton solve after full steps that pressed points the model did
+  /// not know (then the step is halved instead).
+  static constexpr int kMaxRemodels = 8;
 
   /// Assigns every body with quasistatic modes its block of the stacked vector z.
   QuasistaticModes(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const std::vector<SurfaceContact>& contacts);

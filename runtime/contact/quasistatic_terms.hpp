@@ -32,8 +32,8 @@ struct QuasistaticTerms {
   /// Some contact's broad phase found its surface clear and recorded nothing of it: its points
   /// are not bounded by the reach.
   bool unseen = false;
-  /// Points pressed for the first time at the pose (bodies' positions and integrated
-  /// coordinates) of this recording: the model before did not know them.
+  /// Penalty points pressed here that the recording before did not hold: the model a step
+  /// was made from did not know them.
   Eigen::Index newly_pressed = 0;
   /// The round-off of the pressed points' gaps, m: differences of positions that are far
   /// larger than the gaps (a few eps of their distance from the world's and bodies' origins).

@@ -44,6 +44,7 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
   for (Eigen::Index g = 0; g < surface_.points(); ++g)
     quasistatic_row_norms_(g) = shape_columns_.block(body.nq() - nh, g * dim_, nh, dim_).norm();
   hints_.assign(std::size_t(surface_.points()), Eigen::Vector2d::Constant(NAN));
+  recorded_pass_.assign(std::size_t(surface_.points()), -1);
   multiplier_.assign(std::size_t(surface_.points()), 0.0);
   updated_ = multiplier_;
   if (surface_.points() == 0) return;
@@ -237,6 +238,7 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
   const bool same_pose = !spec_.exact && key_.size() == free_key_.size() && key_ == free_key_;
   recorded_valid_ = false;  // until this recording is complete
   recorded_count_ = 0;
+  ++pass_;
   const auto z_slave = body_.q(y).tail(nh);
   double slave_move = 0, target_move = 0;
   if (same_pose) {
@@ -276,9 +278,12 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
       target_.fill_loads(y, t);  // recorded free: its rows on the target too
     } else {
       terms.gap_resolution = std::max(terms.gap_resolution, kGapRoundoff * (origins + P.norm() + t.body_point.norm()));
-      if (!pressed_at_pose_[std::size_t(g)]) ++terms.newly_pressed, pressed_at_pose_[std::size_t(g)] = 1;
+      // unknown to the model of the pass before (a penalty point not recorded there)
+      if (!spec_.exact && recorded_pass_[std::size_t(g)] != pass_ - 1) ++terms.newly_pressed;
+      pressed_at_pose_[std::size_t(g)] = 1;
     }
     const Eigen::Index k = terms.add_point(t.gap, lambda, spec_.penalty, surface_.weight(g));
+    recorded_pass_[std::size_t(g)] = pass_;
     if (!spec_.exact) {
       if (recorded_count_ == recorded_.size()) recorded_.emplace_back();
       RecordedPoint& kept = recorded_[recorded_count_++];
@@ -316,8 +321,9 @@ void SurfaceContact::take_model_gaps(const double* y, const QuasistaticTerms& te
 }
 
 void SurfaceContact::solution_key(const double* y, Eigen::VectorXd& key) const {
+  // both bodies' whole states (the recorded target points carry the target's velocity)
   const FloatingBody* master = target_.body();
-  const Eigen::Index ns = 7 + body_.n_dynamic(), nm = master ? 7 + master->n_dynamic() : 0;
+  const Eigen::Index ns = body_.state_size(), nm = master ? master->state_size() : 0;
   const Eigen::Index hs = body_.n_quasistatic(), hm = master ? master->n_quasistatic() : 0;
   key.resize(ns + nm + hs + hm);
   key.head(ns) = Eigen::Map<const Eigen::VectorXd>(y + body_.offset(), ns);

@@ -109,7 +109,8 @@ private:
   /// What the poses and integrated coordinates of both bodies are at y: the quasistatic solve
   /// evaluates its terms many times at one y, changing only the quasistatic coordinates.
   void pose_key(const double* y, Eigen::VectorXd& key) const;
-  /// The pose key followed by both bodies' quasistatic coordinates as set now.
+  /// Both bodies' states at y (poses, velocities, integrated coordinates) followed by their
+  /// quasistatic coordinates as set now.
   void solution_key(const double* y, Eigen::VectorXd& key) const;
   /// The world force on slave point g at pressure p: normal, plus friction against the
   /// sliding velocity `vt` it returns (zero without friction).
@@ -146,6 +147,8 @@ private:
   /// since cannot close (gaps move by at most the points' displacement bounds).
   mutable std::vector<double> free_gap_;
   mutable std::vector<char> pressed_at_pose_;    ///< per point: pressed at some evaluation of this pose
+  mutable std::vector<long> recorded_pass_;      ///< per point: the last add_quasistatic_terms() (pass_) that recorded it
+  mutable long pass_ = 0;
   mutable Eigen::VectorXd free_key_, key_, free_z_slave_, free_z_target_;
   /// The points of the last add_quasistatic_terms() (penalty contact), in the order of g:
   /// every point that pressed there or was free within the model's window and reach, so

@@ -195,8 +195,10 @@ struct KeptAgainstPass {
     };
     int kept_points = 0, passed_points = 0;
     const Eigen::Vector3d kept_total = total(system, kept_points), passed_total = total(fresh, passed_points);
-    CHECK(kept_points == state.active_points);  // the viewing output loads what the right-hand side loaded
-    CHECK(kept_total == state.force);
+    // the viewing output loads what the right-hand side loaded (where the solve's points were
+    // not kept, in another pass, whose projections start from the pass before)
+    CHECK(kept_points == state.active_points);
+    CHECK((kept_total - state.force).norm() <= 1e-12 * state.force.norm());
     CHECK(passed_points == state.active_points);
     if (state.active_points == 0) return;
     ++pressed;
@@ -213,9 +215,9 @@ TEST_CASE("MultibodySystem: the contact loads kept from the static solve equal a
   // the solve ends on its linear model, whose gaps are exact there; against a flexible ball on
   // its last pass. The forces agree to the gaps' round-off, 8 eps of the points' 10 mm
   // distances (2e-17 m), against penetrations of up to 3 um on the plane and 1.7e-8 m between
-  // the balls (their quasistatic modes take up most of the approach): 1e-9 of the largest force
-  // per pressed point between the balls; measured 5e-11 (plane) and 8.5e-10 (balls). Stale
-  // gaps would be off by whole penetrations.
+  // the balls (their quasistatic modes take up most of the approach): about 1e-9 of the
+  // largest force per pressed point between the balls, 1e-8 for the sum; measured 5e-11
+  // (plane) and 8.5e-10 (balls). Stale gaps would be off by whole penetrations.
   KeptAgainstPass c;
   SECTION("a sphere pressed on a plane, with friction") {
     const test::ScratchDir dir("kept_loads_plane");
