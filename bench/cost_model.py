@@ -4,9 +4,8 @@ split into the quasistatic static solve, contact detection and forces, joints, t
 equations and output (summary.json `time_split_s`), set against a bound from the work no
 evaluation can avoid:
   - the dense floating-frame terms: one product with each body's coupled (nq + 6)^2 mass matrix,
-    and, for a body that can rotate, the contractions of the SID's first-order rotation terms
-    with q (and qdot): Cr1 3 nq^2, Gr1 9 nv nq, Ge 3 nq nv, Oe1 6 nq^2 (nv: the integrated
-    modes, the only ones with velocities), each where the SID carries it,
+    and the contractions of the SID's first-order terms with q (and qdot) that its equations
+    need (first_order_multiply_adds: Ct1, and for the free rotation axes Cr1, Gr1, Ge, Oe1),
   - mapping displacements to and forces from the loaded contact points: 2 x 3 x nq multiply-adds
     each way per point (summary.json `rhs_cost.mean_active_points`),
 at this core's dense floating-point rate, measured here with one BLAS thread. The ratio says how
@@ -46,26 +45,32 @@ def dense_rate():
     return 600 ** 2 / best
 
 
-def rotation_multiply_adds(scene_file, body, n, nv):
-    """The first-order rotation terms' contractions per evaluation of a flexible body (n
-    coordinates, nv with velocities): none where the scene locks its rotations."""
+def first_order_multiply_adds(scene_file, body, n, nv):
+    """The contractions with q (and qdot) of a flexible body's first-order SID terms that its
+    equations need per evaluation: Ct1 3 m^2 always; for k free rotation axes Cr1 k m^2,
+    Gr1 3 k nv m, Ge k m nv and Oe1 k (k + 1) / 2 m^2 (the columns of w and w^2 that are not
+    zero), each where the SID carries it; m the coordinates with inertia (n less a massless
+    boundary), nv those with velocities."""
     with open(scene_file, "rb") as f:
         scene = tomllib.load(f)
     dimension = scene["simulation"].get("dimension", "3d")
     spec = next(b for b in scene.get("flexible_body", []) if b["name"] == body)
-    free = {"axisymmetric": set(), "planar": {"rz"}}.get(dimension, {"rx", "ry", "rz"}) - set(spec.get("locked", []))
-    if not free:
-        return 0
+    k = len({"axisymmetric": set(), "planar": {"rz"}}.get(dimension, {"rx", "ry", "rz"}) - set(spec.get("locked", [])))
     with h5py.File(os.path.join(os.path.dirname(scene_file), spec["sid"]), "r") as sid:
-        first_order = {t for t in ("Cr", "Gr", "Oe") if f"terms/{t}/M1" in sid}
-    return (3 * n * n * ("Cr" in first_order) + 9 * nv * n * ("Gr" in first_order) + 3 * n * nv +
-            6 * n * n * ("Oe" in first_order))
+        first_order = {t for t in ("Ct", "Cr", "Gr", "Oe") if f"terms/{t}/M1" in sid}
+        method = sid["refmod/reduction_method"][()]
+        method = method.decode() if isinstance(method, bytes) else str(method)
+        massless = int(sid["refmod/n_high"][()]) if method in ("macneal", "craig-bampton-massless") else 0
+    m = n - massless
+    nv = min(nv, m)
+    return (3 * m * m * ("Ct" in first_order) + k * m * m * ("Cr" in first_order) + 3 * k * nv * m * ("Gr" in first_order) +
+            k * m * nv + k * (k + 1) // 2 * m * m * ("Oe" in first_order))
 
 
 def bound_multiply_adds(summary, scene_file):
     nq = [b["nq"] for b in summary["bodies"]]
     frame = sum((n + 6) ** 2 for n in nq)
-    frame += sum(rotation_multiply_adds(scene_file, b["name"], b["nq"], b["nq"] - b["quasistatic_modes"])
+    frame += sum(first_order_multiply_adds(scene_file, b["name"], b["nq"], b["nq"] - b["quasistatic_modes"])
                  for b in summary["bodies"] if b["nq"] > 0)
     points = summary["rhs_cost"]["mean_active_points"]
     # a loaded point maps through the rows of the body it belongs to (the larger one, to bound from below)
@@ -88,10 +93,10 @@ def main():
              f"{info['date']}, {info['machine']}, commit {info['commit']}; `bench/cost_model.py`. "
              f"Time per computed right-hand side (RHS) from summary.json `time_split_s` (output: per RHS as well, though it runs per step; "
              f"RHS at the state of the one before are answered from it and not counted); "
-             f"bound: the unavoidable multiply-adds (one product with each body's (nq + 6)^2 mass matrix; for a body that can rotate, "
-             f"the SID's first-order rotation terms contracted with q and qdot, Cr1 3 nq^2 + Gr1 9 nv nq + Ge 3 nq nv + Oe1 6 nq^2 with "
-             f"nv the integrated modes; and 2 x 3 x nq per loaded contact point) at this core's dense rate, {rate / 1e9:.1f} G "
-             f"multiply-adds/s (600 x 600 matrix-vector product, one thread).",
+             f"bound: the unavoidable multiply-adds (one product with each body's (nq + 6)^2 mass matrix; the SID's first-order terms "
+             f"contracted with q and qdot where it carries them, Ct1 3 m^2 and, for k free rotation axes, Cr1 k m^2 + Gr1 3 k nv m + "
+             f"Ge k m nv + Oe1 k (k + 1) / 2 m^2, m the coordinates with inertia and nv the integrated ones; and 2 x 3 x nq per loaded "
+             f"contact point) at this core's dense rate, {rate / 1e9:.1f} G multiply-adds/s (600 x 600 matrix-vector product, one thread).",
              "", "| scene | nq (quasistatic) | RHS (repeated) | mean loaded points | µs per RHS | " + " | ".join(PARTS) +
              " | bound [µs] | ratio |", "|---|---|---|---|---|" + "---|" * len(PARTS) + "---|---|"]
     with tempfile.TemporaryDirectory() as scratch:
