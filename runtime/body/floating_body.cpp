@@ -98,7 +98,6 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
     const Index ni = std::min(n_inertial_, Index(sid_.Oe.M1.size()));
     oe1_.resize(n_inertial_, 6 * ni);  // rows beyond n_inertial_ carry no inertia
     for (Index j = 0; j < ni; ++j) oe1_.middleCols(6 * j, 6) = sid_.Oe.M1[std::size_t(j)].topRows(n_inertial_);
-    q_w2_.resize(6 * ni);
   }
   q_high_ = VectorXd::Zero(n - n_dynamic_);
   // in the normal form Ke's off-diagonal entries are round-off, dropped as ModalMatrix drops them
@@ -283,14 +282,18 @@ void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, co
   const Eigen::Map<const MatrixXd> ge(sid_.Ge.M0.data(), 3 * nq(), nv);
   for (int a = 0; a < 3; ++a)
     if (w(a) != 0) part.noalias() -= w(a) * (ge.middleRows(a * nq() + first, rows) * qd.head(nv));
-  // Oe(q) w^2 = Oe0 w^2 + [Oe1_0 ... Oe1_(ni-1)] (q (x) w^2): reads the first-order terms once
-  // (6 nq^2 numbers, the floating frame's largest term) instead of summing the matrix first
+  // Oe(q) w^2 = Oe0 w^2 + sum_c w2_c [Oe1_0(:, c) ... Oe1_(ni-1)(:, c)] q: column c of every
+  // first-order term, read once per component of w^2 that is not zero (a planar spin needs one
+  // of the six), instead of summing the matrix first (the floating frame's largest term)
   Eigen::Matrix<double, 6, 1> w2;
   w2 << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
   part.noalias() -= sid_.Oe.M0.middleRows(first, rows) * w2;
-  if (oe1_.size()) {
-    for (Index j = 0; j < oe1_.cols() / 6; ++j) q_w2_.segment<6>(6 * j) = qv(j) * w2;
-    part.noalias() -= oe1_.middleRows(first, rows) * q_w2_;
+  const Index m = oe1_.cols() / 6;
+  for (int c = 0; c < 6 && m > 0; ++c) {
+    if (w2(c) == 0) continue;
+    const Eigen::Map<const MatrixXd, 0, Eigen::OuterStride<>> column(oe1_.data() + c * oe1_.rows(), oe1_.rows(), m,
+                                                                     Eigen::OuterStride<>(6 * oe1_.rows()));
+    part.noalias() -= w2(c) * (column.middleRows(first, rows) * qv.head(m));
   }
 }
 

@@ -162,12 +162,11 @@ private:
   mutable MassFactor mass_;
   mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
   /// Oe's first-order terms side by side, [Oe1_0 ... Oe1_(n_inertial - 1)], their leading
-  /// n_inertial rows (n_inertial x 6 n_inertial):
-  /// Oe1(q) w^2 is then one matrix-vector product with q (x) w^2
+  /// n_inertial rows (n_inertial x 6 n_inertial): column c of all of them is then a matrix
+  /// with a stride of six columns, and Oe1(q) w^2 a product of those for w^2's non-zero c with q
   Eigen::MatrixXd oe1_;
-  // workspace of derivatives(): [Ct(q) Cr(q)], h_q; of add_rotation_loads(): q (x) w^2
+  // workspace of derivatives(): [Ct(q) Cr(q)], h_q
   mutable Eigen::MatrixXd B_;
-  mutable Eigen::VectorXd q_w2_;
   mutable Eigen::VectorXd hq_;
 };
 
