@@ -24,11 +24,10 @@ public:
   /// separately; sized n); returns the merit energy sum 1/2 w p^2 / c_p.
   double forces(const QuasistaticTerms& terms, const Eigen::VectorXd& gaps, Eigen::VectorXd& force, Eigen::VectorXd& friction) const;
   /// Collects the Jacobian terms of the points pressed at `gaps`: U = c_p w (v + t), V = v in
-  /// the first r columns of U() and V(), c_p w in the first r of weights(); returns r.
+  /// the first r columns of U() and V() (c_p w itself in the first r of weights_); returns r.
   Eigen::Index jacobian_terms(const QuasistaticTerms& terms, const Eigen::VectorXd& gaps) const;
   const Eigen::MatrixXd& U() const { return U_; }
   const Eigen::MatrixXd& V() const { return V_; }
-  const Eigen::VectorXd& weights() const { return weights_; }
 
   /// Sets the model at z0, where `terms` were recorded: its gaps, forces, residual and energy
   /// there are those of the real problem (the accessors below).
@@ -56,7 +55,7 @@ private:
   double energy_along(const QuasistaticTerms& terms, double alpha) const;
 
   mutable Eigen::MatrixXd U_, V_;
-  mutable Eigen::VectorXd weights_;
+  mutable Eigen::VectorXd weights_;  ///< c_p w of the Jacobian's terms: U = V diag(weights_) without friction
   mutable Eigen::VectorXd gaps_, rates_, z_, R_, step_, force_, friction_;
   mutable std::vector<char> pressed_;
   mutable bool solved_ = false;
