@@ -52,14 +52,22 @@ TEST_CASE("MultibodySystem: hundreds of dynamic modes draw a warning", "[runtime
   }
 }
 
+namespace {
+/// Scene text: the golden sphere_small (quasistatic high modes) with its centre at height `y`
+/// (TOML number text) falling at 0.1 m/s on the plane y = 0, penalty 5e17 N/m^3, and
+/// `contact_extra` lines in its contact table.
+std::string sphere_on_plane(const std::string& y, const std::string& contact_extra) {
+  return "[simulation]\ndimension = \"axisymmetric\"\nend_time = 1e-4\n[[flexible_body]]\nname = \"sphere\"\nsid = \"" +
+         std::string(ISOSID_GOLDEN_DIR) + "/sphere_small.sid.h5\"\nposition = [0.0, " + y +
+         ", 0.0]\nvelocity = [0.0, -0.1, 0.0]\nhigh_modes = \"quasistatic\"\n[[fixed_plane]]\nname = \"ground\"\n"
+         "[[contact]]\nname = \"c\"\nbody = \"sphere\"\nsurface = \"contact\"\ntarget = \"ground\"\npenalty = 5e17\n" +
+         contact_extra;
+}
+}  // namespace
+
 TEST_CASE("MultibodySystem: a repeated right-hand side answers from the call before, and only then", "[runtime][unit]") {
   const test::ScratchDir dir("repeated_rhs");
-  std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 1e-4\n"
-                                          << "[[flexible_body]]\nname = \"sphere\"\nsid = \"" << ISOSID_GOLDEN_DIR
-                                          << "/sphere_small.sid.h5\"\nposition = [0.0, 0.0099995, 0.0]\nvelocity = [0.0, -0.1, 0.0]\n"
-                                          << "high_modes = \"quasistatic\"\n[[fixed_plane]]\nname = \"ground\"\n"
-                                          << "[[contact]]\nname = \"c\"\nbody = \"sphere\"\nsurface = \"contact\"\ntarget = \"ground\"\n"
-                                          << "penalty = 5e17\n";
+  std::ofstream(dir.path("s.scene.toml")) << sphere_on_plane("0.0099995", "");
   const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
   const run::MultibodySystem system(scene, {format::read_sid(scene.bodies[0].sid_file)});
   Eigen::VectorXd y1(system.size()), y2, first(system.size()), other(system.size()), again(system.size()), repeat(system.size());
@@ -221,12 +229,7 @@ TEST_CASE("MultibodySystem: the contact loads kept from the static solve equal a
   KeptAgainstPass c;
   SECTION("a sphere pressed on a plane, with friction") {
     const test::ScratchDir dir("kept_loads_plane");
-    std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 1e-4\n"
-                                            << "[[flexible_body]]\nname = \"sphere\"\nsid = \"" << ISOSID_GOLDEN_DIR
-                                            << "/sphere_small.sid.h5\"\nposition = [0.0, 0.0100001, 0.0]\nvelocity = [0.0, -0.1, 0.0]\n"
-                                            << "high_modes = \"quasistatic\"\n[[fixed_plane]]\nname = \"ground\"\n"
-                                            << "[[contact]]\nname = \"c\"\nbody = \"sphere\"\nsurface = \"contact\"\ntarget = \"ground\"\n"
-                                            << "penalty = 5e17\nfriction = 0.2\n";
+    std::ofstream(dir.path("s.scene.toml")) << sphere_on_plane("0.0100001", "friction = 0.2\n");
     const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
     const run::MultibodySystem system(scene, {format::read_sid(scene.bodies[0].sid_file)});
     const run::MultibodySystem fresh(scene, {format::read_sid(scene.bodies[0].sid_file)});
