@@ -178,7 +178,10 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   sid_.mdCM.evaluate(qv, mc, ni, 3);
   MatrixXd& B = B_;  // [Ct, Cr], each evaluated in place
   auto Ct = B.leftCols(3), Cr = B.rightCols(3);
-  sid_.Ct.evaluate(qv, Ct, ni, ni);
+  // B's rows of the integrated modes, the only ones the equations read (the quasistatic
+  // modes carry no inertia): Ct and Cr from all coefficients, into nd of their rows
+  const Index nb = std::min(nd, ni);
+  sid_.Ct.evaluate(qv, Ct, ni, nb);
   Eigen::Matrix<double, 6, 6> A6 = Eigen::Matrix<double, 6, 6>::Zero();
   A6.topLeftCorner<3, 3>() = m * Matrix3d::Identity();
   A6.topRightCorner<3, 3>() = skew(mc).transpose();
@@ -189,19 +192,19 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   Eigen::Matrix<double, 6, 1> hr;
   hr.head<3>() = m * gK + applied.force;
   hr.tail<3>() = mc.cross(gK) + applied.torque;
-  VectorXd& hq = hq_;
-  hq = applied.elastic - sid_.ksigma.M0.col(0);
+  auto hq = hq_.head(nd);  // the integrated modes' rows (the quasistatic ones are the static solve's)
+  hq = applied.elastic.head(nd) - sid_.ksigma.M0.col(0).head(nd);
   stiffness_.subtract_product(qv, hq);
   damping_.subtract_product(qd, hq);
-  hq.noalias() += B.leftCols(3) * gK;  // Ct g: gravity on the modes
+  hq.noalias() += B.topLeftCorner(nd, 3) * gK;  // Ct g: gravity on the modes
   if (rotates_) {
-    sid_.Cr.evaluate(qv, Cr, ni, ni);
+    sid_.Cr.evaluate(qv, Cr, ni, nb);
     Matrix3d J;
     sid_.J.evaluate(qv, J, ni, 3);
     A6.bottomRightCorner<3, 3>() = J;
     const Matrix3d W = skew(w);
     Vector3d Ct_qdot;
-    Ct_qdot.noalias() = Ct.transpose() * qd;  // into a fixed vector: no temporary
+    Ct_qdot.noalias() = Ct.topRows(nb).transpose() * qd.head(nb);  // into a fixed vector: no temporary
     hr.head<3>() += -W * W * mc - 2 * W * Ct_qdot;
     // Gr(q, qdot) = sum_k (Gr0_k + sum_j Gr1_kj q_j) qdot_k. The 3x3 blocks of a 3 x 3nq term
     // are consecutive 9-vectors, so each sum over k is one 9 x nq matrix-vector product
@@ -215,7 +218,7 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
       if (qv(j) != 0) gr.noalias() += qv(j) * (Blocks(sid_.Gr.M1[std::size_t(j)].data(), 9, nv) * qd.head(nv));
     const Eigen::Map<const Matrix3d> Gr(gr.data());
     hr.tail<3>() += -W * (J * w) - Gr * w;
-    add_rotation_loads(qv, qd, w, 0, hq.head(nd));  // the quasistatic rows are the static solve's
+    add_rotation_loads(qv, qd, w, 0, hq);
   } else {
     Cr.setZero();
     A6.bottomRightCorner<3, 3>() = sid_.J.M0;
@@ -224,7 +227,7 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   // the rigid DOFs' Schur complement A6 - B^T B (Me = I), over the dynamic modes only
   // (quasistatic modes carry no inertia)
   const auto Bd = B.topRows(nd);
-  const auto hd = hq.head(nd);
+  const auto hd = hq;
   Eigen::Matrix<double, 6, 6> S = A6;
   S.noalias() -= Bd.transpose() * Bd;
   int free_dofs[6], nf = 0;
@@ -349,7 +352,10 @@ void FloatingBody::apply_force(const Vector3d& F_world, const Vector3d& P, const
   const Vector3d FK = A.transpose() * F_world;
   f.force += FK;
   f.torque += P.cross(FK);
-  add_elastic_force(Psi, FK, f.elastic);
+  // the integrated rows only: the equations read no others (the static solve forms the
+  // quasistatic modes' contact loads itself), and a ball integrates 6 of its 36 modes
+  const Index rows = std::min(n_dynamic_, Psi.cols());
+  add_elastic_force(Psi.leftCols(rows), FK, f.elastic.head(rows));
 }
 
 std::pair<Vector3d, Vector3d> FloatingBody::node_state(const format::Node& node, const double* y, const VectorXd* quasistatic_rate) const {

@@ -28,12 +28,13 @@ struct GeneralizedForce {
 class ModalMatrix {
 public:
   explicit ModalMatrix(const Eigen::MatrixXd& M);
-  /// out -= M x (no allocation)
-  void subtract_product(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
+  /// out -= the leading out.size() rows of M x (no allocation)
+  void subtract_product(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> out) const {
+    const Eigen::Index rows = out.size();
     if (dense_.size())
-      out.noalias() -= dense_ * x;
+      out.noalias() -= dense_.topRows(rows) * x;
     else
-      out -= diagonal_.cwiseProduct(x);
+      out -= diagonal_.head(rows).cwiseProduct(x.head(rows));
   }
   /// true in the SID's normal form: M is applied as its diagonal
   bool is_diagonal() const { return dense_.size() == 0; }
