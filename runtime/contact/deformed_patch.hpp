@@ -5,6 +5,7 @@
 #include "isosid/format/sid.hpp"
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <vector>
 
 namespace isosid::run {
@@ -18,6 +19,12 @@ public:
     Eigen::Vector3d ddC[3] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};  ///< uu, uv, vv
     std::vector<int> control_points;   ///< indices of the non-zero rational basis functions
     std::vector<double> R;             ///< their values
+    std::vector<Eigen::Vector2d> dR;   ///< their derivatives d/du, d/dv
+    /// The knot span evaluated, per direction: one polynomial piece, where Taylor's formula holds.
+    Eigen::Vector2d span_lower = Eigen::Vector2d::Constant(-INFINITY), span_upper = Eigen::Vector2d::Constant(INFINITY);
+    /// The point at u + s (within the span) from its Taylor expansion: position to second
+    /// order, tangents and basis values to first (second derivatives stay those at u).
+    void advance(const Eigen::Vector2d& s);
   };
 
   DeformedPatch(const format::MasterPatch& patch, int dim);
@@ -41,7 +48,9 @@ public:
   void shape_rows(const Point& point, Eigen::MatrixXd& Psi) const;
   /// Closest point of the patch to the body-frame point x: Newton's method from u (a warm
   /// start; NaN: none), else from the knot-span midpoint nearest on the undeformed patch. On
-  /// success u is its parameter and `point` the evaluated point; on failure u is NaN.
+  /// success u is its parameter and `point` the point there (its second derivatives may be
+  /// those of a parameter up to 1e-5 of the range away: evaluate at u for curvatures); on
+  /// failure u is NaN.
   bool closest_point(const Eigen::Vector3d& x, Eigen::Vector2d& u, Point& point) const;
 
 private:

@@ -61,6 +61,7 @@ std::optional<ImpactEstimate> estimate_impact(const SurfaceContact& contact, con
   Eigen::Vector2d u = Eigen::Vector2d::Constant(NAN);
   DeformedPatch::Point on_patch;
   if (!patch.closest_point(best_P, u, on_patch)) return std::nullopt;
+  patch.evaluate(u, on_patch);  // the curvatures need the second derivatives at u itself
   // the patch's own normal, turned out of the body (toward the target)
   const Eigen::Vector3d toward = -(A.transpose() * best.normal);
   Eigen::Vector3d outward = patch.parameter_dim() == 1 ? Eigen::Vector3d(on_patch.dC[0].y(), -on_patch.dC[0].x(), 0.0)

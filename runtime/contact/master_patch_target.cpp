@@ -85,6 +85,7 @@ Eigen::Vector2d MasterPatchTarget::curvatures(const Eigen::Vector3d& x_world) co
   if (dim_ == 2) x.z() = 0;
   Eigen::Vector2d u = Eigen::Vector2d::Constant(NAN);
   if (!patch_.closest_point(x, u, point_)) return Eigen::Vector2d::Constant(NAN);
+  patch_.evaluate(u, point_);  // the curvatures need the second derivatives at u itself
   return principal_curvatures(point_, normal(point_, u), patch_.parameter_dim(), body_.sid().analysis == format::AnalysisType::Axisymmetric);
 }
 
