@@ -164,6 +164,7 @@ private:
   mutable Eigen::VectorXd recorded_key_, current_key_;
   mutable bool recorded_valid_ = false;
   Eigen::MatrixXd shape_columns_;                ///< Psi transposed (nq x dim points): each point's rows contiguous
+  Eigen::VectorXd row_norms_;                    ///< per point: |Psi_g|_F, how far it moves per unit |q|
   Eigen::VectorXd quasistatic_row_norms_;        ///< per point: the Frobenius norm of its quasistatic rows
   GapBounds bounds_;                             ///< between full evaluations of the points
 };

@@ -7,6 +7,7 @@
 #include "support/lumped_sid.hpp"
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 
 using namespace isosid;
 
@@ -135,4 +136,61 @@ TEST_CASE("SurfaceContact: without a penalty in the scene it takes 1000 E*/max(a
   const run::FloatingBody master(other, aluminium, run::Dimension::Solid);
   CHECK(run::combined_modulus(evaluated.body, &master) ==
         Approx(1 / ((1 - 0.09) / m.youngs_modulus + (1 - 0.33 * 0.33) / 70e9)).epsilon(1e-12));
+}
+
+TEST_CASE("SurfaceContact: a deformed body's pressed points and least gap on a plane are those of every point placed", "[runtime][unit]") {
+  // The plane's gaps leave out the points whose undeformed gap, less |Psi_g|_F |q|, is beyond
+  // what the caller needs; the rest are placed each by its rows or all in one product. Against
+  // every point placed by hand, for planes between the deformed points' heights (one to four
+  // pressed) and halfway between a point's undeformed and deformed height (the deformation
+  // alone decides whether it presses).
+  const double penalty = 1e10;
+  PenetratingBody setup(Eigen::Vector3d::Zero());
+  const format::ContactSurface& s = setup.surface();
+  run::FloatingBody probe(setup.spec, setup.sid, run::Dimension::Solid);
+  Eigen::VectorXd y(probe.state_size());
+  probe.initial_state(y.data());
+  // a deformation that moves the points by a tenth of the least height between two of them
+  std::vector<double> heights;
+  for (Eigen::Index g = 0; g < s.points(); ++g) heights.push_back(s.position(g, 1));
+  std::sort(heights.begin(), heights.end());
+  double spacing = INFINITY;
+  for (std::size_t k = 1; k < heights.size(); ++k) spacing = std::min(spacing, heights[k] - heights[k - 1]);
+  Eigen::VectorXd q = Eigen::VectorXd::LinSpaced(probe.nq(), 1.0, -0.6);
+  double largest_move = 0;
+  for (Eigen::Index g = 0; g < s.points(); ++g) largest_move = std::max(largest_move, s.Psi.middleRows(3 * g, 3).norm() * q.norm());
+  q *= 0.1 * spacing / largest_move;
+  Eigen::Map<Eigen::VectorXd>(y.data() + 7, probe.nq()) = q;
+  Eigen::VectorXd deformed(s.points());
+  for (Eigen::Index g = 0; g < s.points(); ++g) deformed(g) = s.position(g, 1) + s.Psi.row(3 * g + 1).dot(q);
+  REQUIRE((deformed - s.position.col(1)).cwiseAbs().minCoeff() > 0);
+
+  std::vector<double> planes;
+  std::vector<double> sorted(deformed.data(), deformed.data() + deformed.size());
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t k = 0; k + 1 < sorted.size(); ++k) planes.push_back(0.5 * (sorted[k] + sorted[k + 1]));
+  planes.push_back(sorted.back() + spacing);
+  for (Eigen::Index g = 0; g < s.points(); ++g) planes.push_back(0.5 * (s.position(g, 1) + deformed(g)));
+  for (double level : planes) {
+    setup.plane.point = {0, level, 0};
+    const run::FloatingBody body(setup.spec, setup.sid, run::Dimension::Solid);
+    const run::ShapeTarget ground(setup.plane);
+    const run::SurfaceContact contact({"impact", "body", s.name, "ground", "", penalty, 0.0, 1e-6}, body, ground);
+    run::GeneralizedForce force;
+    force.reset(body.nq());
+    const run::ContactState state = contact.apply(y.data(), force, nullptr);
+    int pressed = 0;
+    Eigen::Vector3d total = Eigen::Vector3d::Zero();
+    for (Eigen::Index g = 0; g < s.points(); ++g) {
+      const double gap = deformed(g) - level;
+      if (gap >= 0) continue;
+      ++pressed;
+      total += penalty * -gap * s.weight(g) * Eigen::Vector3d::UnitY();
+    }
+    INFO("plane at " << level << ": " << pressed << " pressed");
+    CHECK(state.active_points == pressed);
+    // round-off of sums of a few terms
+    CHECK((state.force - total).norm() <= 1e-12 * total.norm());
+    CHECK(contact.min_gap(y.data()) == Approx((deformed.array() - level).minCoeff()).epsilon(1e-12));
+  }
 }
