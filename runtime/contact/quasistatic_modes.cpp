@@ -203,12 +203,13 @@ double QuasistaticModes::friction_power(const double* y, const double* ydot, Eig
   const double rate_norm = rate.norm();
   if (rate_norm == 0) return 0;
   const double h = 1.5e-8 * (1.0 + state.norm()) / rate_norm;
+  // the Jacobian at y rather than at the shifted state (they differ by O(h)): its factorization
+  // is kept from the solve's last step, where the shifted terms would be factored anew
+  const Eigen::Index r = model_.jacobian_terms(terms_, terms_.gap);
   shifted_y_ = state + h * rate;
   const Eigen::VectorXd R0 = R_;
   update_held_loads(shifted_y_.data());
-  residual(shifted_y_.data(), R_);
-  // the Jacobian of the shifted state: it differs from that at y by O(h)
-  const Eigen::Index r = model_.jacobian_terms(terms_, terms_.gap);
+  residual(shifted_y_.data(), R_);  // leaves the model's Jacobian terms alone
   jacobian_.solve(model_.U(), model_.V(), r, (R0 - R_) / h, z_rate_);
   // R_, the terms, the model and the held loads stay those of the shifted state: the next
   // solve sets them all anew before it reads any (z_ is still the solution at y)
