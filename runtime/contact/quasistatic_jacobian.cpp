@@ -2,6 +2,7 @@
 #include "contact/quasistatic_jacobian.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace isosid::run {
 
@@ -66,6 +67,18 @@ void solve_leading_block(const Eigen::MatrixXd& LU, Eigen::Index r, const std::v
     b.head(k) -= b(k) * LU.col(k).head(k);
   }
 }
+/// Cholesky factor L of the leading r x r block of the symmetric A, from its lower triangle
+/// and into it (left-looking: each column less the products of those before it); false if a
+/// pivot is not positive. Allocation-free as factor_leading_block.
+bool cholesky_leading_block(Eigen::MatrixXd& A, Eigen::Index r) {
+  for (Eigen::Index k = 0; k < r; ++k) {
+    A.col(k).segment(k, r - k).noalias() -= A.block(k, 0, r - k, k) * A.row(k).head(k).transpose();
+    const double pivot = A(k, k);
+    if (!(pivot > 0)) return false;
+    A.col(k).segment(k, r - k) /= std::sqrt(pivot);
+  }
+  return true;
+}
 }  // namespace
 
 namespace {
@@ -113,14 +126,48 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
   f.U.leftCols(r) = U;
   f.V.leftCols(r) = V;
   f.rank = r;
-  // the n x n Jacobian itself (forming and factoring it: n^2 r + n^3 / 3) when that is cheaper
-  // than Woodbury's r x r capacitance: with a diagonal K_h (n r^2 + r^3 / 3) once more contact
-  // terms are active than there are modes; with a dense K_h and its kept inverse
+  // the n x n Jacobian itself (forming and factoring it: n^2 r + n^3 / 3, half that when
+  // symmetric) when that is cheaper than Woodbury's r x r capacitance: with a diagonal K_h
+  // (n r^2 + r^3 / 3, or half) once more contact terms are active than there are modes; with
+  // a dense K_h and its kept inverse
   // (2 n m r + n r^2 for U's m used rows) once r passes about n / 4
   const bool dense = dense_stiffness_.size() > 0;
   f.direct = dense ? (dense_inverse_.size() == 0 || 4 * r > size()) : r > size();
+  // Without friction K + V D V^T is symmetric, and positive definite where K is: Cholesky's
+  // factors from the lower triangle's products (half of them) of the Jacobian, or of Woodbury's
+  // capacitance on K^-1/2 (K + V D V^T) K^-1/2 = I + W W^T, W = K^-1/2 V D^1/2: I + W^T W. A
+  // dense K's Woodbury keeps the gathered LU below, which reads only the rows U fills.
+  f.symmetric = weights && r > 0 && smallest_eigenvalue_ > 0 && (f.direct || !dense);
+  if (f.symmetric) {
+    const auto root_weights = weights->head(r).cwiseSqrt().asDiagonal();
+    if (f.direct) {
+      if (f.jacobian.rows() != size()) f.jacobian.resize(size(), size());
+      if (f.llt.matrixLLT().rows() != size()) f.llt = Eigen::LLT<Eigen::MatrixXd>(size());
+      if (root_weighted_V_.rows() != size() || root_weighted_V_.cols() < capacity) root_weighted_V_.resize(size(), capacity);
+      auto W = root_weighted_V_.leftCols(r);
+      W.noalias() = V * root_weights;
+      if (dense) {
+        f.jacobian = dense_stiffness_;
+      } else {
+        f.jacobian.setZero();
+        f.jacobian.diagonal() = stiffness_;
+      }
+      f.jacobian.selfadjointView<Eigen::Lower>().rankUpdate(W);
+      f.llt.compute(f.jacobian);
+      if (f.llt.info() == Eigen::Success) return;
+    } else {
+      auto W = f.scaled_U.leftCols(r);
+      W.noalias() = inverse_root_stiffness_.asDiagonal() * V * root_weights;
+      auto capacitance = f.capacitance.topLeftCorner(r, r);
+      capacitance.setIdentity();
+      capacitance.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());
+      if (cholesky_leading_block(f.capacitance, r)) return;
+    }
+    f.symmetric = false;  // not positive definite in round-off after all: the LU factors below
+  }
   if (f.direct) {
-    if (f.jacobian.rows() != size()) f.jacobian.resize(size(), size()), f.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(size());
+    if (f.jacobian.rows() != size()) f.jacobian.resize(size(), size());
+    if (f.lu.rows() != size()) f.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(size());
     f.jacobian.noalias() = U * V.transpose();
     if (dense) f.jacobian += dense_stiffness_;
     else f.jacobian.diagonal() += stiffness_;
@@ -146,23 +193,8 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
     scaled_U = U.array().colwise() / stiffness_.array();
   }
   auto capacitance = f.capacitance.topLeftCorner(r, r);
-  if (weights && !dense) {
-    // U = V D: I + V^T K^-1 V D, whose Gram part G = (K^-1/2 V)^T (K^-1/2 V) is symmetric,
-    // formed as its lower triangle (the n r^2 products are this factorization's cost)
-    if (root_scaled_V_.rows() != size() || root_scaled_V_.cols() < capacity) root_scaled_V_.resize(size(), capacity);
-    auto W = root_scaled_V_.leftCols(r);
-    W = V.array().colwise() * inverse_root_stiffness_.array();
-    capacitance.setZero();
-    capacitance.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());
-    for (Eigen::Index j = 1; j < r; ++j) capacitance.col(j).head(j) = capacitance.row(j).head(j).transpose();  // the upper triangle
-    for (Eigen::Index j = 0; j < r; ++j) {
-      capacitance.col(j) *= (*weights)(j);
-      capacitance(j, j) += 1;
-    }
-  } else {
-    capacitance.setIdentity();
-    capacitance.noalias() += V.transpose() * f.scaled_U.leftCols(r);
-  }
+  capacitance.setIdentity();
+  capacitance.noalias() += V.transpose() * f.scaled_U.leftCols(r);
   factor_leading_block(f.capacitance, r, f.pivots);
 }
 
@@ -170,7 +202,21 @@ void QuasistaticJacobian::solve(const Eigen::MatrixXd& U, const Eigen::MatrixXd&
                                 Eigen::VectorXd& x, const Eigen::VectorXd* weights) const {
   const Factorization& f = factorization(U, V, r, weights);
   if (f.direct) {
-    x = f.lu.solve(b);
+    if (f.symmetric) x = f.llt.solve(b);
+    else x = f.lu.solve(b);
+    return;
+  }
+  if (f.symmetric) {
+    // x = K^-1/2 (I - W (I + W^T W)^-1 W^T) K^-1/2 b, the capacitance as L L^T
+    x = b.cwiseProduct(inverse_root_stiffness_);
+    const auto W = f.scaled_U.leftCols(r);
+    auto c = coefficients_.head(r);
+    c.noalias() = W.transpose() * x;
+    const auto L = f.capacitance.topLeftCorner(r, r).triangularView<Eigen::Lower>();
+    L.solveInPlace(c);
+    L.transpose().solveInPlace(c);
+    x.noalias() -= W * c;
+    x.array() *= inverse_root_stiffness_.array();
     return;
   }
   solve_stiffness(b, x);

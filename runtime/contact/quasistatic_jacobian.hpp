@@ -32,8 +32,8 @@ public:
   /// z^T K_h w.
   double product(const Eigen::VectorXd& z, const Eigen::VectorXd& w) const;
   /// Solves (K_h + U V^T) x = b with the first r columns of U and V. `weights`, if given,
-  /// promises U = V diag(weights) (contact without friction): Woodbury's capacitance then
-  /// comes from the symmetric V^T K^-1 V, half the products.
+  /// promises U = V diag(weights) with weights >= 0 (contact without friction): the Jacobian
+  /// is then symmetric positive definite, its products half and its factors Cholesky's.
   void solve(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd& b, Eigen::VectorXd& x,
              const Eigen::VectorXd* weights = nullptr) const;
 
@@ -41,16 +41,20 @@ public:
   static constexpr std::size_t kKeptFactorizations = 8;
 
 private:
-  /// One factorization of K + U V^T: of the n x n Jacobian itself, or Woodbury's capacitance.
+  /// One factorization of K + U V^T: of the n x n Jacobian itself, or Woodbury's capacitance;
+  /// without friction (U = V D, D >= 0, K positive definite) by Cholesky's method.
   struct Factorization {
     Eigen::MatrixXd U, V;        ///< the terms factored (first `rank` columns)
     Eigen::Index rank = -1;      ///< -1: empty
     bool direct = false;
-    Eigen::MatrixXd scaled_U;    ///< Woodbury: K^-1 U
-    Eigen::MatrixXd capacitance; ///< Woodbury: LU factors of I + V^T K^-1 U
+    bool symmetric = false;
+    Eigen::MatrixXd scaled_U;    ///< Woodbury: K^-1 U; symmetric: W = K^-1/2 V D^1/2
+    /// Woodbury: LU factors of I + V^T K^-1 U; symmetric: the Cholesky factor of I + W^T W
+    Eigen::MatrixXd capacitance;
     std::vector<Eigen::Index> pivots;
     Eigen::MatrixXd jacobian;    ///< direct: K + U V^T
     Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    Eigen::LLT<Eigen::MatrixXd> llt;  ///< direct and symmetric
     long last_use = 0;
   };
   /// The kept factorization of these terms, factoring them in place of the least recently used.
@@ -62,7 +66,7 @@ private:
 
   Eigen::VectorXd stiffness_;                 ///< diagonal of K_h
   Eigen::VectorXd inverse_root_stiffness_;    ///< its K^-1/2, for the symmetric capacitance
-  mutable Eigen::MatrixXd root_scaled_V_;     ///< K^-1/2 V (capacity columns)
+  mutable Eigen::MatrixXd root_weighted_V_;   ///< V D^1/2 (capacity columns), for the symmetric Jacobian
   Eigen::MatrixXd dense_stiffness_;           ///< K_h if it is not diagonal
   /// K_h^-1 if K_h is dense and positive definite (else empty: the Jacobian is then factored
   /// each time). Kept whole: Woodbury's K^-1 U then reads only the columns where U has

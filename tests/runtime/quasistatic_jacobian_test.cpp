@@ -44,8 +44,9 @@ TEST_CASE("QuasistaticJacobian solves K + U V^T as a dense solve does", "[runtim
       INFO("diagonal K " << diagonal << ", rank " << r);
       // the dense reference and the solver differ by the round-off of a condition number near 1e3
       CHECK(solve_error(J, K, U, V, r, b) < 1e-11);
-      // without friction U = V diag(c_p w): the symmetric capacitance (diagonal K), weights
-      // spread over six decades as penalties times Gauss weights are
+      // without friction U = V diag(c_p w): Cholesky's factors of the Jacobian (r > n, or a
+      // dense K's r > n / 4) or of the symmetric capacitance (diagonal K), weights spread over
+      // six decades as penalties times Gauss weights are
       const Eigen::VectorXd weights = Eigen::VectorXd::LinSpaced(16, 0.0, 6.0).unaryExpr([](double e) { return std::pow(10.0, e); });
       const Eigen::MatrixXd U_symmetric = V * weights.asDiagonal();
       const run::QuasistaticJacobian fresh({K}, diagonal);  // no kept factorization of these terms
