@@ -92,8 +92,15 @@ const QuasistaticJacobian::Factorization& QuasistaticJacobian::factorization(con
                                                                              Eigen::Index r, const Eigen::VectorXd* weights) const {
   ++uses_;
   Factorization* oldest = &kept_.front();
+  // with weights U = V D: the weights (r numbers, which tell most active sets apart at once)
+  // and V name the terms, without U's n r
+  auto same_terms = [&](const Factorization& f) {
+    if (f.rank != r || f.weighted != (weights != nullptr)) return false;
+    if (weights) return std::equal(weights->data(), weights->data() + r, f.weights.data()) && same_columns(f.V, V, r);
+    return same_columns(f.V, V, r) && same_columns(f.U, U, r);
+  };
   for (Factorization& f : kept_) {
-    if (f.rank == r && same_columns(f.V, V, r) && same_columns(f.U, U, r)) {
+    if (same_terms(f)) {
       f.last_use = uses_;
       return f;
     }
@@ -118,12 +125,14 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
   // buffers sized to the columns' capacity: no allocation once the largest active set has been seen
   const Eigen::Index capacity = U_all.cols();
   if (f.U.cols() < capacity || f.U.rows() != size()) {
-    f.U.resize(size(), capacity), f.V.resize(size(), capacity);
+    f.U.resize(size(), capacity), f.V.resize(size(), capacity), f.weights.resize(capacity);
     f.scaled_U.resize(size(), capacity), f.capacitance.resize(capacity, capacity);
     f.pivots.resize(std::size_t(capacity));
   }
   if (coefficients_.size() < capacity) coefficients_.resize(capacity);
-  f.U.leftCols(r) = U;
+  f.weighted = weights != nullptr;
+  if (f.weighted) f.weights.head(r) = weights->head(r);
+  else f.U.leftCols(r) = U;
   f.V.leftCols(r) = V;
   f.rank = r;
   // the n x n Jacobian itself (forming and factoring it: n^2 r + n^3 / 3, half that when

@@ -44,7 +44,9 @@ private:
   /// One factorization of K + U V^T: of the n x n Jacobian itself, or Woodbury's capacitance;
   /// without friction (U = V D, D >= 0, K positive definite) by Cholesky's method.
   struct Factorization {
-    Eigen::MatrixXd U, V;        ///< the terms factored (first `rank` columns)
+    Eigen::MatrixXd U, V;        ///< the terms factored (first `rank` columns; U only if not weighted)
+    Eigen::VectorXd weights;     ///< weighted: U = V diag(weights)
+    bool weighted = false;
     Eigen::Index rank = -1;      ///< -1: empty
     bool direct = false;
     bool symmetric = false;

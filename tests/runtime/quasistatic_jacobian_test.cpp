@@ -79,4 +79,18 @@ TEST_CASE("QuasistaticJacobian reuses a kept factorization only for the same ter
       CHECK(solve_error(J, K, Us[set], Vs[set], 3, b) < 1e-11);
       CHECK(solve_error(J, K, Us[set], Vs[set], 2, b) < 1e-11);  // same columns, fewer of them
     }
+  // without friction the weights and V name the terms: sets of one V whose weights differ in
+  // one entry, and one V with the weights of another set
+  std::vector<Eigen::VectorXd> weights;
+  for (std::size_t set = 0; set < run::QuasistaticJacobian::kKeptFactorizations + 3; ++set) {
+    weights.push_back(Eigen::VectorXd::Constant(4, 5.0));
+    weights.back()(Eigen::Index(set) % 3) += 0.5 * double(set);
+  }
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t set = 0; set < weights.size(); ++set)
+      for (const Eigen::MatrixXd* V : {&Vs[0], &Vs[1]}) {
+        INFO("weighted, pass " << pass << ", set " << set << ", V of set " << (V == &Vs[0] ? 0 : 1));
+        const Eigen::MatrixXd U = *V * weights[set].asDiagonal();
+        CHECK(solve_error(J, K, U, *V, 3, b, &weights[set]) < 1e-11);
+      }
 }
