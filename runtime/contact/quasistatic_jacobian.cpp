@@ -88,9 +88,38 @@ bool same_columns(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, Eigen::Ind
 }
 }  // namespace
 
+bool QuasistaticJacobian::direct(Eigen::Index r) const {
+  // the n x n Jacobian itself (forming and factoring it: n^2 r + n^3 / 3, half that when
+  // symmetric) when that is cheaper than Woodbury's r x r capacitance: with a diagonal K_h
+  // (n r^2 + r^3 / 3, or half) once more contact terms are active than there are modes; with
+  // a dense K_h and its kept inverse (2 n m r + n r^2 for U's m used rows) once r passes about n / 4
+  return dense_stiffness_.size() ? (dense_inverse_.size() == 0 || 4 * r > size()) : r > size();
+}
+
+void QuasistaticJacobian::reserve(Eigen::Index capacity) const {
+  // every kept factorization at once: one first used late in a run must not allocate either
+  capacity_ = capacity;
+  for (Factorization& f : kept_) {
+    f.rank = -1;  // its terms are gone with the resize
+    f.U.resize(size(), capacity), f.V.resize(size(), capacity), f.weights.resize(capacity);
+    f.scaled_U.resize(size(), capacity), f.capacitance.resize(capacity, capacity);
+    f.pivots.resize(std::size_t(capacity));
+    if (direct(capacity)) {  // either factorization of the Jacobian may come
+      f.jacobian.resize(size(), size());
+      f.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(size());
+      f.llt = Eigen::LLT<Eigen::MatrixXd>(size());
+    }
+  }
+  coefficients_.resize(capacity);
+  root_weighted_V_.resize(size(), capacity);
+  if (dense_inverse_.size()) gathered_inverse_.resize(size(), size()), gathered_U_.resize(size(), capacity);
+}
+
 const QuasistaticJacobian::Factorization& QuasistaticJacobian::factorization(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V,
                                                                              Eigen::Index r, const Eigen::VectorXd* weights) const {
   ++uses_;
+  // buffers sized to the columns' capacity: no allocation once the largest active set has been seen
+  if (U.cols() > capacity_) reserve(U.cols());
   Factorization* oldest = &kept_.front();
   // with weights U = V D: the weights (r numbers, which tell most active sets apart at once)
   // and V name the terms, without U's n r
@@ -122,26 +151,17 @@ void QuasistaticJacobian::solve_stiffness(const Eigen::VectorXd& b, Eigen::Vecto
 void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::MatrixXd& V_all, Eigen::Index r, const Eigen::VectorXd* weights,
                                  Factorization& f) const {
   const auto U = U_all.leftCols(r), V = V_all.leftCols(r);
-  // buffers sized to the columns' capacity: no allocation once the largest active set has been seen
-  const Eigen::Index capacity = U_all.cols();
-  if (f.U.cols() < capacity || f.U.rows() != size()) {
-    f.U.resize(size(), capacity), f.V.resize(size(), capacity), f.weights.resize(capacity);
-    f.scaled_U.resize(size(), capacity), f.capacitance.resize(capacity, capacity);
-    f.pivots.resize(std::size_t(capacity));
-  }
-  if (coefficients_.size() < capacity) coefficients_.resize(capacity);
+  const bool dense = dense_stiffness_.size() > 0;
+  // the n x n Jacobian itself (forming and factoring it: n^2 r + n^3 / 3, half that when
+  // symmetric) when that is cheaper than Woodbury's r x r capacitance: with a diagonal K_h
+  // (n r^2 + r^3 / 3, or half) once more contact terms are active than there are modes; with
+  // a dense K_h and its kept inverse (2 n m r + n r^2 for U's m used rows) once r passes about n / 4
   f.weighted = weights != nullptr;
   if (f.weighted) f.weights.head(r) = weights->head(r);
   else f.U.leftCols(r) = U;
   f.V.leftCols(r) = V;
   f.rank = r;
-  // the n x n Jacobian itself (forming and factoring it: n^2 r + n^3 / 3, half that when
-  // symmetric) when that is cheaper than Woodbury's r x r capacitance: with a diagonal K_h
-  // (n r^2 + r^3 / 3, or half) once more contact terms are active than there are modes; with
-  // a dense K_h and its kept inverse
-  // (2 n m r + n r^2 for U's m used rows) once r passes about n / 4
-  const bool dense = dense_stiffness_.size() > 0;
-  f.direct = dense ? (dense_inverse_.size() == 0 || 4 * r > size()) : r > size();
+  f.direct = direct(r);
   // Without friction K + V D V^T is symmetric, and positive definite where K is: Cholesky's
   // factors from the lower triangle's products (half of them) of the Jacobian, or of Woodbury's
   // capacitance on K^-1/2 (K + V D V^T) K^-1/2 = I + W W^T, W = K^-1/2 V D^1/2: I + W^T W. A
@@ -150,9 +170,6 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
   if (f.symmetric) {
     const auto root_weights = weights->head(r).cwiseSqrt().asDiagonal();
     if (f.direct) {
-      if (f.jacobian.rows() != size()) f.jacobian.resize(size(), size());
-      if (f.llt.matrixLLT().rows() != size()) f.llt = Eigen::LLT<Eigen::MatrixXd>(size());
-      if (root_weighted_V_.rows() != size() || root_weighted_V_.cols() < capacity) root_weighted_V_.resize(size(), capacity);
       auto W = root_weighted_V_.leftCols(r);
       W.noalias() = V * root_weights;
       if (dense) {
@@ -175,8 +192,6 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
     f.symmetric = false;  // not positive definite in round-off after all: the LU factors below
   }
   if (f.direct) {
-    if (f.jacobian.rows() != size()) f.jacobian.resize(size(), size());
-    if (f.lu.rows() != size()) f.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(size());
     f.jacobian.noalias() = U * V.transpose();
     if (dense) f.jacobian += dense_stiffness_;
     else f.jacobian.diagonal() += stiffness_;
@@ -190,8 +205,6 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
     Eigen::Index m = 0;
     for (Eigen::Index i = 0; i < size(); ++i)
       if (!U.row(i).isZero(0.0)) used_rows_[std::size_t(m++)] = i;
-    if (gathered_inverse_.cols() != size()) gathered_inverse_.resize(size(), size());
-    if (gathered_U_.cols() < capacity) gathered_U_.resize(size(), capacity);
     for (Eigen::Index k = 0; k < m; ++k) {
       const Eigen::Index i = used_rows_[std::size_t(k)];
       gathered_inverse_.col(k) = dense_inverse_.col(i);  // = row i: K^-1 is symmetric

@@ -63,6 +63,10 @@ private:
   const Factorization& factorization(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd* weights) const;
   /// Factors K + U V^T for the first r columns into f (`weights` as for solve()).
   void factor(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd* weights, Factorization& f) const;
+  /// Whether r active terms are factored as the n x n Jacobian (else Woodbury's capacitance).
+  bool direct(Eigen::Index r) const;
+  /// Sizes every kept factorization's buffers for `capacity` columns of terms.
+  void reserve(Eigen::Index capacity) const;
   /// x = K^-1 b.
   void solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
 
@@ -80,6 +84,7 @@ private:
   double smallest_eigenvalue_ = 0;
   mutable std::vector<Factorization> kept_ = std::vector<Factorization>(kKeptFactorizations);
   mutable long uses_ = 0;
+  mutable Eigen::Index capacity_ = -1;  ///< columns of terms the buffers hold
   mutable Eigen::VectorXd coefficients_;
 };
 
