@@ -11,6 +11,7 @@ namespace isosid::run {
 DeformedPatch::DeformedPatch(const format::MasterPatch& patch, int dim)
     : patch_(patch), dim_(dim), net_(patch.control_points), moved_(std::size_t(patch.control_points.rows()), 0),
       q_(Eigen::VectorXd::Zero(patch.Phi.cols())), Phi_transposed_(patch.Phi.transpose()) {
+  for (int d = 0; d < parameter_dim(); ++d) basis_[d] = SpanPolynomials(patch.knots[std::size_t(d)], patch.degrees[std::size_t(d)]);
   const Eigen::Index ncp = patch.control_points.rows();
   for (Eigen::Index i = 0; i < ncp; ++i) reference_center_.head(dim) += patch.control_points.row(i).transpose() / double(ncp);
   for (Eigen::Index i = 0; i < ncp; ++i) {
@@ -66,7 +67,7 @@ void DeformedPatch::evaluate(const Eigen::Vector2d& u, Point& out) const {
     p[d] = patch_.degrees[std::size_t(d)];
     span[d] = format::find_span(U, p[d], t);
     out.span_lower(d) = U(span[d]), out.span_upper(d) = U(span[d] + 1);
-    N[d] = format::basis_derivatives(U, p[d], span[d], t, 2);  // rows: value, first, second derivative
+    basis_[d].evaluate(span[d], t, N[d]);  // rows: value, first, second derivative
   }
   const int n_u = format::basis_count(patch_.knots[0], p[0]);
   // derivative index k: 0 value, 1 d/du, 2 d/dv, 3 uu, 4 uv, 5 vv (u-order, v-order)

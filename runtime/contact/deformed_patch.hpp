@@ -2,6 +2,7 @@
 // modal rows of its control points) evaluated on its deformed control net X + Phi q, with
 // first and second parametric derivatives, in the body frame.
 #pragma once
+#include "contact/span_polynomials.hpp"
 #include "isosid/format/sid.hpp"
 
 #include <Eigen/Dense>
@@ -66,6 +67,7 @@ private:
   mutable std::vector<long> moved_;   ///< per control point: the deform() stamp it was moved for
   long stamp_ = 0;
   Eigen::VectorXd q_;                 ///< the elastic coordinates of the last deform()
+  SpanPolynomials basis_[2];          ///< per parametric direction
   Eigen::MatrixXd Phi_transposed_;   ///< nq x (ncp*dim): each control point's rows are contiguous columns
   mutable Eigen::MatrixXd rows_transposed_;  ///< nq x dim: shape_rows' sum
   Eigen::Vector3d reference_center_ = Eigen::Vector3d::Zero();
