@@ -152,10 +152,6 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
                                  Factorization& f) const {
   const auto U = U_all.leftCols(r), V = V_all.leftCols(r);
   const bool dense = dense_stiffness_.size() > 0;
-  // the n x n Jacobian itself (forming and factoring it: n^2 r + n^3 / 3, half that when
-  // symmetric) when that is cheaper than Woodbury's r x r capacitance: with a diagonal K_h
-  // (n r^2 + r^3 / 3, or half) once more contact terms are active than there are modes; with
-  // a dense K_h and its kept inverse (2 n m r + n r^2 for U's m used rows) once r passes about n / 4
   f.weighted = weights != nullptr;
   if (f.weighted) f.weights.head(r) = weights->head(r);
   else f.U.leftCols(r) = U;

@@ -100,7 +100,7 @@ double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill,
     // beyond what the caller needs is left out unplaced (exact contact's multipliers can press
     // a point at a positive gap: none is). The others are placed in one product where they
     // are most of the surface (a rod's end face), else each by its own rows (a disk's rim
-    // near the plane: a few of its 280 points).
+    // arc, of which the plane's neighbourhood holds a third to a half).
     const double q_norm = q.norm();
     auto left_out = [&](Eigen::Index g) {
       if (skip(g)) return true;
