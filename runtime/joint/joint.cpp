@@ -130,7 +130,7 @@ JointPose Joint::pose(const double* y) const {
   return p;
 }
 
-Eigen::Matrix<double, 3, Eigen::Dynamic> Joint::directions(const double* y) const { return pose(y).D; }
+JointDirections Joint::directions(const double* y) const { return pose(y).D; }
 
 Vector3d Joint::rotation_error(const AttachmentMotion& a, const AttachmentMotion& b) const {
   if (kind_ == JointSpec::Kind::Revolute)  // side 0's axis turned away from side 1's by e (small)
@@ -139,8 +139,8 @@ Vector3d Joint::rotation_error(const AttachmentMotion& a, const AttachmentMotion
   return 0.5 * Vector3d(E(2, 1) - E(1, 2), E(0, 2) - E(2, 0), E(1, 0) - E(0, 1));
 }
 
-Eigen::VectorXd Joint::row_acceleration(int s, const JointPose& pose, const double* delta) const {
-  Eigen::VectorXd out = Eigen::VectorXd::Zero(rows());
+JointRows Joint::row_acceleration(int s, const JointPose& pose, const double* delta) const {
+  JointRows out = JointRows::Zero(rows());
   const JointAttachment& a = sides_[std::size_t(s)];
   if (!a.body) return out;
   const FloatingBody& b = *a.body;
@@ -154,12 +154,12 @@ Eigen::VectorXd Joint::row_acceleration(int s, const JointPose& pose, const doub
   return out;
 }
 
-Eigen::VectorXd Joint::stabilized_acceleration(const double* y, const JointPose& p, const double* ydot, double rate) const {
+JointRows Joint::stabilized_acceleration(const double* y, const JointPose& p, const double* ydot, double rate) const {
   const AttachmentMotion m0 = motion(0, y), m1 = motion(1, y);
-  Eigen::VectorXd c = row_acceleration(0, p, ydot) - row_acceleration(1, p, ydot);
+  JointRows c = row_acceleration(0, p, ydot) - row_acceleration(1, p, ydot);
   c.head<3>() += m0.a_known - m1.a_known + 2 * rate * (m0.v - m1.v) + rate * rate * (m0.x - m1.x);
   if (rotation_rows_) {
-    const Eigen::Matrix<double, 3, Eigen::Dynamic> D = p.D.rightCols(rotation_rows_);
+    const auto D = p.D.rightCols(rotation_rows_);
     const Vector3d w_rel = m0.w - m1.w;
     c.tail(rotation_rows_) += D.transpose() * (m0.alpha_known - m1.alpha_known + 2 * rate * w_rel + rate * rate * rotation_error(m0, m1));
     // the directions turn with side 1: d/dt (D^T w_rel) also holds (w1 x D)^T w_rel
@@ -184,16 +184,16 @@ void Joint::add_load(int s, int row, double amount, const JointPose& pose, Gener
   f.elastic.noalias() += a.psi.transpose() * T;
 }
 
-Eigen::VectorXd Joint::residual(const double* y) const {
+JointRows Joint::residual(const double* y) const {
   const AttachmentMotion m0 = motion(0, y), m1 = motion(1, y);
-  Eigen::VectorXd out(rows());
+  JointRows out(rows());
   out.head<3>() = m0.x - m1.x;
   if (rotation_rows_) out.tail(rotation_rows_) = directions(y).rightCols(rotation_rows_).transpose() * rotation_error(m0, m1);
   return out;
 }
 
 std::pair<double, double> Joint::errors(const double* y) const {
-  const Eigen::VectorXd c = residual(y);
+  const JointRows c = residual(y);
   return {c.head<3>().norm(), c.tail(rotation_rows_).norm()};
 }
 

@@ -40,10 +40,15 @@ struct AttachmentMotion {
 /// What a joint's rows need of a state, formed once per evaluation (the reactions' assembly
 /// asks for the rows of every side many times at one state): each side's body rotation and
 /// attachment point in the body frame, and the row directions (world, 3 x rows()).
+/// A joint's row directions (world, 3 x rows()) and a value per row: at most six rows, on the
+/// stack (the joints are solved at every evaluation, which must not allocate).
+using JointDirections = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6>;
+using JointRows = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+
 struct JointPose {
   std::array<Eigen::Matrix3d, 2> A{Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity()};
   std::array<Eigen::Vector3d, 2> s_now{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-  Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6> D;
+  JointDirections D;
 };
 
 class Joint {
@@ -63,19 +68,19 @@ public:
   /// The sides' rotations, attachment points and row directions at y.
   JointPose pose(const double* y) const;
   /// Row directions at y (world, 3 x rows(): translational rows first, then rotational).
-  Eigen::Matrix<double, 3, Eigen::Dynamic> directions(const double* y) const;
+  JointDirections directions(const double* y) const;
   /// The rows' accelerations with the bodies' accelerations from ydot, plus their
   /// stabilization 2 a c' + a^2 c: zero when the joint holds (`pose`: this joint's pose(y)).
-  Eigen::VectorXd stabilized_acceleration(const double* y, const JointPose& pose, const double* ydot, double rate) const;
+  JointRows stabilized_acceleration(const double* y, const JointPose& pose, const double* ydot, double rate) const;
   /// The rows' acceleration of side s that is linear in its body's accelerations, taken from
   /// the state derivative `delta` (zero for the ground).
-  Eigen::VectorXd row_acceleration(int s, const JointPose& pose, const double* delta) const;
+  JointRows row_acceleration(int s, const JointPose& pose, const double* delta) const;
   /// Adds row j's unit load (force or torque along its direction, of sign +1 on side 0 and -1
   /// on side 1) times `amount` to the generalized force `f` of side s's body.
   void add_load(int s, int row, double amount, const JointPose& pose, GeneralizedForce& f) const;
   /// The rows' position-level residuals at y: the attachments' separation (m, world), then
   /// the orientation error along the rotational rows (rad); zero where the joint holds.
-  Eigen::VectorXd residual(const double* y) const;
+  JointRows residual(const double* y) const;
   /// Position error (m) and orientation error (rad) at y.
   std::pair<double, double> errors(const double* y) const;
 

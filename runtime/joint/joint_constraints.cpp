@@ -34,13 +34,22 @@ JointConstraints::JointConstraints(const Scene& scene, const std::vector<std::un
   base_.setZero(state_size);
   loaded_.setZero(state_size);
   lambda_.setZero(rows_);
+  residual_.setZero(rows_);
   response_.setZero(rows_, rows_);
-  refuse_redundant_rows(bodies, y0, scene.gravity, scene.file);
+  unit_.resize(bodies.size());
+  for (const auto& [body, index] : jointed_) unit_[index].reset(body->nq());
+  moving_ = refuse_redundant_rows(bodies, y0, scene.gravity, scene.file);
+  const auto m = Eigen::Index(moving_.size());
+  moving_response_.setZero(m, m);
+  moving_lambda_.setZero(m);
+  moving_residual_.setZero(m);
+  moving_lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(m);
 }
 
-void JointConstraints::refuse_redundant_rows(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const double* y0,
-                                             const Eigen::Vector3d& gravity, const std::string& scene_file) const {
-  if (joints_.empty()) return;
+std::vector<Eigen::Index> JointConstraints::refuse_redundant_rows(const std::vector<std::unique_ptr<FloatingBody>>& bodies,
+                                                                 const double* y0, const Eigen::Vector3d& gravity,
+                                                                 const std::string& scene_file) const {
+  if (joints_.empty()) return {};
   std::vector<GeneralizedForce> none(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) none[i].reset(bodies[i]->nq());
   prepare(y0, gravity, none);
@@ -58,7 +67,7 @@ void JointConstraints::refuse_redundant_rows(const std::vector<std::unique_ptr<F
   const Eigen::VectorXd scale = W.diagonal().cwiseAbs().cwiseSqrt().cwiseInverse();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(scale.asDiagonal() * (0.5 * (W + W.transpose())) * scale.asDiagonal());
   const Eigen::VectorXd& values = eig.eigenvalues();
-  if (values.size() == 0 || values(0) > 1e-9 * values(values.size() - 1)) return;
+  if (values.size() == 0 || values(0) > 1e-9 * values(values.size() - 1)) return moving;
   // the joints with a share in the dependent combination
   const Eigen::VectorXd null = eig.eigenvectors().col(0).cwiseAbs();
   std::string names, first;
@@ -88,12 +97,24 @@ void JointConstraints::prepare(const double* y, const Eigen::Vector3d& gravity, 
 void JointConstraints::apply(const double* y, const Eigen::Vector3d& gravity, std::vector<GeneralizedForce>& forces) const {
   if (joints_.empty()) return;
   prepare(y, gravity, forces);  // every jointed body's accelerations under its other loads
-  Eigen::VectorXd residual(rows_);
   for (std::size_t k = 0; k < joints_.size(); ++k)
-    residual.segment(first_row_[k], joints_[k].rows()) = joints_[k].stabilized_acceleration(y, poses_[k], base_.data(), rate_);
+    residual_.segment(first_row_[k], joints_[k].rows()) = joints_[k].stabilized_acceleration(y, poses_[k], base_.data(), rate_);
   assemble_response();
-  // rows no body can move (a planar scene's out-of-plane rows) have no response: least squares
-  lambda_ = response_.completeOrthogonalDecomposition().solve(-residual);
+  // Rows no body can move (a planar scene's out-of-plane rows) have no response and carry no
+  // reaction; the others' response was of full rank at the start (refuse_redundant_rows):
+  // LU factors of it. A pose where it is singular after all takes the least-squares solve.
+  lambda_.setZero();
+  const auto m = Eigen::Index(moving_.size());
+  for (Eigen::Index a = 0; a < m; ++a) {
+    for (Eigen::Index b = 0; b < m; ++b) moving_response_(a, b) = response_(moving_[std::size_t(a)], moving_[std::size_t(b)]);
+    moving_residual_(a) = -residual_(moving_[std::size_t(a)]);
+  }
+  moving_lu_.compute(moving_response_);
+  moving_lambda_ = moving_lu_.solve(moving_residual_);
+  if (moving_lambda_.allFinite())
+    for (Eigen::Index a = 0; a < m; ++a) lambda_(moving_[std::size_t(a)]) = moving_lambda_(a);
+  else
+    lambda_ = response_.completeOrthogonalDecomposition().solve(-residual_);
   for (std::size_t k = 0; k < joints_.size(); ++k)
     for (int row = 0; row < joints_[k].rows(); ++row)
       for (int s = 0; s < 2; ++s)
@@ -108,9 +129,10 @@ void JointConstraints::assemble_response() const {
       for (int s = 0; s < 2; ++s) {
         const FloatingBody* b = joints_[k].side(s).body;
         if (!b) continue;
-        unit_.reset(b->nq());
-        joints_[k].add_load(s, row, 1.0, poses_[k], unit_);
-        b->load_response(unit_, loaded_.data());  // the mass matrix of the derivatives at y above
+        GeneralizedForce& unit = unit_[joints_[k].side(s).index];
+        unit.reset(b->nq());
+        joints_[k].add_load(s, row, 1.0, poses_[k], unit);
+        b->load_response(unit, loaded_.data());  // the mass matrix of the derivatives at y above
         // every joint row that moves with this body
         for (std::size_t i = 0; i < joints_.size(); ++i)
           for (int t = 0; t < 2; ++t)

@@ -30,8 +30,9 @@ private:
   void assemble_response() const;
   /// InputError naming the joints if, at the start, some rows repeat what others impose (a
   /// rank-deficient constraint Jacobian: an over-constrained mechanism, reactions not unique).
-  void refuse_redundant_rows(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const double* y0,
-                             const Eigen::Vector3d& gravity, const std::string& scene_file) const;
+  /// Returns the rows some body can move (a planar scene's out-of-plane rows none can).
+  std::vector<Eigen::Index> refuse_redundant_rows(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const double* y0,
+                                                  const Eigen::Vector3d& gravity, const std::string& scene_file) const;
 
   std::vector<Joint> joints_;
   std::vector<Eigen::Index> first_row_;   ///< joint k's rows start here in the stacked multipliers
@@ -40,9 +41,14 @@ private:
   /// the bodies some joint holds, each once, with their indices in the system
   std::vector<std::pair<const FloatingBody*, std::size_t>> jointed_;
   mutable std::vector<JointPose> poses_;  ///< per joint, at the state of the last prepare()
-  mutable Eigen::VectorXd base_, loaded_, lambda_;
+  mutable Eigen::VectorXd base_, loaded_, lambda_, residual_;
   mutable Eigen::MatrixXd response_;
-  mutable GeneralizedForce unit_;
+  mutable std::vector<GeneralizedForce> unit_;  ///< per body of the system: a row's unit load
+  /// the rows some body can move, fixed at the start, and their response's LU factors
+  std::vector<Eigen::Index> moving_;
+  mutable Eigen::MatrixXd moving_response_;
+  mutable Eigen::VectorXd moving_residual_, moving_lambda_;
+  mutable Eigen::PartialPivLU<Eigen::MatrixXd> moving_lu_;
 };
 
 }  // namespace isosid::run

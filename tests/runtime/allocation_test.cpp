@@ -2,8 +2,8 @@
 // first evaluations have sized every buffer they must not touch the heap. This executable
 // counts malloc calls (it interposes malloc, so it holds only this test) around evaluations
 // of scenes that exercise every path: quasistatic modes with plane contact and friction,
-// flexible-flexible contact on a master patch, a rigid body, and a spinning 3D body with
-// first-order SID terms.
+// flexible-flexible contact on a master patch, a rigid body, a spinning 3D body with
+// first-order SID terms, and joints.
 #include "isosid/format/sid_io.hpp"
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
@@ -98,6 +98,16 @@ TEST_CASE("the right-hand side and the gaps do not allocate", "[runtime][allocat
                               "[[flexible_body]]\nname = \"beam\"\nsid = \"" + kGolden + "/beam_small.sid.h5\"\n"
                               "position = [0.0, 1.0, 0.0]\nangular_velocity = [0.5, 3.0, 40.0]\nqdot0 = [" +
                               std::string("1e-3, 0, 0, 0, 0, 0") + "]\n";
+    CHECK(allocations_per_sweep(scene, dir) == 0);
+  }
+  SECTION("jointed bodies under gravity: a flexible beam on a revolute joint, a rigid box on a spherical one") {
+    // bodies of different nq share the joints' unit loads; the reactions' solve runs at every evaluation
+    const std::string scene = "[simulation]\ndimension = \"3d\"\nend_time = 1e-3\ngravity = [0.0, -9.81, 0.0]\n"
+                              "[[flexible_body]]\nname = \"beam\"\nsid = \"" + kGolden + "/beam_small.sid.h5\"\n"
+                              "[[rigid_body]]\nname = \"box\"\nshape = \"box\"\nsize = [0.1, 0.1, 0.1]\ndensity = 2700.0\n"
+                              "position = [0.0, -0.2, 0.0]\n"
+                              "[[joint]]\nname = \"hinge\"\ntype = \"revolute\"\nbody = \"beam\"\nnode = \"end\"\naxis = [0.0, 0.0, 1.0]\n"
+                              "[[joint]]\nname = \"pivot\"\ntype = \"spherical\"\nbody = \"box\"\npoint = [0.0, 0.0, 0.0]\n";
     CHECK(allocations_per_sweep(scene, dir) == 0);
   }
 }
