@@ -179,9 +179,10 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   MatrixXd& B = B_;  // [Ct, Cr], each evaluated in place
   auto Ct = B.leftCols(3), Cr = B.rightCols(3);
   // B's rows of the integrated modes, the only ones the equations read (the quasistatic
-  // modes carry no inertia): Ct and Cr from all coefficients, into nd of their rows
-  const Index nb = std::min(nd, ni);
-  sid_.Ct.evaluate(qv, Ct, ni, nb);
+  // modes carry no inertia): Ct and Cr from all coefficients, into nv of their rows; the same
+  // nv coordinates are the ones with velocities
+  const Index nv = std::min(nd, ni);
+  sid_.Ct.evaluate(qv, Ct, ni, nv);
   Eigen::Matrix<double, 6, 6> A6 = Eigen::Matrix<double, 6, 6>::Zero();
   A6.topLeftCorner<3, 3>() = m * Matrix3d::Identity();
   A6.topRightCorner<3, 3>() = skew(mc).transpose();
@@ -198,13 +199,13 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   damping_.subtract_product(qd, hq);
   hq.noalias() += B.topLeftCorner(nd, 3) * gK;  // Ct g: gravity on the modes
   if (rotates_) {
-    sid_.Cr.evaluate(qv, Cr, ni, nb);
+    sid_.Cr.evaluate(qv, Cr, ni, nv);
     Matrix3d J;
     sid_.J.evaluate(qv, J, ni, 3);
     A6.bottomRightCorner<3, 3>() = J;
     const Matrix3d W = skew(w);
     Vector3d Ct_qdot;
-    Ct_qdot.noalias() = Ct.topRows(nb).transpose() * qd.head(nb);  // into a fixed vector: no temporary
+    Ct_qdot.noalias() = Ct.topRows(nv).transpose() * qd.head(nv);  // into a fixed vector: no temporary
     hr.head<3>() += -W * W * mc - 2 * W * Ct_qdot;
     // Gr(q, qdot) = sum_k (Gr0_k + sum_j Gr1_kj q_j) qdot_k. The 3x3 blocks of a 3 x 3nq term
     // are consecutive 9-vectors, so each sum over k is one 9 x nq matrix-vector product
@@ -212,7 +213,6 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
     // Only the leading nv coordinates have velocities (quasistatic modes have none): the
     // products stop there.
     using Blocks = Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic>>;
-    const Index nv = std::min(ni, nd);
     Eigen::Matrix<double, 9, 1> gr = Blocks(sid_.Gr.M0.data(), 9, nv) * qd.head(nv);
     for (Index j = 0; j < std::min<Index>(ni, Index(sid_.Gr.M1.size())); ++j)
       if (qv(j) != 0) gr.noalias() += qv(j) * (Blocks(sid_.Gr.M1[std::size_t(j)].data(), 9, nv) * qd.head(nv));

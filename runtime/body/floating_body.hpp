@@ -12,7 +12,8 @@
 namespace isosid::run {
 
 /// Generalized forces in body components: on the frame (force, torque about the origin) and
-/// on the elastic coordinates.
+/// on the elastic coordinates, of which the equations read the integrated modes' (the leading
+/// n_dynamic; point loads form only those, the quasistatic modes' are the static solve's).
 struct GeneralizedForce {
   Eigen::Vector3d force = Eigen::Vector3d::Zero(), torque = Eigen::Vector3d::Zero();
   Eigen::VectorXd elastic;
@@ -28,7 +29,7 @@ struct GeneralizedForce {
 class ModalMatrix {
 public:
   explicit ModalMatrix(const Eigen::MatrixXd& M);
-  /// out -= the leading out.size() rows of M x (no allocation)
+  /// out -= the leading out.size() rows of M x, x of all nq entries (no allocation)
   void subtract_product(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> out) const {
     const Eigen::Index rows = out.size();
     if (dense_.size())
@@ -166,7 +167,7 @@ private:
   /// n_inertial rows (n_inertial x 6 n_inertial): column c of all of them is then a matrix
   /// with a stride of six columns, and Oe1(q) w^2 a product of those for w^2's non-zero c with q
   Eigen::MatrixXd oe1_;
-  // workspace of derivatives(): [Ct(q) Cr(q)], h_q
+  // workspace of derivatives(): [Ct(q) Cr(q)], h_q, in their leading n_dynamic rows
   mutable Eigen::MatrixXd B_;
   mutable Eigen::VectorXd hq_;
 };

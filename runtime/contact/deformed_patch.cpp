@@ -148,12 +148,15 @@ bool DeformedPatch::newton_projection(const Eigen::Vector3d& x, Eigen::Vector2d&
       for (int b = 0; b < pd; ++b) H(a, b) = point.dC[a].dot(point.dC[b]) + point.ddC[a + b].dot(d);
     }
     Eigen::Vector2d step = Eigen::Vector2d::Zero();
+    bool newton = true;  // the step is Newton's (not Gauss-Newton's fallback)
     if (pd == 1) {
       const double gauss_newton = point.dC[0].squaredNorm();
-      step(0) = -g(0) / (H(0, 0) > 0.1 * gauss_newton ? H(0, 0) : gauss_newton);
+      newton = H(0, 0) > 0.1 * gauss_newton;
+      step(0) = -g(0) / (newton ? H(0, 0) : gauss_newton);
     } else {
       Eigen::LLT<Eigen::Matrix2d> llt(H);
       if (llt.info() != Eigen::Success) {
+        newton = false;
         for (int a = 0; a < 2; ++a)
           for (int b = 0; b < 2; ++b) H(a, b) = point.dC[a].dot(point.dC[b]);
         H.diagonal().array() += 1e-14 * H.trace() + 1e-300;
@@ -164,17 +167,26 @@ bool DeformedPatch::newton_projection(const Eigen::Vector3d& x, Eigen::Vector2d&
     // step non-finite: a parameter that is no number must never reach the knot-span search
     if (!step.allFinite()) return false;
     const Eigen::Vector2d before = u;
-    for (int a = 0; a < pd; ++a) u(a) = std::clamp(u(a) + step(a), lower(a), upper(a));
-    // A last step below 1e-5 of the parameter range, within the knot span evaluated, is taken
-    // by Taylor's formula instead of another evaluation: Newton's next correction would be
-    // O(step^2), 1e-10 of the range, and so are the errors of the expansion's tangents and
-    // basis values (the gap's is the square of that: the closest point is stationary). A
-    // warm-started projection then costs one evaluation where it cost two (a pair of balls:
-    // 29 % fewer evaluations). Across a knot the derivatives jump: evaluated again.
+    bool clamped = false;
+    for (int a = 0; a < pd; ++a) {
+      u(a) = std::clamp(u(a) + step(a), lower(a), upper(a));
+      clamped = clamped || u(a) != before(a) + step(a);
+    }
     Eigen::Vector2d moved = Eigen::Vector2d::Zero();
     moved.head(pd) = u.head(pd) - before.head(pd);
-    const bool same_span = ((u.head(pd).array() >= point.span_lower.head(pd).array()) && (u.head(pd).array() <= point.span_upper.head(pd).array())).all();
-    if (same_span && moved.cwiseAbs().maxCoeff() <= 1e-5 * (upper(0) - lower(0))) {
+    // A step below 1e-9 of the parameter range ends the search (also on the patch's edge, where
+    // the step is clamped to nothing), its tangents and basis values then 1e-9 off. A last
+    // full Newton step below 3e-5 of its knot span, within that span, is taken by Taylor's
+    // formula instead of another evaluation: the next Newton correction would be O(step^2),
+    // 1e-9 of the span, and so are the errors of the expansion's tangents and basis values (the
+    // gap's is the square of that: the closest point is stationary). A warm-started projection
+    // then mostly costs one evaluation where it cost two. A clamped or Gauss-Newton step says
+    // nothing of convergence, and across a knot the derivatives jump: evaluated again.
+    bool taylor = newton && !clamped;
+    for (int a = 0; a < pd; ++a)
+      taylor = taylor && u(a) >= point.span_lower(a) && u(a) <= point.span_upper(a) &&
+               std::abs(moved(a)) <= 3e-5 * (point.span_upper(a) - point.span_lower(a));
+    if (taylor || moved.cwiseAbs().maxCoeff() <= 1e-9 * (upper(0) - lower(0))) {
       point.advance(moved);
       return true;
     }

@@ -50,7 +50,7 @@ public:
   /// Closest point of the patch to the body-frame point x: Newton's method from u (a warm
   /// start; NaN: none), else from the knot-span midpoint nearest on the undeformed patch. On
   /// success u is its parameter and `point` the point there (its second derivatives may be
-  /// those of a parameter up to 1e-5 of the range away: evaluate at u for curvatures); on
+  /// those of a parameter up to 3e-5 of a knot span away: evaluate at u for curvatures); on
   /// failure u is NaN.
   bool closest_point(const Eigen::Vector3d& x, Eigen::Vector2d& u, Point& point) const;
 

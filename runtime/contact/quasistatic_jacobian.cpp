@@ -107,7 +107,7 @@ void QuasistaticJacobian::reserve(Eigen::Index capacity) const {
     if (direct(capacity)) {  // either factorization of the Jacobian may come
       f.jacobian.resize(size(), size());
       f.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(size());
-      f.llt = Eigen::LLT<Eigen::MatrixXd>(size());
+      if (smallest_eigenvalue_ > 0) f.llt = Eigen::LLT<Eigen::MatrixXd>(size());
     }
   }
   coefficients_.resize(capacity);
@@ -162,7 +162,7 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
   // factors from the lower triangle's products (half of them) of the Jacobian, or of Woodbury's
   // capacitance on K^-1/2 (K + V D V^T) K^-1/2 = I + W W^T, W = K^-1/2 V D^1/2: I + W^T W. A
   // dense K's Woodbury keeps the gathered LU below, which reads only the rows U fills.
-  f.symmetric = weights && r > 0 && smallest_eigenvalue_ > 0 && (f.direct || !dense);
+  f.symmetric = weights && r > 0 && smallest_eigenvalue_ > 0 && (f.direct || !dense) && weights->head(r).minCoeff() >= 0;
   if (f.symmetric) {
     const auto root_weights = weights->head(r).cwiseSqrt().asDiagonal();
     if (f.direct) {

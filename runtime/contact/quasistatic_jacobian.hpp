@@ -33,7 +33,8 @@ public:
   double product(const Eigen::VectorXd& z, const Eigen::VectorXd& w) const;
   /// Solves (K_h + U V^T) x = b with the first r columns of U and V. `weights`, if given,
   /// promises U = V diag(weights) with weights >= 0 (contact without friction): the Jacobian
-  /// is then symmetric positive definite, its products half and its factors Cholesky's.
+  /// is then symmetric, and positive definite where K_h is; its products are then half and its
+  /// factors Cholesky's (but a dense K_h's Woodbury keeps its LU of the used rows).
   void solve(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd& b, Eigen::VectorXd& x,
              const Eigen::VectorXd* weights = nullptr) const;
 
@@ -42,7 +43,8 @@ public:
 
 private:
   /// One factorization of K + U V^T: of the n x n Jacobian itself, or Woodbury's capacitance;
-  /// without friction (U = V D, D >= 0, K positive definite) by Cholesky's method.
+  /// without friction (U = V D, D >= 0, K positive definite) by Cholesky's method, except a
+  /// dense K's Woodbury (LU of the capacitance from the rows U fills).
   struct Factorization {
     Eigen::MatrixXd U, V;        ///< the terms factored (first `rank` columns; U only if not weighted)
     Eigen::VectorXd weights;     ///< weighted: U = V diag(weights)

@@ -211,8 +211,9 @@ double QuasistaticModes::friction_power(const double* y, const double* ydot, Eig
   update_held_loads(shifted_y_.data());
   residual(shifted_y_.data(), R_);  // leaves the model's Jacobian terms alone
   jacobian_.solve(model_.U(), model_.V(), r, (R0 - R_) / h, z_rate_);
-  // R_, the terms, the model and the held loads stay those of the shifted state: the next
-  // solve sets them all anew before it reads any (z_ is still the solution at y)
+  // R_, the terms, the model's gaps and the held loads stay those of the shifted state (its
+  // Jacobian terms those of y): the next solve sets them all anew before it reads any (z_ is
+  // still the solution at y)
   return -friction_.dot(z_rate_);
 }
 

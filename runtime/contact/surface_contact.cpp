@@ -107,7 +107,8 @@ double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill,
       if (spec_.exact) return false;
       double undeformed = base;
       for (int a = 0; a < dim_; ++a) undeformed += n_body(a) * surface_.position(g, a);
-      return undeformed - row_norms_(g) * q_norm >= beyond(g);
+      // less the sums' round-off: the gap itself adds the same terms in another order
+      return undeformed - row_norms_(g) * q_norm - kGapRoundoff * (std::abs(base) + bound_radius_) >= beyond(g);
     };
     Eigen::Index placed = 0;
     for (Eigen::Index g = 0; g < surface_.points() && 2 * placed <= surface_.points(); ++g) placed += !left_out(g);
@@ -118,8 +119,8 @@ double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill,
     point_.Psi.resize(dim_, 0);
     for (Eigen::Index g = 0; g < surface_.points(); ++g) {
       if (!one_product && left_out(g)) continue;
-      for (int a = 0; a < dim_; ++a)
-        P(a) = surface_.position(g, a) + (one_product ? displacement_(g * dim_ + a) : shape_columns_.col(g * dim_ + a).dot(q));
+      if (one_product) P.head(dim_) = surface_.position.row(g).transpose() + displacement_.segment(g * dim_, dim_);
+      else place(g, q, P);
       point_.gap = base + n_body.dot(P);
       if (point_.gap < 0) point_.body_point = r + A * P - point_.gap * plane_normal;  // filled where it presses (TargetPoint)
       f(g, surface_.Psi.middleRows(g * dim_, dim_), P, A, point_);
@@ -135,7 +136,7 @@ double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill,
     // the points the bounds cannot place beyond what the caller needs, each with its own rows
     for (Eigen::Index g = 0; g < surface_.points(); ++g) {
       if (bounds_.lower_bound(g) >= beyond(g) || skip(g)) continue;
-      for (int a = 0; a < dim_; ++a) P(a) = surface_.position(g, a) + shape_columns_.col(g * dim_ + a).dot(q);
+      place(g, q, P);
       if (target_.project(r + A * P, y, point_, hints_[std::size_t(g)], fill)) f(g, surface_.Psi.middleRows(g * dim_, dim_), P, A, point_);
     }
     return clearance;
@@ -156,6 +157,10 @@ double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill,
     }
   }
   return clearance;
+}
+
+void SurfaceContact::place(Eigen::Index g, const Eigen::VectorXd& q, Eigen::Vector3d& P) const {
+  for (int a = 0; a < dim_; ++a) P(a) = surface_.position(g, a) + shape_columns_.col(g * dim_ + a).dot(q);
 }
 
 Eigen::Vector3d SurfaceContact::friction_per_normal_force(const Eigen::Vector3d& vt) const {
@@ -194,7 +199,7 @@ bool SurfaceContact::for_each_pressed(const double* y, F&& f) const {
   for (std::size_t i = 0; i < recorded_count_; ++i) {
     const RecordedPoint& point = recorded_[i];
     if (pressure(point.g, point.target.gap) <= 0) continue;
-    for (int a = 0; a < dim_; ++a) P(a) = surface_.position(point.g, a) + shape_columns_.col(point.g * dim_ + a).dot(q);
+    place(point.g, q, P);
     f(point.g, surface_.Psi.middleRows(point.g * dim_, dim_), P, A, point.target);
   }
   return true;

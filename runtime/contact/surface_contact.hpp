@@ -97,8 +97,10 @@ private:
   double for_each_point(const double* y, ContactTarget::Fill fill, F&& f) const;
   /// The candidates that matter to a caller that ignores a point whose gap is at or beyond
   /// `beyond(g)` (penalty loads: 0): points the gap bounds put there are left out unprojected
-  /// (contact/gap_bounds.hpp; not for exact contact, whose multipliers press at positive
-  /// gaps), and so are those for which skip(g) holds.
+  /// (contact/gap_bounds.hpp, or against a fixed plane the undeformed gap less |Psi_g| |q|;
+  /// not for exact contact, whose multipliers press at positive gaps), and so are those for
+  /// which skip(g) holds. Where leaving them out would cost more than placing them (most of a
+  /// plane's points), they are passed all the same: f must apply its own test.
   template <class F, class Beyond, class Skip>
   double for_each_point(const double* y, ContactTarget::Fill fill, F&& f, Beyond&& beyond, Skip&& skip) const;
   /// Calls f(g, Psi_g, P, A, target point) as for_each_point() does, for the points that press
@@ -118,6 +120,9 @@ private:
                               const double* y, const TargetPoint& t, Eigen::Vector3d& vt) const;
   /// Regularized Coulomb friction force per unit normal force: -mu vt / sqrt(|vt|^2 + eps^2).
   Eigen::Vector3d friction_per_normal_force(const Eigen::Vector3d& vt) const;
+  /// P (body frame, its first dim components) = point g's position X_g + Psi_g q, from its
+  /// transposed rows.
+  void place(Eigen::Index g, const Eigen::VectorXd& q, Eigen::Vector3d& P) const;
   /// World velocity of a slave point relative to the target, along the target's surface; with
   /// Psi of no columns, of the slave's frame motion only (its rigid-body sliding).
   Eigen::Vector3d sliding_velocity(const Eigen::Vector3d& P, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const double* y,
