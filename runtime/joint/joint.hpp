@@ -37,14 +37,14 @@ struct AttachmentMotion {
   Eigen::Matrix3d R;  ///< world orientation of the attachment's frame (body frame and small node rotation)
 };
 
-/// What a joint's rows need of a state, formed once per evaluation (the reactions' assembly
-/// asks for the rows of every side many times at one state): each side's body rotation and
-/// attachment point in the body frame, and the row directions (world, 3 x rows()).
 /// A joint's row directions (world, 3 x rows()) and a value per row: at most six rows, on the
 /// stack (the joints are solved at every evaluation, which must not allocate).
 using JointDirections = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6>;
 using JointRows = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 
+/// What a joint's rows need of a state, formed once per evaluation (the reactions' assembly
+/// asks for the rows of every side many times at one state): each side's body rotation and
+/// attachment point in the body frame, and the row directions (world, 3 x rows()).
 struct JointPose {
   std::array<Eigen::Matrix3d, 2> A{Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity()};
   std::array<Eigen::Vector3d, 2> s_now{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
