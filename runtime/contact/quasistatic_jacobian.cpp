@@ -107,7 +107,8 @@ void QuasistaticJacobian::reserve(Eigen::Index capacity) const {
     if (direct(capacity)) {  // either factorization of the Jacobian may come
       f.jacobian.resize(size(), size());
       f.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(size());
-      if (smallest_eigenvalue_ > 0) f.llt = Eigen::LLT<Eigen::MatrixXd>(size());
+      // sized by factoring I: LLT's size constructor leaves its status unset, which a copy reads
+      if (smallest_eigenvalue_ > 0) f.llt.compute(Eigen::MatrixXd::Identity(size(), size()));
     }
   }
   coefficients_.resize(capacity);
