@@ -227,7 +227,6 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   // the rigid DOFs' Schur complement A6 - B^T B (Me = I), over the dynamic modes only
   // (quasistatic modes carry no inertia)
   const auto Bd = B.topRows(nd);
-  const auto hd = hq;
   Eigen::Matrix<double, 6, 6> S = A6;
   S.noalias() -= Bd.transpose() * Bd;
   int free_dofs[6], nf = 0;
@@ -243,7 +242,7 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
     mass_.S.compute(Sf);
   }
   mass_.A = A;
-  accelerations_from(hr, hd, d);
+  accelerations_from(hr, hq, d);
   return damping_.quadratic_form(qd);
 }
 
