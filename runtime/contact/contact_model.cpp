@@ -31,8 +31,8 @@ Eigen::Index ContactModel::jacobian_terms(const QuasistaticTerms& terms, const E
     const double stiffness = terms.penalty(k) * terms.weight(k);
     weights_(r) = stiffness;
     V_.col(r) = terms.V.col(k);
+    // without friction the weights stand for U (QuasistaticJacobian::solve)
     if (terms.friction) U_.col(r).noalias() = stiffness * (terms.V.col(k) + terms.T.col(k));
-    else U_.col(r).noalias() = stiffness * terms.V.col(k);
     ++r;
   }
   return r;

@@ -23,8 +23,9 @@ public:
   /// The generalized contact force of the recorded points at gaps `gaps` (its friction part
   /// separately; sized n); returns the merit energy sum 1/2 w p^2 / c_p.
   double forces(const QuasistaticTerms& terms, const Eigen::VectorXd& gaps, Eigen::VectorXd& force, Eigen::VectorXd& friction) const;
-  /// Collects the Jacobian terms of the points pressed at `gaps`: U = c_p w (v + t), V = v in
-  /// the first r columns of U() and V() (c_p w itself in the first r of weights_); returns r.
+  /// Collects the Jacobian terms of the points pressed at `gaps`: V = v and, with friction,
+  /// U = c_p w (v + t) in the first r columns of V() and U() (c_p w itself in the first r of
+  /// weights_, which stand for U = V diag(c_p w) without friction); returns r.
   Eigen::Index jacobian_terms(const QuasistaticTerms& terms, const Eigen::VectorXd& gaps) const;
   const Eigen::MatrixXd& U() const { return U_; }
   const Eigen::MatrixXd& V() const { return V_; }

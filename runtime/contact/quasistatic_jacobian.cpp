@@ -112,7 +112,7 @@ void QuasistaticJacobian::reserve(Eigen::Index capacity) const {
     }
   }
   coefficients_.resize(capacity);
-  root_weighted_V_.resize(size(), capacity);
+  root_weighted_V_.resize(size(), capacity), weighted_V_.resize(size(), capacity);
   if (dense_inverse_.size()) gathered_inverse_.resize(size(), size()), gathered_U_.resize(size(), capacity);
 }
 
@@ -120,7 +120,7 @@ const QuasistaticJacobian::Factorization& QuasistaticJacobian::factorization(con
                                                                              Eigen::Index r, const Eigen::VectorXd* weights) const {
   ++uses_;
   // buffers sized to the columns' capacity: no allocation once the largest active set has been seen
-  if (U.cols() > capacity_) reserve(U.cols());
+  if (V.cols() > capacity_) reserve(V.cols());
   Factorization* oldest = &kept_.front();
   // with weights U = V D: the weights (r numbers, which tell most active sets apart at once)
   // and V name the terms, without U's n r
@@ -151,11 +151,11 @@ void QuasistaticJacobian::solve_stiffness(const Eigen::VectorXd& b, Eigen::Vecto
 
 void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::MatrixXd& V_all, Eigen::Index r, const Eigen::VectorXd* weights,
                                  Factorization& f) const {
-  const auto U = U_all.leftCols(r), V = V_all.leftCols(r);
+  const auto V = V_all.leftCols(r);
   const bool dense = dense_stiffness_.size() > 0;
   f.weighted = weights != nullptr;
   if (f.weighted) f.weights.head(r) = weights->head(r);
-  else f.U.leftCols(r) = U;
+  else f.U.leftCols(r) = U_all.leftCols(r);
   f.V.leftCols(r) = V;
   f.rank = r;
   f.direct = direct(r);
@@ -188,6 +188,9 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
     }
     f.symmetric = false;  // not positive definite in round-off after all: the LU factors below
   }
+  // the terms' U where the weights stand for it (the symmetric factors above never read it)
+  if (weights) weighted_V_.leftCols(r).noalias() = V * weights->head(r).asDiagonal();
+  const auto U = (weights ? weighted_V_ : U_all).leftCols(r);
   if (f.direct) {
     f.jacobian.noalias() = U * V.transpose();
     if (dense) f.jacobian += dense_stiffness_;

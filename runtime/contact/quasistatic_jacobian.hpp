@@ -32,9 +32,10 @@ public:
   /// z^T K_h w.
   double product(const Eigen::VectorXd& z, const Eigen::VectorXd& w) const;
   /// Solves (K_h + U V^T) x = b with the first r columns of U and V. `weights`, if given,
-  /// promises U = V diag(weights) with weights >= 0 (contact without friction): the Jacobian
-  /// is then symmetric, and positive definite where K_h is; its products are then half and its
-  /// factors Cholesky's (but a dense K_h's Woodbury keeps its LU of the used rows).
+  /// stand for U = V diag(weights), weights >= 0 (contact without friction), and U is not read
+  /// (the caller need not form it): the Jacobian is then symmetric, and positive definite where
+  /// K_h is; its products are then half and its factors Cholesky's (but a dense K_h's Woodbury
+  /// keeps its LU of the used rows, from U formed here).
   void solve(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd& b, Eigen::VectorXd& x,
              const Eigen::VectorXd* weights = nullptr) const;
 
@@ -75,6 +76,7 @@ private:
   Eigen::VectorXd stiffness_;                 ///< diagonal of K_h
   Eigen::VectorXd inverse_root_stiffness_;    ///< its K^-1/2, for the symmetric capacitance
   mutable Eigen::MatrixXd root_weighted_V_;   ///< V D^1/2 (capacity columns), for the symmetric Jacobian
+  mutable Eigen::MatrixXd weighted_V_;        ///< V D: U of weighted terms, for the factors that read U
   Eigen::MatrixXd dense_stiffness_;           ///< K_h if it is not diagonal
   /// K_h^-1 if K_h is dense and positive definite (else empty: the Jacobian is then factored
   /// each time). Kept whole: Woodbury's K^-1 U then reads only the columns where U has
