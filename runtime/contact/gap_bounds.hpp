@@ -45,6 +45,9 @@ public:
     return gap_[std::size_t(g)] - (shared_ + rotation_ * position_norm_[std::size_t(g)] + row_norms_(g) * slave_move_);
   }
   void invalidate() const { valid_ = false; }
+  /// |Psi_g|_F: no displacement of point g exceeds this times |q|.
+  double row_norm(Eigen::Index g) const { return row_norms_(g); }
+  double largest_row_norm() const { return largest_row_norm_; }
 
 private:
   Eigen::VectorXd row_norms_;

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace isosid::run {
 
@@ -45,17 +46,17 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
     quasistatic_row_norms_(g) = shape_columns_.block(body.nq() - nh, g * dim_, nh, dim_).norm();
   hints_.assign(std::size_t(surface_.points()), Eigen::Vector2d::Constant(NAN));
   recorded_pass_.assign(std::size_t(surface_.points()), -1);
+  left_out_.assign(std::size_t(surface_.points()), 0);
   multiplier_.assign(std::size_t(surface_.points()), 0.0);
   updated_ = multiplier_;
   if (surface_.points() == 0) return;
   bound_center_.head(dim_) = surface_.position.colwise().mean().transpose();
-  row_norms_.resize(surface_.points());
+  Eigen::VectorXd row_norms(surface_.points());
   for (Eigen::Index g = 0; g < surface_.points(); ++g) {
     bound_radius_ = std::max(bound_radius_, (surface_.position.row(g).transpose() - bound_center_.head(dim_)).norm());
-    row_norms_(g) = surface_.Psi.middleRows(g * dim_, dim_).norm();
+    row_norms(g) = surface_.Psi.middleRows(g * dim_, dim_).norm();
   }
-  bound_growth_ = row_norms_.maxCoeff();
-  bounds_ = GapBounds(row_norms_, kRefreshPerRadius * bound_radius_);
+  bounds_ = GapBounds(std::move(row_norms), kRefreshPerRadius * bound_radius_);
 }
 
 double SurfaceContact::derived_penalty(double contact_radius) const {
@@ -83,7 +84,7 @@ double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill,
   const Eigen::Vector3d r = body_.r(y);
   // broad phase: |Psi_g q| <= |Psi_g|_F |q| bounds every point's displacement
   const Eigen::VectorXd& q = body_.q(y);
-  const double clearance = target_.clearance(r + A * bound_center_, bound_radius_ + bound_growth_ * q.norm());
+  const double clearance = target_.clearance(r + A * bound_center_, bound_radius_ + bounds_.largest_row_norm() * q.norm());
   if (clearance > 0) {
     bounds_.invalidate();  // the points were not evaluated
     return clearance;
@@ -108,17 +109,21 @@ double SurfaceContact::for_each_point(const double* y, ContactTarget::Fill fill,
       double undeformed = base;
       for (int a = 0; a < dim_; ++a) undeformed += n_body(a) * surface_.position(g, a);
       // less the sums' round-off: the gap itself adds the same terms in another order
-      return undeformed - row_norms_(g) * q_norm - kGapRoundoff * (std::abs(base) + bound_radius_) >= beyond(g);
+      return undeformed - bounds_.row_norm(g) * q_norm - kGapRoundoff * (std::abs(base) + bound_radius_) >= beyond(g);
     };
+    // counted to more than half, or else over every point (whose verdicts are then kept)
     Eigen::Index placed = 0;
-    for (Eigen::Index g = 0; g < surface_.points() && 2 * placed <= surface_.points(); ++g) placed += !left_out(g);
+    for (Eigen::Index g = 0; g < surface_.points() && 2 * placed <= surface_.points(); ++g) {
+      left_out_[std::size_t(g)] = left_out(g);
+      placed += !left_out_[std::size_t(g)];
+    }
     const bool one_product = 2 * placed > surface_.points();  // then every point, as the callers' own tests leave them out
     if (one_product) displacement_.noalias() = surface_.Psi * q;
     point_.normal = plane_normal;
     point_.velocity.setZero();
     point_.Psi.resize(dim_, 0);
     for (Eigen::Index g = 0; g < surface_.points(); ++g) {
-      if (!one_product && left_out(g)) continue;
+      if (!one_product && left_out_[std::size_t(g)]) continue;
       if (one_product) P.head(dim_) = surface_.position.row(g).transpose() + displacement_.segment(g * dim_, dim_);
       else place(g, q, P);
       point_.gap = base + n_body.dot(P);

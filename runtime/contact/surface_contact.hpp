@@ -140,12 +140,12 @@ private:
   int dim_;
   Eigen::Vector3d bound_center_ = Eigen::Vector3d::Zero();  ///< slave bounding sphere (reference, body frame)
   double bound_radius_ = 0;
-  double bound_growth_ = 0;   ///< max over points of |Psi_g|_F: the sphere grows by this times |q|
   std::vector<char> edge_;                       ///< per point: in an edge element of the surface
   mutable std::vector<Eigen::Vector2d> hints_;  ///< warm starts of the target projections
   mutable std::vector<double> multiplier_, updated_;  ///< exact contact: lambda per point, Pa
   mutable TargetPoint point_;
   mutable Eigen::VectorXd displacement_;         ///< Psi q of all points
+  mutable std::vector<char> left_out_;           ///< per point: left out of the last pass against a fixed plane
   /// Free points of the quasistatic solve at one y: each point's gap at its first evaluation
   /// (-inf: pressed, or not seen), and the poses and quasistatic coordinates it was taken at.
   /// Later evaluations at that y skip a point that the change of the quasistatic coordinates
@@ -169,9 +169,8 @@ private:
   mutable Eigen::VectorXd recorded_key_, current_key_;
   mutable bool recorded_valid_ = false;
   Eigen::MatrixXd shape_columns_;                ///< Psi transposed (nq x dim points): each point's rows contiguous
-  Eigen::VectorXd row_norms_;                    ///< per point: |Psi_g|_F, how far it moves per unit |q|
   Eigen::VectorXd quasistatic_row_norms_;        ///< per point: the Frobenius norm of its quasistatic rows
-  GapBounds bounds_;                             ///< between full evaluations of the points
+  GapBounds bounds_;                             ///< between full evaluations of the points; |Psi_g|_F per point
 };
 
 }  // namespace isosid::run
