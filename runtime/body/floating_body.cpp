@@ -103,6 +103,12 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
   // in the normal form Ke's off-diagonal entries are round-off, dropped as ModalMatrix drops them
   const MatrixXd coupling = sid_.Ke.M0.bottomLeftCorner(n - n_dynamic_, n_dynamic_);
   if (!stiffness_.is_diagonal() && !coupling.isZero(0.0)) quasistatic_coupling_ = coupling;
+  // a held origin does not accelerate: gravity alone loads the quasistatic modes through Ct (a
+  // clamped SID's modes; a free-free SID's normal modes have Ct = 0)
+  if (locked_[0] && locked_[1] && locked_[2]) {
+    const MatrixXd gravity_rows = sid_.Ct.M0.bottomRows(n - n_dynamic_);
+    if (!gravity_rows.isZero(0.0)) held_gravity_rows_ = gravity_rows;
+  }
   q_full_ = VectorXd::Zero(n);
   qdot_full_ = VectorXd::Zero(n);
   if (spec.q0.size() && spec.q0.size() != n_dynamic_)
@@ -299,10 +305,11 @@ void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, co
   }
 }
 
-void FloatingBody::add_quasistatic_loads(const double* y, Eigen::Ref<VectorXd> out) const {
+void FloatingBody::add_quasistatic_loads(const double* y, const Vector3d& gravity, Eigen::Ref<VectorXd> out) const {
   const VectorXd& qv = q(y);
   add_rotation_loads(qv, qdot(y), omega(y), n_dynamic_, out);
   if (quasistatic_coupling_.size()) out.noalias() -= quasistatic_coupling_ * qv.head(n_dynamic_);
+  if (held_gravity_rows_.size()) out.noalias() += held_gravity_rows_ * (orientation(y).toRotationMatrix().transpose() * gravity);
 }
 
 Eigen::VectorXd FloatingBody::modal_energies(const VectorXd& qv, const VectorXd& qd) const {

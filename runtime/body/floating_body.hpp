@@ -96,10 +96,12 @@ public:
 
   /// Adds the loads on the quasistatic modes at y that do not depend on them to out
   /// (n_quasistatic entries): the rotation loads (-Ge(qdot) w - Oe(q) w^2, a spinning body's
-  /// centrifugal deformation) and, where Ke couples them to the integrated modes (a MacNeal
-  /// SID's boundary), -K_hd q_d. Gravity and the frame's acceleration are left out: on a free
-  /// body they cancel (inertia relief is not modelled for quasistatic modes).
-  void add_quasistatic_loads(const double* y, Eigen::Ref<Eigen::VectorXd> out) const;
+  /// centrifugal deformation), where Ke couples them to the integrated modes (a MacNeal SID's
+  /// boundary) -K_hd q_d, and gravity (world, m/s^2) where the frame's origin is held (x, y
+  /// and z locked): Ct_h A^T g. Elsewhere gravity and the frame's acceleration are left out
+  /// together: quasistatic modes carry no inertia, so no inertia relief either, and the two
+  /// cancel on a free body (whose free-free normal modes have Ct = 0 besides).
+  void add_quasistatic_loads(const double* y, const Eigen::Vector3d& gravity, Eigen::Ref<Eigen::VectorXd> out) const;
 
   // --- energies ---
   double kinetic_energy(const double* y) const;
@@ -143,6 +145,7 @@ private:
   BodySpec spec_;
   ModalMatrix stiffness_, damping_;  ///< Ke, De
   Eigen::MatrixXd quasistatic_coupling_;  ///< Ke's block (quasistatic rows, integrated columns) if not zero
+  Eigen::MatrixXd held_gravity_rows_;     ///< Ct's quasistatic rows (zeroth order) if the frame's origin is held and they are not zero
   std::array<bool, 6> locked_{};  ///< x y z rx ry rz (body-frame accelerations)
   bool rotates_ = true;           ///< false if all rotations are locked: rotational terms vanish
   Eigen::Index offset_ = 0;

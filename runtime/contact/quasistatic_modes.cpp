@@ -8,7 +8,8 @@
 namespace isosid::run {
 
 QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBody>>& bodies,
-                                   const std::vector<SurfaceContact>& contacts) {
+                                   const std::vector<SurfaceContact>& contacts, const Eigen::Vector3d& gravity)
+    : gravity_(gravity) {
   Eigen::Index n = 0;
   std::vector<Eigen::MatrixXd> blocks;
   bool diagonal = true;
@@ -80,7 +81,7 @@ void QuasistaticModes::update_held_loads(const double* y) const {
   held_loads_.setZero(size());
   // held during the Newton iterations: the rotation loads depend on z only through the small
   // Oe1 terms, the coupling not at all
-  for (FloatingBody* b : bodies_) b->add_quasistatic_loads(y, held_loads_.segment(b->quasistatic_offset(), b->n_quasistatic()));
+  for (FloatingBody* b : bodies_) b->add_quasistatic_loads(y, gravity_, held_loads_.segment(b->quasistatic_offset(), b->n_quasistatic()));
 }
 
 int QuasistaticModes::solve(const double* y) const {

@@ -34,8 +34,10 @@ public:
   /// not know (then the step is halved instead).
   static constexpr int kMaxRemodels = 8;
 
-  /// Assigns every body with quasistatic modes its block of the stacked vector z.
-  QuasistaticModes(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const std::vector<SurfaceContact>& contacts);
+  /// Assigns every body with quasistatic modes its block of the stacked vector z; `gravity`
+  /// (world, m/s^2) loads the modes of bodies whose frame origin is held.
+  QuasistaticModes(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const std::vector<SurfaceContact>& contacts,
+                   const Eigen::Vector3d& gravity);
 
   /// Number of stacked quasistatic modes (0: nothing to solve).
   Eigen::Index size() const { return jacobian_.size(); }
@@ -83,6 +85,7 @@ private:
   mutable double window_ = 0;                    ///< QuasistaticTerms::window of the next solve, m
   mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual
   mutable Eigen::VectorXd held_loads_;           ///< update_held_loads()
+  Eigen::Vector3d gravity_ = Eigen::Vector3d::Zero();
   mutable Eigen::VectorXd shifted_y_, friction_, z_rate_;  ///< friction_power's buffers
 };
 

@@ -53,7 +53,7 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
     touches_.emplace_back(c);
     touch_state_.push_back(touches_.back().available() ? TouchState::Armed : TouchState::Unavailable);
   }
-  quasistatic_ = std::make_unique<QuasistaticModes>(bodies_, contacts_);
+  quasistatic_ = std::make_unique<QuasistaticModes>(bodies_, contacts_, gravity_);
   forces_.resize(bodies_.size());
   for (std::size_t i = 0; i < bodies_.size(); ++i) warn_of_many_dynamic_modes(*bodies_[i], scene.bodies[i]);
   std::vector<double> y0(size_);

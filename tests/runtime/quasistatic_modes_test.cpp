@@ -22,7 +22,7 @@ struct PlaneContact {
     bodies.push_back(std::make_unique<run::FloatingBody>(spec, sid, run::Dimension::Solid));
     const run::ContactSpec contact{"impact", "body", sid.contact_surfaces.front().name, plane.name, "", penalty, 0.0, 1e-6};
     contacts.emplace_back(contact, body(), ground);
-    modes = std::make_unique<run::QuasistaticModes>(bodies, contacts);
+    modes = std::make_unique<run::QuasistaticModes>(bodies, contacts, Eigen::Vector3d::Zero());
   }
   PlaneContact(const PlaneContact&) = delete;  // the contacts refer to the members
   const run::FloatingBody& body() const { return *bodies.front(); }
