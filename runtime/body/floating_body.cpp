@@ -103,9 +103,10 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
   // in the normal form Ke's off-diagonal entries are round-off, dropped as ModalMatrix drops them
   const MatrixXd coupling = sid_.Ke.M0.bottomLeftCorner(n - n_dynamic_, n_dynamic_);
   if (!stiffness_.is_diagonal() && !coupling.isZero(0.0)) quasistatic_coupling_ = coupling;
-  // a held origin does not accelerate: gravity alone loads the quasistatic modes through Ct (a
-  // clamped SID's modes; a free-free SID's normal modes have Ct = 0)
-  if (locked_[0] && locked_[1] && locked_[2]) {
+  // a held frame neither moves nor turns: gravity alone loads the quasistatic modes through Ct
+  // (a clamped SID's modes; a free-free SID's normal modes have Ct = 0). A frame that turns
+  // about a held origin would also load them by -Cr_h dw/dt, which the static solve does not know.
+  if (locked_[0] && locked_[1] && locked_[2] && !rotates_) {
     const MatrixXd gravity_rows = sid_.Ct.M0.bottomRows(n - n_dynamic_);
     if (!gravity_rows.isZero(0.0)) held_gravity_rows_ = gravity_rows;
   }

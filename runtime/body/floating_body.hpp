@@ -97,10 +97,10 @@ public:
   /// Adds the loads on the quasistatic modes at y that do not depend on them to out
   /// (n_quasistatic entries): the rotation loads (-Ge(qdot) w - Oe(q) w^2, a spinning body's
   /// centrifugal deformation), where Ke couples them to the integrated modes (a MacNeal SID's
-  /// boundary) -K_hd q_d, and gravity (world, m/s^2) where the frame's origin is held (x, y
-  /// and z locked): Ct_h A^T g. Elsewhere gravity and the frame's acceleration are left out
-  /// together: quasistatic modes carry no inertia, so no inertia relief either, and the two
-  /// cancel on a free body (whose free-free normal modes have Ct = 0 besides).
+  /// boundary) -K_hd q_d, and gravity (world, m/s^2) where the frame is held (all six DOFs
+  /// locked): Ct_h A^T g. Elsewhere gravity and the frame's accelerations are left out
+  /// together: quasistatic modes carry no inertia, so no inertia relief either; on a free body
+  /// the two cancel (and its free-free normal modes have Ct = 0 besides).
   void add_quasistatic_loads(const double* y, const Eigen::Vector3d& gravity, Eigen::Ref<Eigen::VectorXd> out) const;
 
   // --- energies ---
@@ -145,7 +145,7 @@ private:
   BodySpec spec_;
   ModalMatrix stiffness_, damping_;  ///< Ke, De
   Eigen::MatrixXd quasistatic_coupling_;  ///< Ke's block (quasistatic rows, integrated columns) if not zero
-  Eigen::MatrixXd held_gravity_rows_;     ///< Ct's quasistatic rows (zeroth order) if the frame's origin is held and they are not zero
+  Eigen::MatrixXd held_gravity_rows_;     ///< Ct's quasistatic rows (zeroth order) if the frame is held and they are not zero
   std::array<bool, 6> locked_{};  ///< x y z rx ry rz (body-frame accelerations)
   bool rotates_ = true;           ///< false if all rotations are locked: rotational terms vanish
   Eigen::Index offset_ = 0;

@@ -35,7 +35,7 @@ public:
   static constexpr int kMaxRemodels = 8;
 
   /// Assigns every body with quasistatic modes its block of the stacked vector z; `gravity`
-  /// (world, m/s^2) loads the modes of bodies whose frame origin is held.
+  /// (world, m/s^2) loads the modes of bodies whose frame is held.
   QuasistaticModes(const std::vector<std::unique_ptr<FloatingBody>>& bodies, const std::vector<SurfaceContact>& contacts,
                    const Eigen::Vector3d& gravity);
 
