@@ -45,6 +45,7 @@ void Leapfrog::step(double& t, double dt) {
   // kick: v(n + 1) = v(n + 1/2) + dt/2 a(n + 1)
   for (const Eigen::Index i : velocities_) y_(i) += 0.5 * dt * ydot_(i);
   y_(last) += 0.5 * dt * (dissipation_before + ydot_(last));
+  system_.keep_static_solution(y_.data());
   ++steps_;
   // contact onset and release within the step, with the static solve of the rhs at these
   // positions (the kick since changed only velocities)

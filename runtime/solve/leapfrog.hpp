@@ -5,7 +5,9 @@
 // a body that does not rotate this is the symplectic Stoermer-Verlet method: energy stays
 // bounded (no drift) for steps below 2 / omega_max. Velocity-dependent loads (gyroscopic,
 // Coriolis, damping, friction) are taken at the half-step velocity: explicit, first order in
-// them. Contact onset and release are found at the step they happen in (no root refinement).
+// them. So are those of the static sub-problems: the solution of the step's right-hand side
+// stands for the step's end (its gaps and output), which differs only by the closing kick.
+// Contact onset and release are found at the step they happen in (no root refinement).
 #pragma once
 #include "solve/multibody_system.hpp"
 

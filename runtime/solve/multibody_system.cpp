@@ -155,6 +155,10 @@ void MultibodySystem::update_quasistatic(const double* y) const {
   solved_valid_ = true;
 }
 
+void MultibodySystem::keep_static_solution(const double* y) const {
+  if (solved_valid_) solved_y_ = Eigen::Map<const Eigen::VectorXd>(y, size_);
+}
+
 void MultibodySystem::initial_state(double* y) const {
   for (const auto& b : bodies_) b->initial_state(y);
   y[size_ - 1] = 0;

@@ -54,6 +54,11 @@ public:
   void rearm_touches(const double* y) const;
   /// Contact k waits for its next touch (its last impact, if any, is over: opened and apart).
   bool touch_armed(std::size_t k) const { return touch_state_[k] == TouchState::Armed; }
+  /// y differs from the state of the last right-hand side in velocities only (the leapfrog's
+  /// closing kick): the static solution of that evaluation is kept as the one at y, as the
+  /// scheme takes velocity-dependent loads at the half-step velocity (Leapfrog). The step's
+  /// gaps and output then read the solution its accelerations came from, without a second solve.
+  void keep_static_solution(const double* y) const;
   /// Contact states at y (for output); also brings the quasistatic modes up to date for y.
   std::vector<ContactState> contact_states(const double* y) const;
   /// Energies at y, given `states` = contact_states(y) (evaluated once for both); the Hertz
