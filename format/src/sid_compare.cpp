@@ -248,6 +248,7 @@ void compare_parts(const Sid& a, const Sid& b, const MatrixXd& Q, const Scales& 
     cmp.values(p + "/normal", ca.normal, cb.normal, 1.0);
     cmp.values(p + "/weight", ca.weight, cb.weight, L * L);
     cmp.values(p + "/Psi", ca.Psi, cols_modal(cb.Psi, Q), inv_sm);
+    cmp.values(p + "/in_interface", ca.in_interface.cast<double>(), cb.in_interface.cast<double>(), 0.0);
   }
   for (std::size_t i = 0; i < a.master_patches.size(); ++i) {
     const MasterPatch &ma = a.master_patches[i], &mb = b.master_patches[i];

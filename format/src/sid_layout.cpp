@@ -128,7 +128,7 @@ const std::vector<const Item*>& items() {
         &master::list, &master::group, &master::degrees, &master::knots, &master::weights, &master::control_points,
         &master::Phi,
         &contact::list, &contact::group, &contact::patch, &contact::side, &contact::master_patch, &contact::parameter, &contact::element,
-        &contact::position, &contact::normal, &contact::weight, &contact::Psi,
+        &contact::position, &contact::normal, &contact::weight, &contact::Psi, &contact::in_interface,
         &stress::list, &stress::group, &stress::patch, &stress::components, &stress::position, &stress::S,
         &patches::list, &patches::group, &patches::youngs_modulus, &patches::poisson_ratio, &patches::density,
         &patches::interfaces,

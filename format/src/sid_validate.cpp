@@ -259,6 +259,11 @@ void check_contact(const Checker& c, const Sid& sid) {
       c.require(std::abs(s.normal.row(g).norm() - 1.0) < 1e-8, contact::normal.at(s.name),
                 "not a unit vector at " + std::to_string(g));
     c.shape(contact::Psi, s.name, s.Psi, sizes);
+    if (s.in_interface.size() > 0) {
+      const std::string flags = contact::in_interface.at(s.name);
+      c.require(s.in_interface.size() == n, flags, "one entry per point expected");
+      c.require((s.in_interface.array() == 0 || s.in_interface.array() == 1).all(), flags, "entries must be 0 or 1");
+    }
     if (!s.master_patch.empty())
       c.require(find_master_patch(sid, s.master_patch) != nullptr, contact::group.at(s.name),
                 "names master patch '" + s.master_patch + "', which is not in " + master::list.at());

@@ -119,6 +119,7 @@ void write_contact(h5::Writer& w, const Sid& sid) {
     put(w, contact::normal, s.name, s.normal);
     put(w, contact::weight, s.name, s.weight);
     put(w, contact::Psi, s.name, s.Psi);
+    if (s.in_interface.size() > 0) put(w, contact::in_interface, s.name, s.in_interface);
   });
 }
 

@@ -133,7 +133,8 @@ void print_text(const Sid& sid, std::ostream& out) {
   for (const ContactSurface& c : sid.contact_surfaces)
     out << "contact       " << c.name << ": " << c.points() << " Gauss points on side '" << c.side << "'"
         << (c.patch.empty() ? "" : c.patch.find(' ') == std::string::npos ? " of patch " + c.patch : " of patches " + c.patch) << ", area "
-        << number_text(c.weight.sum()) << " m^2, master patch '" << c.master_patch << "'\n";
+        << number_text(c.weight.sum()) << " m^2, master patch '" << c.master_patch << "'"
+        << (c.in_interface.size() > 0 ? ", " + std::to_string(c.in_interface.sum()) + " points within the interface" : std::string()) << "\n";
   for (const MasterPatch& m : sid.master_patches) {
     out << "master patch  " << m.name << ": degrees";
     for (int d : m.degrees) out << " " << d;

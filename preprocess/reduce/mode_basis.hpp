@@ -17,6 +17,9 @@ struct ReducedBasis {
   std::string method;         ///< modal, craig-bampton, full, macneal
   std::string interface;      ///< description of the interface (Craig-Bampton) or massless boundary (MacNeal)
   int removed_rigid = 0;      ///< basis directions dropped as rigid-body content
+  /// Craig-Bampton: the free DOFs of its interface, whose constraint modes make the reduction
+  /// statically exact there (where contact may load the surface without stiffening it)
+  std::vector<int> interface_dofs;
   /// MacNeal: the last coordinates are the displacements of these free DOFs (the massless
   /// boundary, in order). The mass is carried by `inertial` (free DOFs x nq: the free-interface
   /// modes, zero columns for the boundary), so inertial^T M inertial = diag(I, 0) and

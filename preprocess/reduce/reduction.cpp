@@ -31,6 +31,7 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMat
     out.Phi = m.modes.rightCols(r.normal_modes);
   } else if (r.method == "craig-bampton") {
     out.Phi = craig_bampton_basis(K, M, r.interface_dofs, r.normal_modes, lambda_scale);
+    out.interface_dofs = r.interface_dofs;
   } else if (r.method == "full") {
     out.Phi = lowest_modes(K, M, int(K.rows()), lambda_scale).modes;
   } else {

@@ -62,6 +62,23 @@ Eigen::SparseMatrix<double> shape_rows_of(const BodyModel& body, const std::vect
   return N;
 }
 
+/// 1 for each point that only interface DOFs move: every free DOF in its rows of N is one of
+/// them (fixed DOFs do not move it). On a side only the side's control points support a point;
+/// the others' basis values there are round-off (a partition of unity: 1e-12 is relative).
+Eigen::VectorXi interface_coverage(const Eigen::SparseMatrix<double>& N, const DofMap& dofs, const std::vector<int>& interface_dofs) {
+  std::vector<char> in_interface(std::size_t(dofs.free_count()), 0);
+  for (const int f : interface_dofs) in_interface[std::size_t(f)] = 1;
+  const std::vector<int>& free = dofs.free_indices();
+  Eigen::VectorXi covered = Eigen::VectorXi::Ones(N.rows() / dofs.dim());
+  for (Eigen::Index dof = 0; dof < N.outerSize(); ++dof) {
+    const int f = free[std::size_t(dof)];
+    if (f < 0 || in_interface[std::size_t(f)]) continue;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(N, dof); it; ++it)
+      if (std::abs(it.value()) > 1e-12) covered(it.row() / dofs.dim()) = 0;
+  }
+  return covered;
+}
+
 }  // namespace
 
 format::ContactSurface contact_points(const BodyModel& body, const ContactSurfaceSpec& spec) {
@@ -72,10 +89,13 @@ Eigen::SparseMatrix<double> contact_shape_rows(const BodyModel& body, const Cont
   return shape_rows_of(body, selected_points(body, spec));
 }
 
-format::ContactSurface contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal) {
+format::ContactSurface contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal,
+                                       const std::vector<int>& interface_dofs) {
   const std::vector<BoundaryPoint> pts = selected_points(body, spec);  // once for both
   format::ContactSurface s = points_of(body, spec, pts);
-  s.Psi = shape_rows_of(body, pts) * Phi_nodal;
+  const Eigen::SparseMatrix<double> N = shape_rows_of(body, pts);
+  s.Psi = N * Phi_nodal;
+  if (!interface_dofs.empty()) s.in_interface = interface_coverage(N, body.dofs, interface_dofs);
   return s;
 }
 

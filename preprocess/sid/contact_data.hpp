@@ -17,7 +17,9 @@ format::ContactSurface contact_points(const BodyModel& body, const ContactSurfac
 /// N (npts*dim x nodal DOFs): displacement at each point from nodal displacements.
 Eigen::SparseMatrix<double> contact_shape_rows(const BodyModel& body, const ContactSurfaceSpec& spec);
 
-/// Complete contact surface: points and Psi = N Phi_nodal.
-format::ContactSurface contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal);
+/// Complete contact surface: points and Psi = N Phi_nodal; with a Craig-Bampton reduction's
+/// interface (its free DOFs) also which points it covers (ContactSurface::in_interface).
+format::ContactSurface contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal,
+                                       const std::vector<int>& interface_dofs = {});
 
 }  // namespace isosid::prep

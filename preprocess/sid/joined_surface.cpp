@@ -53,7 +53,8 @@ format::MasterPatch append(const format::MasterPatch& a, const format::MasterPat
 
 }  // namespace
 
-JoinedSurface joined_contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal) {
+JoinedSurface joined_contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal,
+                                     const std::vector<int>& interface_dofs) {
   const std::string field = "contact_surface " + spec.name + ".side";
   std::vector<std::pair<int, std::string>> parts{{spec.patch, spec.side}};
   parts.insert(parts.end(), spec.continued.begin(), spec.continued.end());
@@ -69,7 +70,7 @@ JoinedSurface joined_contact_surface(const BodyModel& body, const ContactSurface
     one.patch = patch;
     one.side = name;
     one.continued.clear();
-    surfaces.push_back(contact_surface(body, one, Phi_nodal));
+    surfaces.push_back(contact_surface(body, one, Phi_nodal, interface_dofs));
     masters.push_back(master_patch(body, spec.name, patch, *body.refined[std::size_t(patch)].side(name), Phi_nodal));
   }
   auto label = [&](std::size_t k) { return body.spec.patches[std::size_t(parts[k].first)].name + "." + parts[k].second; };
@@ -118,6 +119,10 @@ JoinedSurface joined_contact_surface(const BodyModel& body, const ContactSurface
     j.element.tail(n1) = s.element;
     j.weight.conservativeResize(n0 + n1);
     j.weight.tail(n1) = s.weight;
+    if (s.in_interface.size() > 0) {
+      j.in_interface.conservativeResize(n0 + n1);
+      j.in_interface.tail(n1) = s.in_interface;
+    }
     out.master = append(out.master, masters[k], chain, shift, dim);
     end += P.upper(d_chain) - P.lower(d_chain);
   }

@@ -93,10 +93,10 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
 
   for (const ContactSurfaceSpec& c : spec.contact_surfaces) {
     if (c.continued.empty()) {
-      sid.contact_surfaces.push_back(contact_surface(body, c, Phi));
+      sid.contact_surfaces.push_back(contact_surface(body, c, Phi, basis.interface_dofs));
       sid.master_patches.push_back(master_patch(body, c.name, c.patch, *body.refined[std::size_t(c.patch)].side(c.side), Phi));
     } else {  // over several patch sides
-      JoinedSurface joined = joined_contact_surface(body, c, Phi);
+      JoinedSurface joined = joined_contact_surface(body, c, Phi, basis.interface_dofs);
       sid.contact_surfaces.push_back(std::move(joined.surface));
       sid.master_patches.push_back(std::move(joined.master));
     }

@@ -67,6 +67,7 @@ TEST_CASE("a written SID holds exactly the items of the layout table", "[format]
   // as a body of two patches: materials, interfaces, and the patch of each surface and line
   sid.patches = {{"a", sid.material, {"xi1 b.xi0"}}, {"b", {7e10, 0.33, 2700}, {"xi0 a.xi1"}}};
   sid.contact_surfaces[0].patch = "a";
+  sid.contact_surfaces[0].in_interface = Eigen::Vector4i(1, 1, 1, 0);  // as reduced by Craig-Bampton
   sid.stress_recovery[0].patch = "b";
   sid.refmod.section_translation = Eigen::MatrixXd::Constant(sid.nq(), 3, 0.25);  // a beam's modes' shares
   sid.refmod.long_axis = Eigen::Vector3d::UnitX();
@@ -83,6 +84,7 @@ TEST_CASE("a written SID holds exactly the items of the layout table", "[format]
   CHECK(back.refmod.section_translation == sid.refmod.section_translation);
   CHECK(back.refmod.long_axis == sid.refmod.long_axis);
   CHECK(back.contact_surfaces[0].patch == "a");
+  CHECK(back.contact_surfaces[0].in_interface == sid.contact_surfaces[0].in_interface);
   CHECK(back.stress_recovery[0].patch == "b");
 
   const std::set<std::string> objects = hdf5_objects(file);

@@ -21,7 +21,8 @@ void require_identical(const Taylor& a, const Taylor& b) {
 
 TEST_CASE("SID write/read round trip is bit-exact", "[format][io]") {
   const test::ScratchDir dir("roundtrip");
-  const Sid a = test::lumped_sid(test::random_lumped_body(12, 5, 7));
+  Sid a = test::lumped_sid(test::random_lumped_body(12, 5, 7));
+  a.contact_surfaces[0].in_interface = Eigen::Vector4i(1, 1, 0, 1);  // (a Craig-Bampton SID's)
   format::write_sid(a, dir.path("body.sid.h5"));
   const Sid b = format::read_sid(dir.path("body.sid.h5"));
 
@@ -60,6 +61,7 @@ TEST_CASE("SID write/read round trip is bit-exact", "[format][io]") {
   CHECK(cb.normal == ca.normal);
   CHECK(cb.weight == ca.weight);
   CHECK(cb.Psi == ca.Psi);
+  CHECK(cb.in_interface == ca.in_interface);
 
   REQUIRE(b.master_patches.size() == 1);
   CHECK(b.master_patches[0].degrees == a.master_patches[0].degrees);

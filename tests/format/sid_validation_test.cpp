@@ -164,6 +164,12 @@ TEST_CASE("non-positive mass and other physics checks are refused before writing
     s.contact_surfaces[0].element(1) = 1 << 30;
     CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face/element") && Contains("beyond the body's 8 elements"));
   }
+  SECTION("interface flags that are not 0 or 1, or not one per point") {
+    s.contact_surfaces[0].in_interface = Eigen::Vector4i(1, 0, 2, 1);
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face/in_interface") && Contains("must be 0 or 1"));
+    s.contact_surfaces[0].in_interface = Eigen::Vector3i(1, 0, 1);
+    CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face/in_interface") && Contains("one entry per point"));
+  }
   SECTION("contact point outside its side's parameter range") {
     s.contact_surfaces[0].parameter(2, 0) = 1.7;  // the side spans xi in [0, 1]
     CHECK_THROWS_WITH(format::write_sid(s, file), Contains("/contact/face/parameter") && Contains("point 2: xi = 1.7") &&

@@ -70,6 +70,10 @@ struct ContactSurface {
   Eigen::MatrixXd normal;      ///< npts x dim, outward unit normal
   Eigen::VectorXd weight;      ///< npts, quadrature weight: area (2*pi*r*length, thickness*length), m^2
   Eigen::MatrixXd Psi;         ///< (npts*dim) x nq, row g*dim+a: displacement a of point g per q
+  /// Craig-Bampton SIDs: 1 where the point moves with interface control points only, so that
+  /// the reduction holds its static flexibility; 0 where the normal modes alone move it (a
+  /// load there meets a stiff surface). Empty for other reductions.
+  Eigen::VectorXi in_interface;
   Eigen::Index points() const { return weight.size(); }
 };
 

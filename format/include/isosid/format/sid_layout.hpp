@@ -193,6 +193,10 @@ inline constexpr Item weight{"/contact/<name>/weight", {}, Kind::Float64, vector
                              Presence::Required, "quadrature weight incl. 2πr or thickness, > 0"};
 inline constexpr Item Psi{"/contact/<name>/Psi", {}, Kind::Float64, matrix({1, Size::Points, Size::Dim}, kNq), "m/[q]",
                           Presence::Required, "reduced shape rows Ψ = N Φ, row g·dim + a"};
+inline constexpr Item in_interface{"/contact/<name>/in_interface", {}, Kind::Int32, vector_of({1, Size::Points}), "",
+                                   Presence::Optional,
+                                   "Craig-Bampton: 1 where the point moves with interface control points only (the reduction "
+                                   "holds its static flexibility), 0 where only normal modes move it"};
 }  // namespace contact
 
 namespace stress {
