@@ -144,7 +144,7 @@ json join_phase_summaries(const std::vector<json>& phases, const std::string& jo
     json start = nullptr, end = nullptr;
     double peak = 0, impulse = 0, penetration = 0;
     long long intervals = 0;
-    json touches = json::array(), at_peak = 0, edge = nullptr;
+    json touches = json::array(), at_peak = 0, edge = nullptr, interface_left = nullptr;
     const json* loudest = &last["contacts"][k];  // the phase of the largest force: its penalty and estimate
     for (std::size_t i = 0; i < phases.size(); ++i) {
       const json& pc = phases[i]["contacts"][k];
@@ -158,6 +158,7 @@ json join_phase_summaries(const std::vector<json>& phases, const std::string& jo
       if (i > 0 && !pc["start_s"].is_null() && pc["start_s"] == phases[i - 1]["end_time_s"]) --intervals;
       for (const json& t : pc["touches"]) touches.push_back(t);
       if (edge.is_null()) edge = pc["edge_reached_s"];
+      if (interface_left.is_null() && pc.contains("interface_left_s")) interface_left = pc["interface_left_s"];
     }
     // a release before the last onset leaves the contact open at the end
     if (!end.is_null() && !last["contacts"][k]["start_s"].is_null() && last["contacts"][k]["end_s"].is_null()) end = nullptr;
@@ -171,6 +172,7 @@ json join_phase_summaries(const std::vector<json>& phases, const std::string& jo
     c["impulse_ns"] = impulse;
     c["max_penetration_m"] = penetration;
     c["edge_reached_s"] = edge;
+    c["interface_left_s"] = interface_left;
     for (const char* key : {"penalty_n_m3", "penalty_source", "hertz_estimate"})
       if (loudest->contains(key)) c[key] = (*loudest)[key];
     c.erase("impact_modes");  // a report of one phase's model: in that phase's summary

@@ -26,6 +26,7 @@ struct ContactState {
   double penalty_energy = 0;    ///< J, sum of 1/2 c_p g^2 w over active points
   double friction_power = 0;    ///< W dissipated by friction (>= 0)
   int edge_points = 0;          ///< active points in the surface's edge elements (surface_edge.hpp)
+  int outside_interface = 0;    ///< active points a Craig-Bampton interface does not cover (normal modes alone move them)
   bool from_static_solve = false;  ///< loaded from the static solve's points, without a pass over the surface
 };
 
@@ -141,6 +142,7 @@ private:
   Eigen::Vector3d bound_center_ = Eigen::Vector3d::Zero();  ///< slave bounding sphere (reference, body frame)
   double bound_radius_ = 0;
   std::vector<char> edge_;                       ///< per point: in an edge element of the surface
+  std::vector<char> outside_interface_;          ///< per point: beyond the SID's Craig-Bampton interface
   mutable std::vector<Eigen::Vector2d> hints_;  ///< warm starts of the target projections
   mutable std::vector<double> multiplier_, updated_;  ///< exact contact: lambda per point, Pa
   mutable TargetPoint point_;

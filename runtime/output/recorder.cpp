@@ -59,6 +59,7 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
   peak_force_.assign(nc, 0);
   points_at_peak_.assign(nc, 0);
   edge_reached_.assign(nc, -1);
+  interface_left_.assign(nc, -1);
   for (const HertzContact& h : system.hertz_contacts()) hertz_logs_.emplace_back(h);
   const std::size_t nj = system.joints().joints().size();
   joint_force_.resize(nj);
@@ -142,6 +143,7 @@ void Recorder::step(double t, const double* y) {
     last_force_[k] = f;
     max_penetration_[k] = std::max(max_penetration_[k], states[k].max_penetration);
     if (states[k].edge_points > 0 && edge_reached_[k] < 0) edge_reached_[k] = t;
+    if (states[k].outside_interface > 0 && interface_left_[k] < 0) interface_left_[k] = t;
   }
   const auto hertz = system_.hertz_states(y);
   for (std::size_t k = 0; k < hertz.size(); ++k) hertz_logs_[k].step(t, y, hertz[k]);
@@ -278,6 +280,14 @@ std::vector<std::string> Recorder::warnings() const {
                   c.body().name() + "' at t = " + common::number_text(edge_reached_[k]) +
                   " s: the surface beyond is not checked for contact, so forces may be cut off; widen its interval");
   }
+  for (std::size_t k = 0; k < interface_left_.size(); ++k) {
+    if (interface_left_[k] < 0) continue;
+    const SurfaceContact& c = system_.contacts()[k];
+    out.push_back("contact '" + c.name() + "' loaded points of surface '" + c.surface().name + "' of body '" + c.body().name() +
+                  "' beyond its Craig-Bampton interface at t = " + common::number_text(interface_left_[k]) +
+                  " s: only normal modes deform the surface there, so it presses like a rigid one and the forces come out too "
+                  "high; widen the interface (reduction.interface_points) over where the contact goes");
+  }
   return out;
 }
 
@@ -337,6 +347,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     c["peak_force_n"] = peak_force_[k];
     c["points_at_peak"] = points_at_peak_[k];  // Gauss points carrying load at the peak-force step
     c["edge_reached_s"] = edge_reached_[k] < 0 ? json(nullptr) : json(edge_reached_[k]);
+    c["interface_left_s"] = interface_left_[k] < 0 ? json(nullptr) : json(interface_left_[k]);
     if (const auto& e = system_.impact_estimates()[k])
       c["hertz_estimate"] = {{"approach_speed_m_s", e->approach_speed},
                              {e->line_contact ? "contact_half_width_m" : "contact_radius_m", e->contact_radius},

@@ -80,6 +80,7 @@ private:
   std::vector<double> peak_force_, impulse_, max_penetration_;
   std::vector<int> points_at_peak_;
   std::vector<double> edge_reached_;  ///< first step time with load in an edge element, or -1
+  std::vector<double> interface_left_;  ///< first step time with load beyond a Craig-Bampton interface, or -1
   std::vector<bool> active_;
   double last_step_t_ = 0;
   std::vector<double> last_force_;

@@ -315,6 +315,7 @@ TEST_CASE("scene A: sphere on sphere (Hertz) with the Craig-Bampton sphere", "[r
   CHECK(rel_error(s, "contact_time_s") < 0.02);
   CHECK(rel_error(s, "rebound_velocity_m_s") < 0.005);  // acceptance: rebound energy 0.5 %
   CHECK(s["contacts"][0]["edge_reached_s"].is_null());  // the contact stays inside its cap
+  CHECK(s["contacts"][0]["interface_left_s"].is_null());  // and inside the sphere's interface
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-5);
   // von Mises on the axis (seed eq. 34): Hertz peak 0.530 GPa (measured -1.0 %) at 0.49 a
   // below the surface (measured within one 10 um sample of the stress line)
@@ -389,6 +390,34 @@ TEST_CASE("a contact that outgrows its contact surface is reported", "[runtime][
   CHECK(contact["edge_reached_s"].get<double>() < 41.6e-6);
   REQUIRE(cut["warnings"].size() == 1);
   CHECK(cut["warnings"][0].get<std::string>().find("edge elements of surface 'contact'") != std::string::npos);
+}
+
+TEST_CASE("a contact that rolls beyond its Craig-Bampton interface is reported", "[runtime][contact]") {
+  // Scene C's disk spun at 1000 rad/s: its rim rolls about 15 mm while it touches. Its 26
+  // interface points span +-5.5 mm (the SID rebuilt for this scene's 1.1 mm contact radius);
+  // beyond them only normal modes deform the rim, which then presses like a rigid one. With 44
+  // points the interface spans the path (bench/stability's spin case).
+  const test::ScratchDir dir("interface-left");
+  const std::string model = test::model_text("disk_plane_strain.model.toml");
+  std::ofstream(dir.path("disk_plane_strain.model.toml")) << model;
+  std::ofstream(dir.path("wide.model.toml")) << replace(model, "interface_points = 26", "interface_points = 44");
+  std::string scene = test::model_text("cylinder_friction.scene.toml");
+  scene = replace(scene, "end_time = 1.0e-3", "end_time = 0.5e-3");
+  // 30 um up, turned back by the 0.3 rad it spins while falling: the interface's centre meets the plane
+  scene = replace(scene, "position = [0.0, 0.1000001, 0.0]", "position = [0.0, 0.10003, 0.0]\norientation = [0.0, 0.0, -0.3]\nelastic_start = \"steady\"");
+  scene = replace(scene, "angular_velocity = [0.0, 0.0, 6.283185307179586]", "angular_velocity = [0.0, 0.0, 1000.0]");
+  const json narrow = test::run_scene(dir, scene, 0);
+  const json& left = narrow["contacts"][0];
+  REQUIRE(left["interface_left_s"].is_number());
+  // as the contact begins, 5 mm before the interface's centre (measured at its first step)
+  CHECK(left["interface_left_s"].get<double>() < left["start_s"].get<double>() + 1e-6);
+  bool warned = false;
+  for (const json& w : narrow["warnings"]) warned = warned || w.get<std::string>().find("beyond its Craig-Bampton interface") != std::string::npos;
+  CHECK(warned);
+  const json wide = test::run_scene(dir, replace(replace(scene, "disk_plane_strain.model.toml", "wide.model.toml"), "disk_plane_strain.sid.h5", "wide.sid.h5"), 0);
+  CHECK(wide["contacts"][0]["interface_left_s"].is_null());
+  // the rigid rim's peaks (measured 2.57 MN against 0.46 MN)
+  CHECK(left["peak_force_n"].get<double>() > 3 * wide["contacts"][0]["peak_force_n"].get<double>());
 }
 
 TEST_CASE("scene A: the Craig-Bampton and the full modal sphere agree within 1 %", "[runtime][seed]") {
@@ -543,5 +572,7 @@ TEST_CASE("scene C: rotating disk with friction (momentum balance)", "[runtime][
     CHECK(disk["final_velocity"][0].get<double>() == Approx(-0.06).epsilon(0.02));
     CHECK(disk["final_angular_velocity"][2].get<double>() == Approx(spin - 1.2).epsilon(0.02 * 1.2 / spin));
     CHECK(spun["energy"]["max_rel_error"].get<double>() < 1e-5);
+    // the rim rolls 1.2 mm at 60 rad/s, within the interface's +-2.8 mm
+    CHECK(spun["contacts"][0]["interface_left_s"].is_null());
   }
 }
