@@ -18,8 +18,13 @@ QuasistaticJacobian::QuasistaticJacobian(const std::vector<Eigen::MatrixXd>& blo
     return;
   }
   dense_stiffness_ = Eigen::MatrixXd::Zero(n, n);
+  block_product_.resize(n);
   at = 0;
-  for (const Eigen::MatrixXd& K : blocks) dense_stiffness_.block(at, at, K.rows(), K.rows()) = K, at += K.rows();
+  for (const Eigen::MatrixXd& K : blocks) {
+    dense_stiffness_.block(at, at, K.rows(), K.rows()) = K;
+    if (K.rows() > 0) dense_blocks_.emplace_back(at, K.rows());
+    at += K.rows();
+  }
   // K_h does not change: inverted once, it serves every Woodbury solve (a massless boundary
   // without contact then costs a matrix-vector product per Newton step, not a factorization)
   const Eigen::LLT<Eigen::MatrixXd> llt(dense_stiffness_);
@@ -29,14 +34,19 @@ QuasistaticJacobian::QuasistaticJacobian(const std::vector<Eigen::MatrixXd>& blo
 }
 
 void QuasistaticJacobian::multiply(const Eigen::VectorXd& z, Eigen::VectorXd& out) const {
-  if (dense_stiffness_.size())
-    out.noalias() = dense_stiffness_ * z;
-  else
+  if (dense_stiffness_.size()) {
+    out.resize(z.size());
+    for (const auto& [at, nb] : dense_blocks_) out.segment(at, nb).noalias() = dense_stiffness_.block(at, at, nb, nb) * z.segment(at, nb);
+  } else {
     out = stiffness_.cwiseProduct(z);
+  }
 }
 
 double QuasistaticJacobian::product(const Eigen::VectorXd& z, const Eigen::VectorXd& w) const {
-  if (dense_stiffness_.size()) return z.dot(dense_stiffness_ * w);
+  if (dense_stiffness_.size()) {
+    multiply(w, block_product_);
+    return z.dot(block_product_);
+  }
   double sum = 0;
   for (Eigen::Index i = 0; i < z.size(); ++i) sum += z(i) * stiffness_(i) * w(i);
   return sum;
@@ -143,7 +153,8 @@ const QuasistaticJacobian::Factorization& QuasistaticJacobian::factorization(con
 
 void QuasistaticJacobian::solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   if (dense_stiffness_.size()) {
-    x.noalias() = dense_inverse_ * b;
+    x.resize(b.size());
+    for (const auto& [at, nb] : dense_blocks_) x.segment(at, nb).noalias() = dense_inverse_.block(at, at, nb, nb) * b.segment(at, nb);
   } else {
     x = b.cwiseQuotient(stiffness_);
   }
@@ -202,15 +213,19 @@ void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::Matr
   if (r == 0) return;
   auto scaled_U = f.scaled_U.leftCols(r);
   if (dense) {
-    Eigen::Index m = 0;
-    for (Eigen::Index i = 0; i < size(); ++i)
-      if (!U.row(i).isZero(0.0)) used_rows_[std::size_t(m++)] = i;
-    for (Eigen::Index k = 0; k < m; ++k) {
-      const Eigen::Index i = used_rows_[std::size_t(k)];
-      gathered_inverse_.col(k) = dense_inverse_.col(i);  // = row i: K^-1 is symmetric
-      gathered_U_.row(k).head(r) = U.row(i);
+    // per body block: its rows of K^-1 U from its columns of K^-1 where U has entries
+    for (const auto& [at, nb] : dense_blocks_) {
+      Eigen::Index m = 0;
+      for (Eigen::Index i = at; i < at + nb; ++i)
+        if (!U.row(i).isZero(0.0)) used_rows_[std::size_t(m++)] = i;
+      for (Eigen::Index k = 0; k < m; ++k) {
+        const Eigen::Index i = used_rows_[std::size_t(k)];
+        gathered_inverse_.col(k).head(nb) = dense_inverse_.col(i).segment(at, nb);  // = row i: K^-1 is symmetric
+        gathered_U_.row(k).head(r) = U.row(i);
+      }
+      if (m == 0) scaled_U.middleRows(at, nb).setZero();
+      else scaled_U.middleRows(at, nb).noalias() = gathered_inverse_.topLeftCorner(nb, m) * gathered_U_.topLeftCorner(m, r);
     }
-    scaled_U.noalias() = gathered_inverse_.leftCols(m) * gathered_U_.topLeftCorner(m, r);
   } else {
     scaled_U = U.array().colwise() / stiffness_.array();
   }

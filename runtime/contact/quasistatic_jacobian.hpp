@@ -78,6 +78,10 @@ private:
   mutable Eigen::MatrixXd root_weighted_V_;   ///< V D^1/2 (capacity columns), for the symmetric Jacobian
   mutable Eigen::MatrixXd weighted_V_;        ///< V D: U of weighted terms, for the factors that read U
   Eigen::MatrixXd dense_stiffness_;           ///< K_h if it is not diagonal
+  /// (offset, size) of each body's block of a dense K_h: its products and K^-1 U skip the
+  /// zeros between bodies (a sphere's and a beam's boundaries: half of the n^2)
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> dense_blocks_;
+  mutable Eigen::VectorXd block_product_;     ///< K w per block, for product()
   /// K_h^-1 if K_h is dense and positive definite (else empty: the Jacobian is then factored
   /// each time). Kept whole: Woodbury's K^-1 U then reads only the columns where U has
   /// entries, and a contact point moves few coordinates of a massless boundary (its control

@@ -72,6 +72,37 @@ TEST_CASE("QuasistaticJacobian solves K + U V^T as a dense solve does", "[runtim
   }
 }
 
+TEST_CASE("QuasistaticJacobian with two bodies' dense blocks works as with the whole matrix", "[runtime][unit]") {
+  // a sphere's and a beam's massless boundaries: K_h = diag(K_1, K_2), each block dense; the
+  // products and Woodbury's K^-1 U run per block, so terms with rows in one body, in the other
+  // and in both (a point and its target point) must all come out as the whole K's
+  const Eigen::Index n1 = 7, n2 = 5, n = n1 + n2;
+  const Eigen::MatrixXd K1 = spd(n1, 11), K2 = spd(n2, 12);
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+  K.topLeftCorner(n1, n1) = K1;
+  K.bottomRightCorner(n2, n2) = K2;
+  const run::QuasistaticJacobian J({K1, K2}, false);
+  std::srand(13);
+  const Eigen::VectorXd z = Eigen::VectorXd::Random(n), w = Eigen::VectorXd::Random(n);
+  Eigen::VectorXd Kz;
+  J.multiply(z, Kz);
+  CHECK((Kz - K * z).norm() < 1e-14 * (K * z).norm());
+  CHECK(J.product(z, w) == Approx(z.dot(K * w)).epsilon(1e-14));
+  // Woodbury (r <= n / 4) and the direct Jacobian (r > n / 4)
+  for (const Eigen::Index r : {1L, 2L, 3L, 8L}) {
+    Eigen::MatrixXd V = Eigen::MatrixXd::Zero(n, 8);
+    V.col(0).head(n1) = Eigen::VectorXd::Random(n1);  // a point of the first body
+    V.col(1).tail(n2) = Eigen::VectorXd::Random(n2);  // of the second
+    V.rightCols(6) = Eigen::MatrixXd::Random(n, 6);   // of both
+    V.row(2).setZero();                               // a coordinate no point moves
+    const Eigen::MatrixXd U = 3.0 * V + 0.2 * Eigen::MatrixXd::Random(n, 8).cwiseProduct((V.array() != 0).cast<double>().matrix());
+    const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+    INFO("rank " << r);
+    // the round-off of a condition number near 1e3, as above
+    CHECK(solve_error(run::QuasistaticJacobian({K1, K2}, false), K, U, V, r, b) < 1e-11);
+  }
+}
+
 TEST_CASE("QuasistaticJacobian reuses a kept factorization only for the same terms", "[runtime][unit]") {
   const Eigen::Index n = 8;
   const Eigen::VectorXd k = Eigen::VectorXd::LinSpaced(n, 2.0, 20.0);
