@@ -156,7 +156,9 @@ void MultibodySystem::update_quasistatic(const double* y) const {
 }
 
 void MultibodySystem::keep_static_solution(const double* y) const {
-  if (solved_valid_) solved_y_ = Eigen::Map<const Eigen::VectorXd>(y, size_);
+  // only a solution of the last right-hand side's own state (one answered from the cache may
+  // have left the modes at another state's)
+  if (rhs_valid_ && same_state(solved_valid_, solved_y_, rhs_y_.data(), size_)) solved_y_ = Eigen::Map<const Eigen::VectorXd>(y, size_);
 }
 
 void MultibodySystem::initial_state(double* y) const {
