@@ -109,7 +109,11 @@ void read_contact(const h5::Reader& r, Sid& sid) {
     s.normal = r.matrix(contact::normal.at(s.name));
     s.weight = r.vector(contact::weight.at(s.name));
     s.Psi = r.matrix(contact::Psi.at(s.name));
-    if (r.exists(contact::in_interface.at(s.name))) s.in_interface = r.integers(contact::in_interface.at(s.name));
+    if (r.exists(contact::in_interface.at(s.name))) {
+      s.in_interface = r.integers(contact::in_interface.at(s.name));
+      // present but empty would read as absent, which the validator does not check
+      if (s.in_interface.size() != s.points()) r.fail(contact::in_interface.at(s.name), "one entry per point expected");
+    }
   });
 }
 

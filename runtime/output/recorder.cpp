@@ -286,7 +286,7 @@ std::vector<std::string> Recorder::warnings() const {
     out.push_back("contact '" + c.name() + "' loaded points of surface '" + c.surface().name + "' of body '" + c.body().name() +
                   "' beyond its Craig-Bampton interface at t = " + common::number_text(interface_left_[k]) +
                   " s: only normal modes deform the surface there, so it presses like a rigid one and the forces come out too "
-                  "high; widen the interface (reduction.interface_points) over where the contact goes");
+                  "high; widen the interface (reduction.interface_points) or move its interface_center over where the contact goes");
   }
   return out;
 }

@@ -5,11 +5,21 @@
 #include "isosid/format/sid_io.hpp"
 #include "scene/prep_process.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
 namespace isosid::run {
 namespace fs = std::filesystem;
+
+namespace {
+/// A Craig-Bampton SID from before isosid-prep marked the contact points its interface covers
+/// (/contact/<name>/in_interface): without them a contact beyond the interface goes unreported.
+bool lacks_interface_coverage(const format::Sid& sid) {
+  if (sid.refmod.reduction_method != "craig-bampton") return false;
+  return std::any_of(sid.contact_surfaces.begin(), sid.contact_surfaces.end(), [](const format::ContactSurface& c) { return c.in_interface.size() == 0; });
+}
+}  // namespace
 
 format::ReadOptions sid_read_options(const Scene& scene) {
   format::ReadOptions options;
@@ -27,6 +37,10 @@ std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
       if (stale) run_prep(b.model_file, b.sid_file, {}, quiet, "");
     }
     sids.push_back(format::read_sid(b.sid_file, sid_read_options(scene)));
+    if (!b.model_file.empty() && !b.adaptive && lacks_interface_coverage(sids.back())) {
+      run_prep(b.model_file, b.sid_file, {}, quiet, " (the SID there does not record which contact points its interface covers)");
+      sids.back() = format::read_sid(b.sid_file, sid_read_options(scene));
+    }
   }
   return sids;
 }

@@ -238,3 +238,21 @@ TEST_CASE("isosid-info exits 2 with one line for every damaged SID", "[format][v
     CHECK(r.err.find(file) != std::string::npos);
   }
 }
+
+TEST_CASE("interface flags present but empty, or other than 0 and 1, are refused", "[format][validation]") {
+  // an empty dataset would read as absent (as in a SID of another reduction), which the
+  // validator lets pass: the reader refuses it
+  using Catch::Matchers::Contains;
+  const test::ScratchDir dir("interface-flags");
+  const std::string file = dir.path("flags.sid.h5");
+  format::Sid sid = test::lumped_sid(test::random_lumped_body(10, 4, 11));
+  sid.contact_surfaces[0].in_interface = Eigen::Vector4i(1, 1, 0, 0);
+  const std::vector<std::pair<Eigen::VectorXi, std::string>> cases{{Eigen::VectorXi(0), "one entry per point expected"},
+                                                                    {Eigen::Vector4i(1, 2, 0, 0), "entries must be 0 or 1"}};
+  for (const auto& [flags, problem] : cases) {
+    INFO(problem);
+    format::write_sid(sid, file);
+    test::replace_integers(file, "/contact/face/in_interface", flags);
+    CHECK_THROWS_WITH(format::read_sid(file), Contains("/contact/face/in_interface") && Contains(problem));
+  }
+}

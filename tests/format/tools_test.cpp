@@ -15,7 +15,8 @@ using Catch::Matchers::Contains;
 
 TEST_CASE("isosid-info --json reports mass, centre of mass, inertia, nq and frequencies", "[format][tools]") {
   const test::ScratchDir dir("info");
-  const auto sid = test::lumped_sid(test::random_lumped_body(12, 5, 4));
+  auto sid = test::lumped_sid(test::random_lumped_body(12, 5, 4));
+  sid.contact_surfaces[0].in_interface = Eigen::Vector4i(1, 1, 1, 0);  // as a Craig-Bampton SID marks them
   format::write_sid(sid, dir.path("a.sid.h5"));
   const auto r = test::run_program(std::string(ISOSID_INFO_EXE) + " --json " + dir.path("a.sid.h5"));
   REQUIRE(r.exit_status == 0);
@@ -27,12 +28,13 @@ TEST_CASE("isosid-info --json reports mass, centre of mass, inertia, nq and freq
   CHECK(j["nq"] == 5);
   CHECK(j["frequencies_hz"].size() == 5);
   CHECK(j["contact_surfaces"][0]["points"] == 4);
+  CHECK(j["contact_surfaces"][0]["points_in_interface"] == 3);
   CHECK(j["nodes"][0]["name"] == "tip");
   CHECK(j["provenance"]["timings_s"]["eigen"].get<double>() == 1.25);
 
   const auto text = test::run_program(std::string(ISOSID_INFO_EXE) + " " + dir.path("a.sid.h5"));
   CHECK(text.exit_status == 0);
-  CHECK_THAT(text.out, Contains("mass") && Contains("contact       face: 4 Gauss points"));
+  CHECK_THAT(text.out, Contains("mass") && Contains("contact       face: 4 Gauss points") && Contains("3 points within the interface"));
 }
 
 TEST_CASE("the tools exit 2 with one line on bad input", "[format][tools]") {

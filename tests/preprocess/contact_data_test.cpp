@@ -177,6 +177,9 @@ interface_center = [0.5]
       ++covered;
       CHECK(std::abs(reduced - full) < 1e-7 * full);
     } else {
+      // not "stiffer everywhere": beside the interface a point whose one outside control point
+      // has a small basis value there keeps all but 1e-7 of the flexibility (the mark is the
+      // guarantee, not the measure)
       stiffest_beyond = std::min(stiffest_beyond, reduced / full);
     }
   }
