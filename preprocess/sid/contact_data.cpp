@@ -90,12 +90,12 @@ Eigen::SparseMatrix<double> contact_shape_rows(const BodyModel& body, const Cont
 }
 
 format::ContactSurface contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal,
-                                       const std::vector<int>& interface_dofs) {
+                                       const std::vector<int>* interface_dofs) {
   const std::vector<BoundaryPoint> pts = selected_points(body, spec);  // once for both
   format::ContactSurface s = points_of(body, spec, pts);
   const Eigen::SparseMatrix<double> N = shape_rows_of(body, pts);
   s.Psi = N * Phi_nodal;
-  if (!interface_dofs.empty()) s.in_interface = interface_coverage(N, body.dofs, interface_dofs);
+  if (interface_dofs) s.in_interface = interface_coverage(N, body.dofs, *interface_dofs);
   return s;
 }
 

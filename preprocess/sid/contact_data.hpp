@@ -18,8 +18,8 @@ format::ContactSurface contact_points(const BodyModel& body, const ContactSurfac
 Eigen::SparseMatrix<double> contact_shape_rows(const BodyModel& body, const ContactSurfaceSpec& spec);
 
 /// Complete contact surface: points and Psi = N Phi_nodal; with a Craig-Bampton reduction's
-/// interface (its free DOFs) also which points it covers (ContactSurface::in_interface).
+/// interface (its free DOFs, possibly none) also which points it covers (ContactSurface::in_interface).
 format::ContactSurface contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal,
-                                       const std::vector<int>& interface_dofs = {});
+                                       const std::vector<int>* interface_dofs = nullptr);
 
 }  // namespace isosid::prep

@@ -54,7 +54,7 @@ format::MasterPatch append(const format::MasterPatch& a, const format::MasterPat
 }  // namespace
 
 JoinedSurface joined_contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal,
-                                     const std::vector<int>& interface_dofs) {
+                                     const std::vector<int>* interface_dofs) {
   const std::string field = "contact_surface " + spec.name + ".side";
   std::vector<std::pair<int, std::string>> parts{{spec.patch, spec.side}};
   parts.insert(parts.end(), spec.continued.begin(), spec.continued.end());

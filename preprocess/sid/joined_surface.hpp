@@ -18,6 +18,6 @@ struct JoinedSurface {
 /// The surface `spec` over spec.patch/spec.side and spec.continued; InputError(model file) if
 /// the sides do not continue each other. interface_dofs: as for contact_surface.
 JoinedSurface joined_contact_surface(const BodyModel& body, const ContactSurfaceSpec& spec, const Eigen::MatrixXd& Phi_nodal,
-                                     const std::vector<int>& interface_dofs = {});
+                                     const std::vector<int>* interface_dofs = nullptr);
 
 }  // namespace isosid::prep

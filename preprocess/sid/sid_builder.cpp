@@ -91,12 +91,14 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   sid.damping = rayleigh_damping(spec.damping.kappa, f1, std::max(f2, f1));
   sid.De.M0 = sid.damping.alpha1 * sid.Me.M0 + sid.damping.alpha2 * sid.Ke.M0;
 
+  // a Craig-Bampton SID marks its points always (the runtime rebuilds one without the marks)
+  const std::vector<int>* interface = basis.method == "craig-bampton" ? &basis.interface_dofs : nullptr;
   for (const ContactSurfaceSpec& c : spec.contact_surfaces) {
     if (c.continued.empty()) {
-      sid.contact_surfaces.push_back(contact_surface(body, c, Phi, basis.interface_dofs));
+      sid.contact_surfaces.push_back(contact_surface(body, c, Phi, interface));
       sid.master_patches.push_back(master_patch(body, c.name, c.patch, *body.refined[std::size_t(c.patch)].side(c.side), Phi));
     } else {  // over several patch sides
-      JoinedSurface joined = joined_contact_surface(body, c, Phi, basis.interface_dofs);
+      JoinedSurface joined = joined_contact_surface(body, c, Phi, interface);
       sid.contact_surfaces.push_back(std::move(joined.surface));
       sid.master_patches.push_back(std::move(joined.master));
     }
