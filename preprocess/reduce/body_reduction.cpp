@@ -46,6 +46,10 @@ std::vector<int> interface_dofs(const BodyModel& body, std::string& description)
   for (std::size_t k = 0; k < count; ++k)
     for (int a = 0; a < body.dofs.dim(); ++a)
       if (const int i = body.dofs.free_index(ranked[k].second, a); i >= 0) dofs.push_back(i);
+  if (dofs.empty())  // a model-file problem, found before the reduction would fail on it
+    throw format::InputError(body.spec.file, "reduction.interface_points",
+                             "the " + std::to_string(count) + " control points of '" + surface->name +
+                                 "' nearest the interface centre are all held by [boundary]: no interface DOF is left (move or widen the interface)");
   std::sort(dofs.begin(), dofs.end());
   description = std::to_string(count) + " control points of '" + surface->name + "' nearest to (" +
                 std::to_string(centre(0)) + ", " + std::to_string(centre(1)) + (centre.size() > 2 ? ", " + std::to_string(centre(2)) : "") +

@@ -394,6 +394,9 @@ TEST_CASE("reduction settings are validated", "[model][sid]") {
            {"[reduction]\nmethod = \"craig-bampton\"\nnormal_modes = 3\ninterface_surface = \"nope\"\ninterface_points = 2\ninterface_center = [0.5]\n",
             "reduction.interface_surface: no contact_surface named 'nope'"},
            {"[reduction]\nmethod = \"modal\"\ninterface_points = 2\n", "reduction.interface_points: only used by method"},
+           // an interface on a clamped side has no DOF left (it was a failed computation, exit 1)
+           {"[boundary]\nclamped = [\"top\"]\n[reduction]\nmethod = \"craig-bampton\"\nnormal_modes = 3\ninterface_surface = \"contact\"\ninterface_points = 2\ninterface_center = [0.5]\n",
+            "reduction.interface_points: the 2 control points of 'contact' nearest the interface centre are all held by [boundary]"},
            {"[reduction]\nmethod = \"macneal\"\nnormal_modes = 3\nboundary_surface = \"nope\"\n",
             "reduction.boundary_surface: no contact_surface named 'nope'"},
            {"[reduction]\nmethod = \"macneal\"\nnormal_modes = 3\n", "reduction.boundary_surface: missing"},
