@@ -60,12 +60,10 @@ json describe(const Sid& sid) {
   j["nodes"] = json::array();
   for (const Node& n : sid.nodes) j["nodes"].push_back({{"name", n.name}, {"position", vector_json(n.origin.M0.col(0))}});
   j["contact_surfaces"] = json::array();
-  for (const ContactSurface& c : sid.contact_surfaces) {
+  for (const ContactSurface& c : sid.contact_surfaces)  // points_in_interface: Craig-Bampton SIDs only (else null)
     j["contact_surfaces"].push_back({{"name", c.name}, {"patch", c.patch}, {"side", c.side}, {"points", c.points()},
-                                     {"master_patch", c.master_patch}, {"area_m2", c.weight.sum()}});
-    // Craig-Bampton SIDs: the points their interface covers (null for other reductions)
-    j["contact_surfaces"].back()["points_in_interface"] = c.in_interface.size() > 0 ? json(c.in_interface.sum()) : json(nullptr);
-  }
+                                     {"master_patch", c.master_patch}, {"area_m2", c.weight.sum()},
+                                     {"points_in_interface", c.in_interface.size() > 0 ? json(c.in_interface.sum()) : json(nullptr)}});
   j["patches"] = json::array();
   for (const PatchInfo& p : sid.patches)
     j["patches"].push_back({{"name", p.name}, {"youngs_modulus_pa", p.material.youngs_modulus},

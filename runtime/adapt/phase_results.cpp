@@ -158,7 +158,7 @@ json join_phase_summaries(const std::vector<json>& phases, const std::string& jo
       if (i > 0 && !pc["start_s"].is_null() && pc["start_s"] == phases[i - 1]["end_time_s"]) --intervals;
       for (const json& t : pc["touches"]) touches.push_back(t);
       if (edge.is_null()) edge = pc["edge_reached_s"];
-      if (interface_left.is_null() && pc.contains("interface_left_s")) interface_left = pc["interface_left_s"];
+      if (interface_left.is_null()) interface_left = pc["interface_left_s"];
     }
     // a release before the last onset leaves the contact open at the end
     if (!end.is_null() && !last["contacts"][k]["start_s"].is_null() && last["contacts"][k]["end_s"].is_null()) end = nullptr;

@@ -33,10 +33,14 @@ QuasistaticJacobian::QuasistaticJacobian(const std::vector<Eigen::MatrixXd>& blo
   if (n) smallest_eigenvalue_ = std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense_stiffness_, Eigen::EigenvaluesOnly).eigenvalues()(0));
 }
 
+void QuasistaticJacobian::multiply_blocks(const Eigen::MatrixXd& A, const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
+  out.resize(x.size());
+  for (const auto& [at, nb] : dense_blocks_) out.segment(at, nb).noalias() = A.block(at, at, nb, nb) * x.segment(at, nb);
+}
+
 void QuasistaticJacobian::multiply(const Eigen::VectorXd& z, Eigen::VectorXd& out) const {
   if (dense_stiffness_.size()) {
-    out.resize(z.size());
-    for (const auto& [at, nb] : dense_blocks_) out.segment(at, nb).noalias() = dense_stiffness_.block(at, at, nb, nb) * z.segment(at, nb);
+    multiply_blocks(dense_stiffness_, z, out);
   } else {
     out = stiffness_.cwiseProduct(z);
   }
@@ -153,8 +157,7 @@ const QuasistaticJacobian::Factorization& QuasistaticJacobian::factorization(con
 
 void QuasistaticJacobian::solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   if (dense_stiffness_.size()) {
-    x.resize(b.size());
-    for (const auto& [at, nb] : dense_blocks_) x.segment(at, nb).noalias() = dense_inverse_.block(at, at, nb, nb) * b.segment(at, nb);
+    multiply_blocks(dense_inverse_, b, x);
   } else {
     x = b.cwiseQuotient(stiffness_);
   }

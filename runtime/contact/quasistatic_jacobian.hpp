@@ -72,6 +72,8 @@ private:
   void reserve(Eigen::Index capacity) const;
   /// x = K^-1 b.
   void solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  /// out = A x for a matrix A with K_h's dense blocks (K_h itself or its inverse), block by block.
+  void multiply_blocks(const Eigen::MatrixXd& A, const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
 
   Eigen::VectorXd stiffness_;                 ///< diagonal of K_h
   Eigen::VectorXd inverse_root_stiffness_;    ///< its K^-1/2, for the symmetric capacitance

@@ -39,8 +39,6 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
     penalty_source_ = "derived: 1000 E*/h";
   }
   edge_ = edge_points(surface_, body.sid().analysis);
-  outside_interface_.assign(std::size_t(surface_.points()), 0);
-  for (Eigen::Index g = 0; g < surface_.in_interface.size(); ++g) outside_interface_[std::size_t(g)] = surface_.in_interface(g) == 0;
   shape_columns_ = surface_.Psi.transpose();
   const Eigen::Index nh = body.n_quasistatic();
   quasistatic_row_norms_.resize(surface_.points());
@@ -238,7 +236,7 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
     s.force += F;
     ++s.active_points;
     s.edge_points += edge_[std::size_t(g)];
-    s.outside_interface += outside_interface_[std::size_t(g)];
+    s.outside_interface += surface_.in_interface.size() > 0 && surface_.in_interface(g) == 0;  // Craig-Bampton SIDs mark them
     s.max_penetration = std::max(s.max_penetration, -t.gap);
     // the energy of the actual penetration (exact contact: none once the gaps have closed)
     if (t.gap < 0) s.penalty_energy += 0.5 * spec_.penalty * t.gap * t.gap * w;

@@ -142,7 +142,6 @@ private:
   Eigen::Vector3d bound_center_ = Eigen::Vector3d::Zero();  ///< slave bounding sphere (reference, body frame)
   double bound_radius_ = 0;
   std::vector<char> edge_;                       ///< per point: in an edge element of the surface
-  std::vector<char> outside_interface_;          ///< per point: beyond the SID's Craig-Bampton interface
   mutable std::vector<Eigen::Vector2d> hints_;  ///< warm starts of the target projections
   mutable std::vector<double> multiplier_, updated_;  ///< exact contact: lambda per point, Pa
   mutable TargetPoint point_;
