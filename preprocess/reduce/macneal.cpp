@@ -52,8 +52,13 @@ MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, co
   const Eigen::Index n = K.rows(), nb = Eigen::Index(boundary_dofs.size()), nr = rigid.cols();
   if (nb == 0) throw format::ComputationError("a massless-boundary reduction needs boundary DOFs");
   const ModalResult modes = lowest_modes(K, M, n_modes + int(nr), lambda_scale);
-  const Eigen::MatrixXd Phi = modes.modes.rightCols(n_modes);  // elastic, M-normalized
-  const Eigen::VectorXd omega2 = modes.eigenvalues.tail(n_modes);
+  // the elastic modes in normal form within their span: on finely graded bodies the Lanczos
+  // vectors of close or repeated frequencies leave M-orthogonality errors far above the
+  // runtime's 1e-8 check on Me = diag(I, 0)
+  Eigen::MatrixXd Phi = modes.modes.rightCols(n_modes);
+  remove_rigid_content(Phi, M, rigid);
+  const Eigen::VectorXd omega2 = orthonormalize(Phi, K, M);
+  if (Phi.cols() != n_modes) throw format::ComputationError("the retained modes are not independent of the rigid-body motions");
   Eigen::MatrixXd Eb = Eigen::MatrixXd::Zero(n, nb);
   for (Eigen::Index k = 0; k < nb; ++k) Eb(boundary_dofs[std::size_t(k)], k) = 1.0;
   const Eigen::MatrixXd Phi_b = Eb.transpose() * Phi;
