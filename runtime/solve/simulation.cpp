@@ -4,6 +4,7 @@
 #include "isosid/common/number_text.hpp"
 #include "isosid/format/error.hpp"
 #include "solve/event_chatter.hpp"
+#include "solve/run_checks.hpp"
 #include "solve/static_start.hpp"
 
 #include <chrono>
@@ -40,6 +41,9 @@ Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
       system_(scene_, std::move(sids)),
       integrator_(system_, scene_.simulation, initial_state(system_, scene_)) {
   report_steps();
+  refuse_vanishing_penalties(system_, scene_);
+  refuse_unstable_leapfrog_step(system_, scene_);
+  refuse_unsteady_spin(system_, scene_);
   if (!scene_.simulation.allow_initial_penetration) refuse_initial_penetration();
 }
 

@@ -1,11 +1,13 @@
 // isosid-run on the small golden SIDs: free flight against the closed-form motion, an
 // impact that must conserve energy and momentum, and bad scenes refused with one line.
+#include "isosid/common/sha256.hpp"
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene_runner.hpp"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -34,29 +36,7 @@ void check_agree(const json& reference, const json& other, std::initializer_list
 
 using test::replace;
 
-const std::string kImpact = R"(
-[simulation]
-dimension = "axisymmetric"
-end_time = 100e-6
-rtol = 1e-6
-atol = 1e-12
-output_interval = 1e-6
-[[flexible_body]]
-name = "sphere"
-sid = ")" + kGolden + R"(/sphere_small.sid.h5"
-position = [0.0, 0.0100001, 0.0]
-velocity = [0.0, -0.1, 0.0]
-high_modes = "quasistatic"
-[[fixed_plane]]
-name = "ground"
-normal = [0.0, 1.0, 0.0]
-[[contact]]
-name = "impact"
-body = "sphere"
-surface = "contact"
-target = "ground"
-penalty = 5e17
-)";
+const std::string kImpact = test::golden_impact_scene(kGolden);
 }  // namespace
 
 std::string beam_scene(const std::string& velocity, const std::string& angular_velocity, const std::string& gravity) {
@@ -171,6 +151,9 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
       {kImpact + "[output]\nparaview = true\nparaview_interval = 1e-7\n", "output.paraview_interval: is shorter than the output interval"},
       {replace(kImpact, "output_interval = 1e-6", "output_interval = 1e-6\nmax_step = 1e-300"),
        "simulation.max_step: end_time / max_step needs at least 1e+296 steps, more than max_steps = 10000000"},
+      // a penalty so soft that the bodies would pass through each other
+      {replace(kImpact, "penalty = 5e17", "penalty = 1e-300"), "contact[0].penalty: 1e-300 N/m^3 is below 1e-8 of the penalty derived"},
+      {replace(kImpact, "penalty = 5e17", "penalty = 1e8"), "contact[0].penalty: 1e+08 N/m^3 is below 1e-8 of the penalty derived"},
   };
   for (const Case& c : cases) {
     std::ofstream(dir.path("s.scene.toml")) << c.text;
@@ -371,6 +354,54 @@ TEST_CASE("keys dotted 40 000 deep are refused by both programs in one line", "[
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK(r.err.find("line 2: nests deeper than 64 levels") != std::string::npos);
   }
+}
+
+TEST_CASE("a SID built from another model than the scene's is refused, one from another version of it rebuilt", "[runtime][sid]") {
+  const test::ScratchDir dir("sid-provenance");
+  const auto copy = [&](const std::string& from, const std::string& to) {
+    std::filesystem::copy_file(from, dir.path(to), std::filesystem::copy_options::overwrite_existing);
+  };
+  copy(kGolden + "/sphere_small.model.toml", "other.model.toml");
+  copy(kGolden + "/sphere_small.sid.h5", "s.sid.h5");  // newer than the model: no rebuild by file times
+  const std::string scene = replace(kImpact, "sid = \"" + kGolden + "/sphere_small.sid.h5\"", "sid = \"s.sid.h5\"\nmodel = \"other.model.toml\"");
+  std::ofstream(dir.path("s.scene.toml")) << scene;
+  const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + dir.path("out"));
+  CHECK(r.exit_status == 2);
+  CHECK_THAT(r.err, Contains("flexible_body[0].sid: " + dir.path("s.sid.h5") + " was built from sphere_small.model.toml, not other.model.toml"));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  // the same model file name with other content (here: a finer grading): rebuilt from it
+  std::ifstream golden_model(kGolden + "/sphere_small.model.toml");
+  std::ofstream(dir.path("sphere_small.model.toml"))
+      << replace(std::string((std::istreambuf_iterator<char>(golden_model)), std::istreambuf_iterator<char>()), "smallest = 0.5e-3",
+                 "smallest = 0.4e-3");
+  std::filesystem::last_write_time(dir.path("sphere_small.model.toml"),
+                                   std::filesystem::last_write_time(dir.path("s.sid.h5")) - std::chrono::hours(1));
+  run_scene(dir, replace(scene, "other.model.toml", "sphere_small.model.toml"), 0);
+  const format::Sid rebuilt = format::read_sid(dir.path("s.sid.h5"));
+  CHECK(rebuilt.provenance.model_sha256 == common::sha256_file(dir.path("sphere_small.model.toml")));
+}
+
+TEST_CASE("a penalty that lets the bodies sink deeper than half their Hertz approach is reported", "[runtime][contact]") {
+  // 1e12 N/m^3 on the small sphere (its contact elements derive 1.6e17): above the floor of
+  // 1e-8 of that, but the penalty layer, not the sphere, takes the impact
+  const test::ScratchDir dir("soft-penalty");
+  const json soft = run_scene(dir, replace(replace(kImpact, "penalty = 5e17", "penalty = 1e12"), "end_time = 100e-6", "end_time = 400e-6"), 0);
+  const json& contact = soft["contacts"][0];
+  CHECK(contact["penalty_too_soft"] == true);
+  CHECK(contact["penetration_per_hertz_approach"].get<double>() > 0.5);
+  // (besides the golden sphere's coarse contact elements and narrow interface)
+  const auto blames_penalty = [](const json& summary) {
+    return std::count_if(summary["warnings"].begin(), summary["warnings"].end(), [](const json& w) {
+      return w.get<std::string>().find("times the Hertz approach of the bodies") != std::string::npos &&
+             w.get<std::string>().find("its penalty (1e+12 N/m^3, scene) is too soft") != std::string::npos;
+    });
+  };
+  CHECK(blames_penalty(soft) == 1);
+  // the scene's own penalty penetrates a fraction of a percent of the approach
+  const json stiff = run_scene(dir, kImpact, 0);
+  CHECK(stiff["contacts"][0]["penalty_too_soft"] == false);
+  CHECK(stiff["contacts"][0]["penetration_per_hertz_approach"].get<double>() < 0.01);
+  CHECK(blames_penalty(stiff) == 0);
 }
 
 TEST_CASE("a contact that outgrows its contact surface is reported", "[runtime][contact]") {
