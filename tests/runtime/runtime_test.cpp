@@ -218,7 +218,7 @@ TEST_CASE("ParaView frames that cannot be written fail the run with exit 1 and k
   CHECK(std::filesystem::exists(dir.path("out/paraview/scene.pvd")));  // the frames so far: none
 }
 
-TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run at a sample and keep its results so far", "[runtime][signals]") {
+TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run and keep its results so far", "[runtime][signals]") {
   const test::ScratchDir dir("signals");
   // the impact at 1 ns steps: about a second per 100 us simulated, far longer than the test waits
   std::ofstream(dir.path("s.scene.toml")) << replace(kImpact, "end_time = 100e-6", "end_time = 1e-3\nmax_step = 1e-9");
@@ -242,6 +242,45 @@ TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run at a sample and keep its result
     CHECK(time.size() > 1);
     CHECK(time(time.size() - 1) == Approx(reached));
   }
+}
+
+TEST_CASE("a signal stops a run within its steps, however far the next sample", "[runtime][signals]") {
+  const test::ScratchDir dir("signals-within");
+  // the sphere flies away from the plane for 1000 s at steps of 0.1 ms in one output interval:
+  // the integrator does not return for minutes
+  std::ofstream(dir.path("s.scene.toml")) << replace(replace(replace(kImpact, "end_time = 100e-6", "end_time = 1e3\nmax_step = 1e-4"),
+                                                             "output_interval = 1e-6", "output_interval = 1e3"),
+                                                     "velocity = [0.0, -0.1, 0.0]", "velocity = [0.0, 0.1, 0.0]");
+  const std::string out = dir.path("out");
+  const auto r = test::run_program("{ " + std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + out +
+                                   " & pid=$!; for i in $(seq 600); do [ -f " + out + "/summary.json ] && break; sleep 0.05; done; "
+                                   "sleep 1; kill -TERM $pid; start=$(date +%s%N); wait $pid; status=$?; "
+                                   "echo $(( ($(date +%s%N) - start) / 1000000 )); exit $status; }");
+  INFO(r.err);
+  CHECK(r.exit_status == 143);
+  // acted on at the next step: well within a second (the machine may be loaded)
+  CHECK(std::stol(r.out) < 1000);
+  const json s = json::parse(std::ifstream(out + "/summary.json"));
+  CHECK(s["status"] == "interrupted");
+  const Eigen::VectorXd time = format::h5::Reader(out + "/results.h5").vector("/time");
+  CHECK(time(time.size() - 1) == Approx(s["end_time_s"].get<double>()));
+}
+
+TEST_CASE("steps that collapse far below the contact time end the run as failed", "[runtime][contact]") {
+  // 0.1 mm into the plane at a penalty of 1e40 N/m^3: the steps fall to 1e-18 s and the run
+  // would crawl for hours toward max_steps
+  const test::ScratchDir dir("step-collapse");
+  const std::string scene = replace(replace(kImpact, "penalty = 5e17", "penalty = 1e40"), "position = [0.0, 0.0100001, 0.0]",
+                                    "position = [0.0, 0.0099, 0.0]");
+  std::ofstream(dir.path("s.scene.toml")) << replace(scene, "output_interval = 1e-6", "output_interval = 1e-6\nallow_initial_penetration = true");
+  const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + dir.path("out"));
+  INFO(r.err);
+  CHECK(r.exit_status == 1);
+  CHECK_THAT(r.err, Contains("the steps collapsed to") && Contains("a penalty far too stiff"));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  const json s = json::parse(std::ifstream(dir.path("out/summary.json")));
+  CHECK(s["status"] == "failed");
+  CHECK(std::filesystem::exists(dir.path("out/results.h5")));  // the results so far
 }
 
 TEST_CASE("a scene whose model isosid-prep refuses: exit 2 and isosid-prep's one line", "[runtime]") {
