@@ -105,6 +105,36 @@ long long TomlView::integer(const std::string& key) const {
 }
 long long TomlView::integer(const std::string& key, long long fallback) const { return has(key) ? integer(key) : fallback; }
 
+namespace {
+std::string range_text(long long lo, long long hi) { return "must lie in " + std::to_string(lo) + ".." + std::to_string(hi); }
+}  // namespace
+
+int TomlView::integer_in(const std::string& key, int lo, int hi) const {
+  const long long v = integer(key);
+  if (v < lo || v > hi) fail(key, range_text(lo, hi) + ", is " + std::to_string(v));
+  return int(v);
+}
+int TomlView::integer_in(const std::string& key, int lo, int hi, int fallback) const {
+  return has(key) ? integer_in(key, lo, hi) : fallback;
+}
+
+std::vector<int> TomlView::integers_in(const std::string& key, int lo, int hi) const {
+  std::vector<int> out;
+  const auto values = integers(key);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (values[i] < lo || values[i] > hi)
+      throw format::InputError(file_, field(key) + "[" + std::to_string(i) + "]", range_text(lo, hi) + ", is " + std::to_string(values[i]));
+    out.push_back(int(values[i]));
+  }
+  return out;
+}
+
+std::string TomlView::name(const std::string& key) const {
+  std::string s = string(key);
+  if (s.empty() || s.find('/') != std::string::npos) fail(key, "must be a non-empty name without '/'");
+  return s;
+}
+
 bool TomlView::holds_string(const std::string& key) const { return has(key) && node(key).is_string(); }
 
 std::string TomlView::string(const std::string& key) const {

@@ -84,6 +84,13 @@ NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& r, const
   for (std::size_t d = 0; d < r.subdivisions.size(); ++d) subdivide_uniformly(p, int(d), r.subdivisions[d]);
   // all graded requests are sized on the geometry before grading, then inserted together
   std::vector<std::vector<double>> knots(std::size_t(p.param_dim()));
+  // each request's knots counted before any is marched (a tiny smallest with a growth near 1
+  // would march hundreds of millions of them)
+  for (std::size_t i = 0; i < r.graded.size(); ++i) {
+    std::fill(added.begin(), added.end(), 0.0);
+    added[std::size_t(r.graded[i].direction)] = graded_knot_count_bound(p, r.graded[i]);
+    check_refined_size(p, added, file, "refinement.graded[" + std::to_string(i) + "]");
+  }
   for (const GradingRequest& g : r.graded) {
     const auto k = graded_knots(p, g);
     knots[std::size_t(g.direction)].insert(knots[std::size_t(g.direction)].end(), k.begin(), k.end());

@@ -39,10 +39,6 @@ BodyModel build_body(const ModelSpec& spec);
 /// refinement, reduced by modal truncation to the same number of normal modes.
 ModelSpec coarse_model_spec(const ModelSpec& spec);
 
-/// Most control points a refined patch may have (3D: 6 million DOFs, beyond any eigen solve
-/// this machine class takes in memory).
-constexpr double kMaxControlPoints = 2e6;
-
 /// Applies the refinement of a spec to a patch (elevation first, then knot insertion); a
 /// refinement beyond kMaxControlPoints is an InputError naming `file` and the field.
 NurbsPatch refine_patch(const NurbsPatch& coarse, const RefinementSpec& refinement, const std::string& file);

@@ -154,9 +154,7 @@ void read_mesh_model(const TomlView& top, ModelSpec& m, const format::Material& 
     red.method = r->string("method");
     if (red.method != "modal" && red.method != "craig-bampton")
       r->fail("method", "a meshed body is reduced by modal or craig-bampton reduction");
-    const long long n = r->integer("normal_modes", 10);
-    if (n < 1 || n > 100000) r->fail("normal_modes", "must be a positive count");
-    red.normal_modes = int(n);
+    red.normal_modes = r->integer_in("normal_modes", 1, 100000, 10);
     if (red.method != "craig-bampton")
       for (const char* key : {"interface_surface", "interface_points", "interface_point"})
         if (r->has(key)) r->fail(key, "only used by method = \"craig-bampton\"");
@@ -164,9 +162,7 @@ void read_mesh_model(const TomlView& top, ModelSpec& m, const format::Material& 
       red.interface_surface = r->string("interface_surface");
       if (std::none_of(m.contact_surfaces.begin(), m.contact_surfaces.end(), [&](const ContactSurfaceSpec& c) { return c.name == red.interface_surface; }))
         r->fail("interface_surface", "no contact_surface named '" + red.interface_surface + "'");
-      const long long k = r->integer("interface_points");
-      if (k < 1) r->fail("interface_points", "must be at least 1");
-      red.interface_points = int(k);
+      red.interface_points = r->integer_in("interface_points", 1, int(kMaxControlPoints));
       red.interface_point = spec.contact_point;
       if (r->has("interface_point")) {
         const std::vector<double> p = r->numbers("interface_point");

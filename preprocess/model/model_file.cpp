@@ -2,9 +2,11 @@
 #include "model/model_file.hpp"
 
 #include "geometry/mapping_check.hpp"
+#include "model/body_model.hpp"
 #include "model/mesh_model.hpp"
 #include "model/model_tables.hpp"
 #include "geometry/primitives.hpp"
+#include "isosid/common/number_text.hpp"
 #include "isosid/common/toml_fields.hpp"
 
 #include <algorithm>
@@ -27,7 +29,7 @@ int direction_index(const TomlView& t, const std::string& key, int param_dim) {
 
 NurbsPatch read_explicit_patch(const TomlView& g) {
   NurbsPatch p;
-  for (long long d : g.integers("degrees")) p.degrees.push_back(int(d));
+  p.degrees = g.integers_in("degrees", 1, kMaxDegree);
   for (const auto& k : g.number_rows("knots")) p.knots.push_back(Eigen::Map<const Eigen::VectorXd>(k.data(), Eigen::Index(k.size())));
   const auto cps = g.number_rows("control_points");
   const std::vector<double> w = g.numbers("weights");
@@ -111,6 +113,16 @@ double contact_sized(const TomlView& t, const std::string& key, const ContactRes
   return resolution->element_size();
 }
 
+/// What is wrong with a refined region `width` metres wide on `patch`, or "": wider than the
+/// patch it would refine all of it, the global refinement THB is there to avoid (a 1 km
+/// width on a 10 mm sphere asked for the whole sphere at the contact's element size).
+std::string width_problem(double width, const NurbsPatch& patch) {
+  const double size = patch_size(patch);
+  if (width <= size) return "";
+  return "a refined region " + common::number_text(width) + " m wide exceeds the patch it refines (" + common::number_text(size) +
+         " m across its control net): refine the whole patch with subdivisions instead";
+}
+
 /// [refinement.hierarchical]: a parameter box, or a point with a physical width; how fine
 /// (smallest element in metres, "contact", or elements across the box) and the level limits of seed 001.
 HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch, ContactResolutionSpec* resolution) {
@@ -137,6 +149,7 @@ HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch
       if (q.point[std::size_t(d)] < patch.lower(d) || q.point[std::size_t(d)] > patch.upper(d))
         h.fail("point", std::string("outside the parameter range of ") + direction_name(d));
     q.width = h.positive("width");
+    if (const std::string problem = width_problem(q.width, patch); !problem.empty()) h.fail("width", problem);
   }
   if (h.has("smallest") && h.has("elements_across")) h.fail("smallest", "give smallest or elements_across, not both");
   if (h.holds_string("smallest")) {
@@ -145,17 +158,13 @@ HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch
   } else if (h.has("smallest")) {
     q.smallest = h.positive("smallest");
   }
-  const long long across = h.integer("elements_across", 16);
-  if (across < 1 || across > 1000) h.fail("elements_across", "must lie in 1..1000");
-  q.elements_across = int(across);
-  const long long levels = h.integer("max_levels", 5), knots = h.integer("max_knots_per_level", 10);
-  // seed 001: more levels make every basis evaluation dearer, more knots per level approach global refinement
-  if (levels < 2 || levels > 5) h.fail("max_levels", "must lie in 2..5 (the coarse level included)");
-  if (knots < 1 || knots > 10) h.fail("max_knots_per_level", "must lie in 1..10");
-  q.limits = {int(levels), int(knots)};
-  const long long m = h.integer("admissibility", 2);
-  if (m < 2 || m > levels) h.fail("admissibility", "must lie in 2..max_levels (class m: at most m levels on an element)");
-  q.admissibility = int(m);
+  q.elements_across = h.integer_in("elements_across", 1, 1000, 16);
+  // seed 001: more levels make every basis evaluation dearer, more knots per level approach
+  // global refinement; max_levels counts the coarse level
+  const int levels = h.integer_in("max_levels", 2, 5, 5), knots = h.integer_in("max_knots_per_level", 1, 10, 10);
+  q.limits = {levels, knots};
+  // class m: at most m levels on an element
+  q.admissibility = h.integer_in("admissibility", 2, levels, 2);
   return q;
 }
 
@@ -164,20 +173,16 @@ RefinementSpec read_refinement(const TomlView& r, const NurbsPatch& patch, std::
   RefinementSpec spec;
   const int pd = patch.param_dim();
   if (r.has("degrees")) {
-    for (long long d : r.integers("degrees")) spec.degrees.push_back(int(d));
+    spec.degrees = r.integers_in("degrees", 1, kMaxDegree);
     if (int(spec.degrees.size()) != pd) r.fail("degrees", "needs " + std::to_string(pd) + " entries");
     for (int d = 0; d < pd; ++d) {
       if (spec.degrees[std::size_t(d)] < patch.degrees[std::size_t(d)])
         r.fail("degrees", "cannot lower the degree of " + std::string(direction_name(d)) + " below " +
                               std::to_string(patch.degrees[std::size_t(d)]));
-      if (spec.degrees[std::size_t(d)] > 8) r.fail("degrees", "degree above 8 is not supported");
     }
   }
   if (r.has("subdivisions")) {
-    for (long long s : r.integers("subdivisions")) {
-      if (s < 1 || s > 1000) r.fail("subdivisions", "each entry must lie in 1..1000");
-      spec.subdivisions.push_back(int(s));
-    }
+    spec.subdivisions = r.integers_in("subdivisions", 1, 1000);
     if (int(spec.subdivisions.size()) != pd) r.fail("subdivisions", "needs " + std::to_string(pd) + " entries");
   }
   for (const TomlView& g : r.tables("graded")) {
@@ -330,9 +335,7 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
         s.interval.push_back({r[0], r[1]});
       }
     }
-    const long long n = c.integer("points_per_direction", 0);
-    if (n < 0 || n > 20) c.fail("points_per_direction", "must lie in 1..20 (0: p+1)");
-    s.points_per_direction = int(n);
+    s.points_per_direction = c.integer_in("points_per_direction", 0, 20, 0);  // 0: p+1
     m.contact_surfaces.push_back(s);
   }
   const std::vector<TomlView> node_tables = top.tables("node");
@@ -360,9 +363,8 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     l.from = given_point(t, "from", "from_point", patch);
     l.to = given_point(t, "to", "to_point", patch);
     if (l.from.physical != l.to.physical) t.fail(l.from.physical ? "to" : "from", "give both ends as parameters or both in metres");
-    const long long n = t.integer("points", 10);
-    if (n < 1 || n > 10000) t.fail("points", "must lie in 1..10000");
-    l.points = int(n);
+    const int n = t.integer_in("points", 1, 10000, 10);
+    l.points = n;
     stress_points += n;
     if (stress_points > kMaxStressPoints)
       t.fail("points", "the stress lines together have more than " + std::to_string(kMaxStressPoints) + " points");
@@ -382,9 +384,8 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     const bool massless = red.method == "macneal" || red.method == "craig-bampton-massless";
     if (red.method != "modal" && red.method != "craig-bampton" && red.method != "full" && !massless)
       r->fail("method", "unknown method '" + red.method + "' (modal, craig-bampton, full, macneal, craig-bampton-massless)");
-    const long long n = r->integer("normal_modes", red.method == "full" ? 0 : 10);
-    if (n < 0 || n > 100000 || ((red.method == "modal" || massless) && n < 1))
-      r->fail("normal_modes", "must be a positive count");
+    const int n = r->integer_in("normal_modes", 0, 100000, red.method == "full" ? 0 : 10);
+    if ((red.method == "modal" || massless) && n < 1) r->fail("normal_modes", "must be a positive count");
     if (massless) {
       red.boundary_surface = r->string("boundary_surface");
       const auto surface = std::find_if(m.contact_surfaces.begin(), m.contact_surfaces.end(),
@@ -398,14 +399,13 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
     } else if (r->has("boundary_surface")) {
       r->fail("boundary_surface", "only used by the massless-boundary methods (macneal, craig-bampton-massless)");
     }
-    red.normal_modes = int(n);
+    red.normal_modes = n;
     if (red.method == "craig-bampton") {
       red.interface_surface = r->string("interface_surface");
       if (std::find(surfaces.begin(), surfaces.end(), red.interface_surface) == surfaces.end())
         r->fail("interface_surface", "no contact_surface named '" + red.interface_surface + "'");
-      const long long k = r->integer("interface_points");
-      if (k < 1) r->fail("interface_points", "must be at least 1");
-      red.interface_points = int(k);
+      // bounded by the model size here, by the interface side's nodes once they are known
+      red.interface_points = r->integer_in("interface_points", 1, int(kMaxControlPoints));
       // inside the parameter range of the interface surface's side
       const auto surface = std::find_if(m.contact_surfaces.begin(), m.contact_surfaces.end(),
                                         [&](const ContactSurfaceSpec& s) { return s.name == red.interface_surface; });
@@ -445,8 +445,7 @@ format::Material read_material(const TomlView& mat) {
 }
 
 std::string unique_name(const TomlView& t, std::vector<std::string>& seen) {
-  const std::string name = t.string("name");
-  if (name.empty() || name.find('/') != std::string::npos) t.fail("name", "must be a non-empty name without '/'");
+  const std::string name = t.name("name");
   if (std::find(seen.begin(), seen.end(), name) != seen.end()) t.fail("name", "duplicate name '" + name + "'");
   seen.push_back(name);
   return name;
@@ -455,9 +454,7 @@ std::string unique_name(const TomlView& t, std::vector<std::string>& seen) {
 void read_quadrature(const TomlView& top, ModelSpec& m) {
   if (auto q = top.optional_table("quadrature")) {
     q->allow_only({"extra_points"});
-    const long long extra = q->integer("extra_points", 0);
-    if (extra < 0 || extra > 10) q->fail("extra_points", "must lie in 0..10");
-    m.extra_quadrature_points = int(extra);
+    m.extra_quadrature_points = q->integer_in("extra_points", 0, 10, 0);
   }
 }
 
@@ -465,9 +462,7 @@ void read_visual(const TomlView& top, ModelSpec& m) {
   if (auto v = top.optional_table("visual")) {
     v->allow_only({"subdivisions", "stress"});
     VisualSpec& visual = m.visual.emplace();
-    const long long n = v->integer("subdivisions", visual.subdivisions);
-    if (n < 1 || n > 8) v->fail("subdivisions", "must lie in 1..8 (cells per element and direction)");
-    visual.subdivisions = int(n);
+    visual.subdivisions = v->integer_in("subdivisions", 1, 8, visual.subdivisions);  // cells per element and direction
     visual.stress = v->boolean("stress", visual.stress);
   }
 }
@@ -497,8 +492,7 @@ ModelSpec read_model_file(const std::string& path) {
 
   const TomlView body = top.table("body");
   body.allow_only({"name", "analysis", "thickness"});
-  m.body_name = body.string("name");
-  if (m.body_name.empty() || m.body_name.find('/') != std::string::npos) body.fail("name", "must be a non-empty name without '/'");
+  m.body_name = body.name("name");
   const std::string analysis = body.string("analysis");
   const auto type = format::analysis_type_from_string(analysis);
   if (!type) body.fail("analysis", "unknown analysis '" + analysis + "' (plane_strain, plane_stress, axisymmetric, solid)");
@@ -602,6 +596,7 @@ void set_refinement_point(ModelSpec& model, const std::string& surface, const st
                              "the patch of contact surface '" + surface + "' has no [refinement.hierarchical] to place");
   if (!(width > 0) || !std::isfinite(width)) throw format::InputError(model.file, source, "the width must be a positive length in metres");
   const NurbsPatch& geometry = patch.patch;
+  if (const std::string problem = width_problem(width, geometry); !problem.empty()) throw format::InputError(model.file, source, problem);
   const PatchSide side = *geometry.side(s->side);  // the model reader resolved it
   if (int(at.size()) != geometry.param_dim() - 1)
     throw format::InputError(model.file, source,

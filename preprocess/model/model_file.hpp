@@ -24,6 +24,11 @@ struct FixedComponents {
 /// each adds dense rows per mode to the SID and the runtime's output.
 constexpr std::size_t kMaxNodes = 10000;
 constexpr long long kMaxStressPoints = 100000;
+/// Most control points a refined patch may have (3D: 6 million DOFs, beyond any eigen solve
+/// this machine class takes in memory).
+constexpr double kMaxControlPoints = 2e6;
+/// Highest polynomial degree of a patch direction.
+constexpr int kMaxDegree = 8;
 /// Most [[patch]] tables of a body (interfaces are found by comparing every pair of sides).
 constexpr std::size_t kMaxPatches = 200;
 

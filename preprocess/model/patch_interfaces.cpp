@@ -148,6 +148,36 @@ std::string side_text(const std::vector<PatchSpec>& patches, int patch, PatchSid
   return patches[std::size_t(patch)].name + "." + side_name(side);
 }
 
+/// Refuses a body whose patches, joined by their interfaces, form more than one piece: the
+/// pieces' relative rigid motions would pass for elastic modes of near-zero frequency. Names
+/// the first patch and one it is not joined to, saying whether they still touch at a point or
+/// an edge (a hinge, not a solid).
+void check_connected(const std::vector<PatchSpec>& patches, const std::vector<PatchInterface>& interfaces, const std::string& file,
+                     double tol) {
+  std::vector<int> piece(patches.size());
+  for (std::size_t k = 0; k < piece.size(); ++k) piece[k] = int(k);
+  const auto root = [&](int k) {
+    while (piece[std::size_t(k)] != k) k = piece[std::size_t(k)];
+    return k;
+  };
+  for (const PatchInterface& i : interfaces) piece[std::size_t(root(i.b))] = root(i.a);
+  for (int b = 1; b < int(patches.size()); ++b) {
+    if (root(b) == root(0)) continue;
+    // touching: a control point of the piece of patch 0 on one of patch b (corners and edges
+    // of patches interpolate their control points)
+    bool touch = false;
+    for (int a = 0; a < int(patches.size()) && !touch; ++a) {
+      if (root(a) != root(0)) continue;
+      const Eigen::MatrixXd &P = patches[std::size_t(a)].patch.points, &Q = patches[std::size_t(b)].patch.points;
+      for (Eigen::Index i = 0; i < P.rows() && !touch; ++i)
+        for (Eigen::Index j = 0; j < Q.rows() && !touch; ++j) touch = (P.row(i) - Q.row(j)).norm() <= tol;
+    }
+    throw format::InputError(file, "patch", "patches '" + patches[0].name + "' and '" + patches[std::size_t(b)].name + "' " +
+                                                (touch ? "meet at a point or an edge only" : "share no side") +
+                                                " (a body must be one connected solid)");
+  }
+}
+
 }  // namespace
 
 std::vector<PatchInterface> find_interfaces(const std::vector<PatchSpec>& patches, const std::string& file) {
@@ -187,6 +217,7 @@ std::vector<PatchInterface> find_interfaces(const std::vector<PatchSpec>& patche
           }
         }
     }
+  check_connected(patches, out, file, tol);
   return out;
 }
 

@@ -21,7 +21,8 @@ struct PatchInterface {
 };
 
 /// The conforming interfaces of the coarse patches. Throws InputError(file) naming the
-/// patches and sides of a non-matching interface, or the patches that overlap.
+/// patches and sides of a non-matching interface, the patches that overlap, or two patches
+/// the interfaces do not join into one solid.
 std::vector<PatchInterface> find_interfaces(const std::vector<PatchSpec>& patches, const std::string& file);
 
 /// The conforming interfaces of the patches of a generated mesh (one patch per element, the

@@ -52,12 +52,36 @@ std::vector<double> march(const NurbsPatch& patch, const GradingRequest& r, doub
   return out;
 }
 
+/// The largest knot span of a direction: grading stops once its elements are that large.
+double largest_span(const std::vector<double>& u) {
+  double out = 0;
+  for (std::size_t s = 0; s + 1 < u.size(); ++s) out = std::max(out, u[s + 1] - u[s]);
+  return out;
+}
+
 }  // namespace
+
+double graded_knot_count_bound(const NurbsPatch& patch, const GradingRequest& r) {
+  const std::vector<double> u = unique_knots(patch.knots[std::size_t(r.direction)]);
+  // the march's parameter steps are at least h / (largest speed): sample it along the direction
+  const int samples = 33;
+  double speed = 0;
+  for (int i = 0; i < samples; ++i) speed = std::max(speed, max_speed(patch, r.direction, u.front() + (u.back() - u.front()) * i / (samples - 1)));
+  const double log_growth = std::log1p(r.growth - 1), largest = speed * largest_span(u);
+  double count = 0;
+  for (const double distance : {u.back() - r.toward, r.toward - u.front()}) {
+    if (distance <= 0) continue;
+    // to cover the side: smallest (growth^n - 1) / (growth - 1) = length; to reach the largest span: smallest growth^n = largest
+    const double cover = std::log1p(speed * distance * (r.growth - 1) / r.smallest) / log_growth;
+    const double reach = std::log(std::max(1.0, largest / r.smallest)) / log_growth;
+    count += std::min(cover, reach) + 1;
+  }
+  return count;
+}
 
 std::vector<double> graded_knots(const NurbsPatch& patch, const GradingRequest& r) {
   const std::vector<double> u = unique_knots(patch.knots[std::size_t(r.direction)]);
-  double max_step = 0;  // grading stops once its elements are as large as the largest existing span
-  for (std::size_t s = 0; s + 1 < u.size(); ++s) max_step = std::max(max_step, u[s + 1] - u[s]);
+  const double max_step = largest_span(u);
 
   std::vector<double> knots = march(patch, r, r.toward, u.back(), max_step);
   const std::vector<double> down = march(patch, r, r.toward, u.front(), max_step);

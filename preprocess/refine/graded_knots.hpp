@@ -19,4 +19,10 @@ struct GradingRequest {
 /// the other directions (so no element at the location is longer than `smallest`).
 std::vector<double> graded_knots(const NurbsPatch& patch, const GradingRequest& request);
 
+/// How many knots graded_knots would insert at most, without marching them: each side of
+/// `toward` grows its elements from `smallest` by `growth` until they span the rest of the
+/// direction or reach its largest existing span, log(1 + L (growth - 1) / smallest) /
+/// log(growth) elements for a physical length L (speeds sampled as graded_knots does).
+double graded_knot_count_bound(const NurbsPatch& patch, const GradingRequest& request);
+
 }  // namespace isosid::prep

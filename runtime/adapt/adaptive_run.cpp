@@ -1,6 +1,7 @@
 // The adaptive run's phases; see adaptive_run.hpp.
 #include "adapt/adaptive_run.hpp"
 
+#include "adapt/interval_width.hpp"
 #include "adapt/model_cache.hpp"
 #include "adapt/penalty_search.hpp"
 #include "adapt/phase_recorder.hpp"
@@ -45,6 +46,8 @@ constexpr double kSamplesPerImpact = 100, kMaxSamplesPerOutput = 1000, kSamplesP
 constexpr double kTargetUtilization = 0.7, kMinUtilization = 0.5, kMaxUtilization = 0.9;
 /// Tries of one impact before the last one is taken as it is.
 constexpr int kMaxTries = 4;
+/// Alg. 2 changes a width by at most this factor per try.
+constexpr double kMaxWidening = 1.5;
 /// Errors in one impact run before the next ends the run: the penalty is then down by two
 /// decades and more (seed 001's slow decrease has no limit).
 constexpr int kMaxPenaltyLowerings = 20;
@@ -150,9 +153,9 @@ struct IntervalDecision {
 
 IntervalDecision decide_interval(double utilization, bool beyond, double width) {
   IntervalDecision d;
-  const double toward_target = width * std::clamp(utilization / kTargetUtilization, 0.5, 1.5);
+  const double toward_target = width * std::clamp(utilization / kTargetUtilization, 1 / kMaxWidening, kMaxWidening);
   if (beyond) {
-    d.next_width = 1.5 * width;
+    d.next_width = kMaxWidening * width;
     d.reason = "load beyond the refined region";
   } else if (utilization > kMaxUtilization) {
     d.next_width = toward_target;
@@ -186,6 +189,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   coarse.simulation.integrator = scene_.adaptive.coarse_integrator;
   coarse.simulation.max_step = scene_.adaptive.coarse_max_step;
   const std::vector<format::Sid> coarse_sids = load_sids(coarse, quiet_);
+  check_interval_width_fits(scene_, coarse_sids);
   std::vector<bool> adaptive_contact;
   for (const ContactSpec& c : scene_.contacts) {
     const BodySpec* slave = scene_.body(c.body);
@@ -373,6 +377,8 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     const double estimated_width = estimate ? 2 * estimate->contact_radius / kTargetUtilization : 0.0;
     if (estimated_width > 0 && width_per_estimate[std::size_t(k)] > 0)
       width[std::size_t(k)] = snapped_width(width_per_estimate[std::size_t(k)] * estimated_width);
+    if (width_per_estimate[std::size_t(k)] == 0)  // the scene's width, not yet one learned
+      check_interval_width_reaches(scene_, contact, estimated_width, kMaxTries, kMaxWidening);
     if (!(width[std::size_t(k)] > 0)) {
       if (!(estimated_width > 0))
         throw format::InputError(scene_.file, "adaptive.interval_width", "needed: contact '" + contact + "' has no Hertz estimate at its touch");
@@ -462,7 +468,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       const bool accepted_now = d.acceptable || attempt == kMaxTries;
       if (accepted_now && !d.acceptable)  // the last try ran the whole impact, beyond its region or not
         run.parts.back().summary["warnings"].push_back("contact '" + contact + "': the refined region did not fit after " + std::to_string(kMaxTries) +
-                                               " tries (utilization " + std::to_string(int(std::lround(100 * run.utilization))) +
+                                               " tries (utilization " + common::number_text(100 * run.utilization) +
                                                " %, " + d.reason + "): forces beyond it are not modelled");
       if (!quiet_) {  // seed 001's Table 1, one line per try
         bool built = false;

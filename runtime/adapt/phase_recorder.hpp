@@ -49,6 +49,8 @@ public:
   void contact_event(int k, bool closing, double t) override;
   void step(double t, const double* y) override;
   bool stop_requested() const override { return phase_over() || stop_requested_(); }
+  /// A signal ends the phase within the step; the loop's own reasons wait for the next sample.
+  bool interrupt_requested() const override { return stop_requested_(); }
 
   /// The phase ended as the loop asks (a touch, an impact over, the load beyond its region, an
   /// error).

@@ -18,6 +18,21 @@ namespace isosid::run {
 /// fourfold increase beyond about 100 E*/h (bench/RESULTS.md, penalty sweep).
 constexpr double kPenaltyStiffnessRatio = 1000;
 
+/// The softest penalty a scene may give, relative to the one derived from the contact
+/// elements (1000 E*/h): 1e-8 of it, c_p = 1e-5 E*/h, is a layer 1e5 times as compliant as an
+/// element's depth of the material, which then takes the impact instead of the bodies: scene
+/// A's sphere (2.9e18 N/m^3 derived) would sink about 60 um (20 Hertz approaches) into its
+/// plane. Softer ones (scene A at 1e-300 N/m^3) let the bodies pass through each other. The
+/// stability suite's soft case, scene A at 1e12 N/m^3 (rebound and energy kept), is 3.4e-7 of it.
+constexpr double kMinPenaltyRatio = 1e-8;
+
+/// The deepest penetration of the contact points, relative to the Hertz approach of the
+/// bodies, that a plausible penalty leaves: the derived penalty penetrates by about 1e-3 of
+/// the approach (its layer is 1000 times stiffer than the contact patch); at half the
+/// approach the layer takes a third of the impact's compliance and the force and contact time
+/// are the penalty's rather than the bodies'. Deeper runs get a warning blaming the penalty.
+constexpr double kMaxPenetrationPerApproach = 0.5;
+
 /// The length of each element of a contact surface (by element index), m: along a curve (2D,
 /// the 2 pi r or thickness divided out of the weights) or the square root of its area (3D).
 std::map<int, double> contact_element_lengths(const format::ContactSurface& surface, const format::Sid& sid);

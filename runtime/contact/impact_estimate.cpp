@@ -98,10 +98,10 @@ std::optional<ImpactEstimate> estimate_impact(const SurfaceContact& contact, con
   }
   // point contact (Johnson, Contact Mechanics 11.2): R the equivalent radius of the relative curvatures
   const double R = 1 / std::sqrt(relative(0) * relative(1));
-  const double approach = std::pow(15 * (2 * energy) / (16 * modulus * std::sqrt(R)), 0.4);  // 15 m v^2 / (16 E* sqrt R)
-  e.contact_radius = std::sqrt(R * approach);
-  e.peak_force = 4.0 / 3.0 * modulus * std::sqrt(R) * std::pow(approach, 1.5);
-  e.contact_time = 2.9432 * approach / e.approach_speed;
+  e.approach = std::pow(15 * (2 * energy) / (16 * modulus * std::sqrt(R)), 0.4);  // 15 m v^2 / (16 E* sqrt R)
+  e.contact_radius = std::sqrt(R * e.approach);
+  e.peak_force = 4.0 / 3.0 * modulus * std::sqrt(R) * std::pow(e.approach, 1.5);
+  e.contact_time = 2.9432 * e.approach / e.approach_speed;
   return e;
 }
 

@@ -21,6 +21,7 @@ struct ImpactEstimate {
   double contact_radius = 0;     ///< m: the Hertz radius a (point contact) or half-width b (line contact)
   double peak_force = 0;         ///< N (point contact; line contact: times the slave's thickness)
   double contact_time = 0;       ///< s; 0 where Hertz gives no closed form (line contact)
+  double approach = 0;           ///< m, the bodies' largest approach; 0 where Hertz gives no closed form (line contact)
   double element_size = 0;       ///< m, the slave's contact element at its nearest point
   double elements_per_radius() const { return contact_radius / element_size; }
 };

@@ -70,6 +70,9 @@ public:
   /// A derived penalty follows the contact radius (or half-width) the impact is expected to
   /// reach, m (default_penalty); a penalty the scene gave stays.
   void fit_penalty_to_contact_radius(double contact_radius);
+  /// default_penalty() for this contact's surfaces and a contact radius (0: unknown, from the
+  /// contact elements alone).
+  double derived_penalty(double contact_radius) const;
   /// Smallest signed gap over the contact points (negative: penetration; exact contact: the
   /// gap less lambda / c_p, negative while pressed), for event location; while the broad phase
   /// finds the surface clear, a positive lower bound.
@@ -128,9 +131,6 @@ private:
   /// Psi of no columns, of the slave's frame motion only (its rigid-body sliding).
   Eigen::Vector3d sliding_velocity(const Eigen::Vector3d& P, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const double* y,
                                    const TargetPoint& t) const;
-
-  /// default_penalty() for this contact's surfaces and a contact radius (0: unknown).
-  double derived_penalty(double contact_radius) const;
 
   ContactSpec spec_;
   std::string penalty_source_;  ///< the spec's, or "derived: ..."

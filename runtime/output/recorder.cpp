@@ -4,7 +4,9 @@
 #include "isosid/format/atomic_output.hpp"
 #include "isosid/format/error.hpp"
 #include "isosid/format/hdf5_file.hpp"
+#include "contact/default_penalty.hpp"
 #include "contact/deformed_patch.hpp"
+#include "contact/impact_estimate.hpp"
 #include "output/force_spectrum.hpp"
 #include "output/paraview_series.hpp"
 #include "output/reference_comparison.hpp"
@@ -45,6 +47,13 @@ format::Node surface_node(const FloatingBody& body, const MonitorSpec& m, const 
   node.phi = Eigen::MatrixXd::Zero(3, body.nq());
   node.phi.topRows(dim) = Psi;
   return node;
+}
+
+/// The deepest penetration of a contact's points over its Hertz approach, or nullopt where the
+/// estimate has none (line contact, no approach).
+std::optional<double> penetration_per_approach(double max_penetration, const std::optional<ImpactEstimate>& estimate) {
+  if (!estimate || !(estimate->approach > 0)) return std::nullopt;
+  return max_penetration / estimate->approach;
 }
 }  // namespace
 
@@ -280,6 +289,16 @@ std::vector<std::string> Recorder::warnings() const {
                   c.body().name() + "' at t = " + common::number_text(edge_reached_[k]) +
                   " s: the surface beyond is not checked for contact, so forces may be cut off; widen its interval");
   }
+  for (std::size_t k = 0; k < max_penetration_.size(); ++k) {
+    const auto& estimate = system_.impact_estimates()[k];
+    const auto ratio = penetration_per_approach(max_penetration_[k], estimate);
+    if (!ratio || *ratio <= kMaxPenetrationPerApproach) continue;
+    const SurfaceContact& c = system_.contacts()[k];
+    out.push_back("contact '" + c.name() + "' penetrated " + common::number_text(max_penetration_[k]) + " m, " + common::number_text(*ratio) +
+                  " times the Hertz approach of the bodies (" + common::number_text(estimate->approach) +
+                  " m): its penalty (" + common::number_text(c.penalty()) + " N/m^3, " + c.penalty_source() +
+                  ") is too soft, and the forces and contact time are the penalty layer's, not the bodies'");
+  }
   for (std::size_t k = 0; k < interface_left_.size(); ++k) {
     if (interface_left_[k] < 0) continue;
     const SurfaceContact& c = system_.contacts()[k];
@@ -358,6 +377,9 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     if (impact_modes_[k] && impact_modes_[k]->report()) c["impact_modes"] = impact_modes_summary(*impact_modes_[k]->report());
     c["impulse_ns"] = impulse_[k];
     c["max_penetration_m"] = max_penetration_[k];
+    const auto ratio = penetration_per_approach(max_penetration_[k], system_.impact_estimates()[k]);
+    c["penetration_per_hertz_approach"] = ratio ? json(*ratio) : json(nullptr);
+    c["penalty_too_soft"] = ratio && *ratio > kMaxPenetrationPerApproach;
     j["contacts"].push_back(c);
   }
   j["hertz_contacts"] = json::array();

@@ -1,9 +1,12 @@
 // Scene file parsing and validation; see scene.hpp.
 #include "scene/scene.hpp"
 
+#include "body/floating_body.hpp"
+#include "isosid/common/number_text.hpp"
 #include "isosid/common/toml_fields.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -27,13 +30,51 @@ Eigen::Vector3d unit_vector(const TomlView& t, const std::string& key, const Eig
   return n.normalized();
 }
 
+/// The fastest initial speed of a body, m/s: no solid carries elastic waves faster than about
+/// 13 km/s (beryllium, diamond), and an impact at the wave speed is a shock, outside the
+/// linear elasticity of SIDs; faster values are typing errors, and would overflow the Hertz
+/// estimate (its contact radius grows as v^(2/5), its energy as v^2).
+constexpr double kMaxSpeed = 2e4;
+/// The strongest gravity, m/s^2: ten times an ultracentrifuge's 1e6 g.
+constexpr double kMaxGravity = 1e8;
+
+/// Refuses initial motion the bodies cannot take: a planar or axisymmetric scene locks the
+/// DOFs that leave its symmetry, and a body's `locked` list more; the runtime holds those
+/// DOFs at zero, so a velocity or orientation there would be dropped without a word.
+void check_motion_fits(const TomlView& b, const BodySpec& f, Dimension dimension) {
+  static const char* const dof_names[6] = {"x", "y", "z", "rx", "ry", "rz"};
+  if (dimension == Dimension::Axisymmetric && (f.position.x() != 0 || f.position.z() != 0))
+    b.fail("position", "an axisymmetric scene needs its bodies on the axis (x = z = 0)");
+  // what the dimension leaves free: axisymmetric y only, planar x, y and rz
+  std::array<bool, 6> locked{};
+  if (dimension == Dimension::Axisymmetric) locked = {true, false, true, true, true, true};
+  if (dimension == Dimension::Planar) locked = {false, false, true, true, true, false};
+  const std::string why = dimension == Dimension::Axisymmetric ? "an axisymmetric scene moves its bodies along the axis only"
+                          : dimension == Dimension::Planar     ? "a planar scene moves its bodies in the x-y plane only"
+                                                               : "";
+  // an orientation may turn the body over (pi about x or z) but must keep its section in the
+  // plane: the body's z axis on the world's (both), and its y axis on the world's (axisymmetric)
+  const Eigen::Matrix3d A = tait_bryan_matrix(f.tait_bryan);
+  const double tilt_z = Eigen::Vector2d(A(0, 2), A(1, 2)).norm(), tilt_y = Eigen::Vector2d(A(0, 1), A(2, 1)).norm();
+  if ((dimension != Dimension::Solid && tilt_z > 1e-12) || (dimension == Dimension::Axisymmetric && tilt_y > 1e-12))
+    b.fail("orientation", why + " (it may turn a body over, by pi about x or z, but not tilt it)");
+  for (int a = 0; a < 3; ++a) {
+    const auto i = std::size_t(a);
+    if (locked[i] && f.velocity(a) != 0) b.fail("velocity", why + " (no " + dof_names[a] + " component)");
+    if (locked[3 + i] && f.angular_velocity(a) != 0) b.fail("angular_velocity", why + " (no " + dof_names[3 + a] + " component)");
+  }
+  for (const std::string& l : f.locked)
+    for (int a = 0; a < 3; ++a) {
+      if (l == dof_names[a] && f.velocity(a) != 0) b.fail("velocity", "moves along the locked DOF '" + l + "'");
+      if (l == dof_names[3 + a] && f.angular_velocity(a) != 0) b.fail("angular_velocity", "turns about the locked DOF '" + l + "'");
+    }
+}
+
 /// Name, initial motion and locked DOFs, common to flexible and rigid bodies.
 BodySpec read_motion(const TomlView& b, const std::string& name, Dimension dimension) {
   BodySpec f;
   f.name = name;
   f.position = vec3(b, "position", f.position);
-  if (dimension == Dimension::Axisymmetric && (f.position.x() != 0 || f.position.z() != 0))
-    b.fail("position", "an axisymmetric scene needs its bodies on the axis (x = z = 0)");
   f.tait_bryan = vec3(b, "orientation", f.tait_bryan);
   f.velocity = vec3(b, "velocity", f.velocity);
   f.angular_velocity = vec3(b, "angular_velocity", f.angular_velocity);
@@ -42,6 +83,9 @@ BodySpec read_motion(const TomlView& b, const std::string& name, Dimension dimen
       if (l != "x" && l != "y" && l != "z" && l != "rx" && l != "ry" && l != "rz") b.fail("locked", "unknown DOF '" + l + "'");
       f.locked.push_back(l);
     }
+  if (f.velocity.stableNorm() > kMaxSpeed)
+    b.fail("velocity", "a speed of " + common::number_text(f.velocity.stableNorm()) + " m/s exceeds 2e4 m/s, beyond the wave speed of any solid");
+  check_motion_fits(b, f, dimension);
   return f;
 }
 
@@ -104,6 +148,34 @@ std::string resolve(const std::string& scene_file, const std::string& path) {
   return (fs::path(scene_file).parent_path() / path).lexically_normal().string();
 }
 
+/// Bounds of the step-size control's tolerances. Above a relative tolerance of 0.1 the
+/// error estimate of an embedded pair no longer describes the solution (its asymptotic
+/// expansion needs small errors): the steps grow until contacts are stepped over. Below
+/// 1e-12 it asks for less than the round-off of the sums over contact points and modes, and
+/// the step collapses. The absolute tolerance is the error allowed where a component is near
+/// zero: the state holds positions in metres and mass-normalized elastic coordinates, whose
+/// size is the elastic displacement (micrometres in an impact) times the root of the mass;
+/// above 1e-6 an impact's deformation would go uncontrolled (the shipped scenes use 1e-12
+/// to 1e-9).
+constexpr double kMinRtol = 1e-12, kMaxRtol = 0.1, kMaxAtol = 1e-6;
+
+void read_tolerances(const TomlView& s, SimulationSettings& out) {
+  out.rtol = s.positive("rtol", out.rtol);
+  if (out.rtol < kMinRtol || out.rtol > kMaxRtol) s.fail("rtol", "must lie in [1e-12, 0.1], is " + common::number_text(out.rtol));
+  out.atol = s.positive("atol", out.atol);
+  if (out.atol > kMaxAtol)
+    s.fail("atol", "must lie in (0, 1e-6] (metres and elastic coordinates of micrometre deformations), is " + common::number_text(out.atol));
+}
+
+/// A step limit that needs more than max_steps steps to reach end_time could never finish.
+void check_step_count(const TomlView& t, const char* key, double step, const SimulationSettings& sim) {
+  if (const double steps = sim.end_time / step; steps > double(sim.max_steps)) {
+    char count[64];
+    std::snprintf(count, sizeof count, "%.3g steps", steps);
+    t.fail(key, std::string("end_time / ") + key + " needs at least " + count + ", more than max_steps = " + std::to_string(sim.max_steps));
+  }
+}
+
 IntegratorKind read_integrator(const TomlView& t, const std::string& key, IntegratorKind fallback) {
   if (!t.has(key)) return fallback;
   const std::string name = t.string(key);
@@ -137,8 +209,7 @@ SimulationSettings read_simulation(const TomlView& s) {
   } else if (s.has("step")) {
     s.fail("step", "only used by integrator = \"leapfrog\" (dopri5 and implicit choose their steps; see max_step)");
   }
-  out.rtol = s.positive("rtol", 1e-6);
-  out.atol = s.positive("atol", 1e-9);
+  read_tolerances(s, out);
   out.max_step = s.positive("max_step", out.end_time);
   out.max_steps = long(s.integer("max_steps", out.max_steps));
   if (out.max_steps < 1) s.fail("max_steps", "must be at least 1");
@@ -152,11 +223,7 @@ SimulationSettings read_simulation(const TomlView& s) {
     s.fail("output_interval", std::string("end_time / output_interval asks for ") + count + ", more than the limit of 1e7");
   }
   const bool leapfrog = out.integrator == IntegratorKind::Leapfrog;
-  if (const double steps = out.end_time / (leapfrog ? out.step : out.max_step); steps > double(out.max_steps)) {
-    std::snprintf(count, sizeof count, "%.3g steps", steps);
-    const char* key = leapfrog ? "step" : "max_step";
-    s.fail(key, std::string("end_time / ") + key + " needs at least " + count + ", more than max_steps = " + std::to_string(out.max_steps));
-  }
+  check_step_count(s, leapfrog ? "step" : "max_step", leapfrog ? out.step : out.max_step, out);
   out.allow_initial_penetration = s.boolean("allow_initial_penetration", false);
   return out;
 }
@@ -204,8 +271,8 @@ Scene read_scene_file(const std::string& path) {
   }
   std::set<std::string> names;
   auto unique = [&](const TomlView& t) {
-    const std::string name = t.string("name");
-    if (name.empty()) t.fail("name", "must not be empty");
+    // names become HDF5 groups of results.h5 and keys of summary.json
+    const std::string name = t.name("name");
     if (!names.insert(name).second) t.fail("name", "duplicate name '" + name + "'");
     return name;
   };
@@ -286,6 +353,10 @@ Scene read_scene_file(const std::string& path) {
     const std::string enforcement = c.string("enforcement", "penalty");
     if (enforcement != "penalty" && enforcement != "exact") c.fail("enforcement", "must be penalty or exact");
     s.exact = enforcement == "exact";
+    // the augmented Lagrangian solves the boundary at the start of each fixed step; under an
+    // adaptive integrator its contact set switches inside the stages and the steps chatter
+    if (s.exact && scene.simulation.integrator != IntegratorKind::Leapfrog)
+      c.fail("enforcement", "exact contact needs integrator = \"leapfrog\"");
     const BodySpec* slave = scene.body(s.body);
     if (!slave || slave->rigid) c.fail("body", "no flexible_body named '" + s.body + "' (the slave side carries the contact points)");
     const BodySpec* master = scene.body(s.target);
@@ -385,6 +456,8 @@ Scene read_scene_file(const std::string& path) {
     scene.monitors.push_back(s);
   }
   scene.gravity = vec3(top.table("simulation"), "gravity", scene.gravity);
+  if (scene.gravity.stableNorm() > kMaxGravity)
+    top.table("simulation").fail("gravity", common::number_text(scene.gravity.stableNorm()) + " m/s^2 exceeds 1e8 m/s^2 (1e7 g)");
   if (auto r = top.optional_table("reference")) {
     r->allow_only({"peak_force_n", "contact_time_s", "rebound_velocity_m_s", "final_velocity_m_s", "final_angular_velocity_rad_s",
                    "wave_arrival_s", "contact_end_s", "peak_von_mises_pa", "peak_von_mises_depth_m"});
@@ -408,6 +481,7 @@ Scene read_scene_file(const std::string& path) {
     if ((scene.adaptive.coarse_integrator == IntegratorKind::Leapfrog) != (scene.simulation.integrator == IntegratorKind::Leapfrog))
       a->fail("coarse_integrator", "the leapfrog's fixed step and the adaptive integrators' tolerances do not mix between phases");
     scene.adaptive.coarse_max_step = a->positive("coarse_max_step", scene.adaptive.coarse_max_step);
+    check_step_count(*a, "coarse_max_step", scene.adaptive.coarse_max_step, scene.simulation);
     scene.adaptive.penalty_search = a->boolean("penalty_search", true);
     scene.adaptive.impact_output_interval = a->positive("impact_output_interval", 0);
     if (scene.adaptive.impact_output_interval > scene.simulation.output_interval)

@@ -1,6 +1,7 @@
 // SID loading and rebuilding; see sid_provider.hpp.
 #include "scene/sid_provider.hpp"
 
+#include "isosid/common/sha256.hpp"
 #include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene/prep_process.hpp"
@@ -19,6 +20,21 @@ bool lacks_interface_coverage(const format::Sid& sid) {
   if (sid.refmod.reduction_method != "craig-bampton") return false;
   return std::any_of(sid.contact_surfaces.begin(), sid.contact_surfaces.end(), [](const format::ContactSurface& c) { return c.in_interface.size() == 0; });
 }
+
+/// Whether the SID of `body` (the scene's flexible_body[index]) was built from its model file
+/// as it is now: false where its provenance records the same file name but another content
+/// (edited since, whatever the file times say). A SID whose provenance names another model
+/// file is refused (rebuilding it would overwrite that model's SID).
+bool built_from_model(const format::Sid& sid, const BodySpec& body, const Scene& scene, std::size_t index) {
+  const format::Provenance& p = sid.provenance;
+  if (p.model_file.empty() || p.model_sha256.empty()) return true;  // built in memory: nothing to compare
+  const std::string built_from = fs::path(p.model_file).filename().string(), named = fs::path(body.model_file).filename().string();
+  if (built_from != named)
+    throw format::InputError(scene.file, "flexible_body[" + std::to_string(index) + "].sid",
+                             body.sid_file + " was built from " + built_from + ", not " + named +
+                                 " (name a SID file of its own for this model)");
+  return p.model_sha256 == common::sha256_file(body.model_file);
+}
 }  // namespace
 
 format::ReadOptions sid_read_options(const Scene& scene) {
@@ -31,12 +47,17 @@ std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
   std::vector<format::Sid> sids;
   for (const BodySpec& b : scene.bodies) {
     if (b.rigid) continue;  // rigid bodies have no SID
+    const std::size_t index = sids.size();  // flexible_body[index] of the scene
     std::error_code ec;
     if (!b.model_file.empty() && !b.adaptive) {  // an adaptive body's SIDs come from the run's cache, built for their request
       const bool stale = !fs::exists(b.sid_file, ec) || fs::last_write_time(b.sid_file, ec) < fs::last_write_time(b.model_file, ec);
       if (stale) run_prep(b.model_file, b.sid_file, {}, quiet, "");
     }
     sids.push_back(format::read_sid(b.sid_file, sid_read_options(scene)));
+    if (!b.model_file.empty() && !b.adaptive && !built_from_model(sids.back(), b, scene, index)) {
+      run_prep(b.model_file, b.sid_file, {}, quiet, " (the SID there was built from another version of the model)");
+      sids.back() = format::read_sid(b.sid_file, sid_read_options(scene));
+    }
     if (!b.model_file.empty() && !b.adaptive && lacks_interface_coverage(sids.back())) {
       run_prep(b.model_file, b.sid_file, {}, quiet, " (the SID there does not record which contact points its interface covers)");
       sids.back() = format::read_sid(b.sid_file, sid_read_options(scene));

@@ -4,6 +4,7 @@
 #include "isosid/common/number_text.hpp"
 #include "isosid/format/error.hpp"
 #include "solve/event_chatter.hpp"
+#include "solve/run_checks.hpp"
 #include "solve/static_start.hpp"
 
 #include <chrono>
@@ -40,6 +41,9 @@ Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
       system_(scene_, std::move(sids)),
       integrator_(system_, scene_.simulation, initial_state(system_, scene_)) {
   report_steps();
+  refuse_vanishing_penalties(system_, scene_);
+  refuse_unstable_leapfrog_step(system_, scene_);
+  refuse_unsteady_spin(system_, scene_);
   if (!scene_.simulation.allow_initial_penetration) refuse_initial_penetration();
 }
 
@@ -63,7 +67,10 @@ Eigen::VectorXd Simulation::estimated(Eigen::VectorXd y) {
 void Simulation::report_steps() {
   integrator_.on_step([this](double t, const double* y) {
     system_.rearm_touches(y);
-    if (observer_) observer_->step(t, y);
+    if (collapse_) collapse_->observe(t);
+    if (!observer_) return;
+    observer_->step(t, y);
+    if (observer_->interrupt_requested()) throw StepInterrupt{};
   });
 }
 
@@ -100,13 +107,25 @@ void Simulation::start(SimulationObserver& observer) {
 bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
   observer_ = &observer;
   const double end = std::min(t_end, scene_.simulation.end_time), dt_out = scene_.simulation.output_interval;
+  if (scene_.simulation.integrator != IntegratorKind::Leapfrog) {
+    double time_scale = dt_out;
+    for (const auto& e : system_.impact_estimates())
+      if (e && e->contact_time > 0) time_scale = std::min(time_scale, e->contact_time);
+    collapse_.emplace(time_scale);
+  }
   auto last_progress = Clock::now();
   EventChatter chatter(system_.contacts().size());
   try {
     while (t_ < end * (1 - 1e-12)) {
       if (observer.stop_requested()) break;
       const double tout = std::min(end, double(next_output_) * dt_out);
-      const auto events = integrator_.advance(tout, t_);
+      std::vector<TimeIntegrator::GapEvent> events;
+      try {
+        events = integrator_.advance(tout, t_);
+      } catch (const StepInterrupt&) {
+        observer.sample(t_, state().data());  // the results end at the step it stopped at
+        break;
+      }
       if (!state().allFinite())
         throw format::ComputationError("the state of body '" + diverged_body(system_, state()) + "' is not finite");
       for (const auto& e : events) {
@@ -135,9 +154,11 @@ bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
     }
   } catch (...) {
     observer_ = nullptr;
+    collapse_.reset();
     throw;
   }
   observer_ = nullptr;
+  collapse_.reset();
   return t_ >= end * (1 - 1e-12);
 }
 

@@ -4,9 +4,11 @@
 #pragma once
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
+#include "solve/step_collapse.hpp"
 #include "solve/time_integrator.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,9 @@ public:
   virtual void progress(double /*t*/, double /*end_time*/, long /*steps*/) {}
   /// Asked between output samples: true ends the phase there (e.g. on a signal).
   virtual bool stop_requested() const { return false; }
+  /// Asked at every accepted step: true ends the phase at that step (a signal, which must act
+  /// within a second however small the steps).
+  virtual bool interrupt_requested() const { return false; }
 };
 
 /// How a run (or a phase) ended.
@@ -74,7 +79,8 @@ private:
   /// A continued phase's start state, with the contacts' impact estimates (and derived
   /// penalties) taken there.
   Eigen::VectorXd estimated(Eigen::VectorXd y);
-  /// Accepted steps rearm the touches and go to the observer of advance_to.
+  /// Accepted steps rearm the touches, go to the observer of advance_to and are watched for a
+  /// collapse; an interrupt the observer asks for ends advance_to there.
   void report_steps();
   /// InputError naming the contact, the bodies and the depth if any contact starts closed.
   void refuse_initial_penetration() const;
@@ -85,6 +91,7 @@ private:
   double t_ = 0;
   long next_output_ = 1;   ///< index of the next output time (multiples of output_interval)
   SimulationObserver* observer_ = nullptr;  ///< receives the accepted steps of advance_to
+  std::optional<StepCollapse> collapse_;    ///< watches the accepted steps of advance_to (not the leapfrog's fixed ones)
   bool continued_ = false;  ///< a later phase of a run
 };
 

@@ -224,7 +224,15 @@ std::vector<TimeIntegrator::GapEvent> TimeIntegrator::advance(double tout, doubl
     ++m.restarts;
   }
   t = reached;
-  if (m.pending) std::rethrow_exception(std::exchange(m.pending, nullptr));
+  if (m.pending) {
+    try {
+      std::rethrow_exception(std::exchange(m.pending, nullptr));
+    } catch (const StepInterrupt&) {  // ARKODE returned from the step the callback stopped at
+      y_ = m.accepted_y;
+      t = m.accepted_t;
+      throw;
+    }
+  }
   if (flag < 0) {
     const std::string body = m.worst_body();
     throw format::ComputationError(

@@ -21,6 +21,10 @@ struct IntegratorStats {
 /// How often in a row a step is retried a tenth smaller before the run fails.
 constexpr int kMaxStepRetries = 8;
 
+/// Thrown by a step callback to end advance() at the step just accepted: t and y() then hold
+/// that step (a signal must act within a step, not only when the integrator returns).
+struct StepInterrupt {};
+
 class TimeIntegrator {
 public:
   /// Starts at y0 at time t0 (a later phase of a run starts where the one before ended).
@@ -29,7 +33,7 @@ public:
   TimeIntegrator(const TimeIntegrator&) = delete;
   TimeIntegrator& operator=(const TimeIntegrator&) = delete;
 
-  /// Called after every accepted step with (t, y).
+  /// Called after every accepted step with (t, y); it may throw StepInterrupt.
   void on_step(std::function<void(double, const double*)> callback) { step_callback_ = std::move(callback); }
 
   /// A contact whose gap changed sign: closing (onset) or opening (release).

@@ -43,6 +43,7 @@ public:
     line_.show(left.empty() ? text : std::string(text) + ", " + left);
   }
   bool stop_requested() const override { return g_stop_signal != 0; }
+  bool interrupt_requested() const override { return g_stop_signal != 0; }
 
 private:
   bool quiet_;

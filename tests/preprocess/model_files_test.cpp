@@ -159,6 +159,10 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
        "refinement.hierarchical.box: zero or negative width along xi"},
       {hierarchical(kValid, "point = [0.5, 0.5]\nwidth = 0.0\n"),
        "refinement.hierarchical.width: must be positive"},
+      // wider than the patch (0.1 x 0.02 m): the whole patch refined, the global refinement THB avoids
+      {hierarchical(kValid, "point = [0.5, 0.5]\nwidth = 0.2\n"),
+       "refinement.hierarchical.width: a refined region 0.2 m wide exceeds the patch it refines (0.10198 m across its control net)"},
+      {hierarchical(kValid, "point = [0.5, 0.5]\nwidth = 1000.0\n"), "refinement.hierarchical.width: a refined region 1000 m wide"},
       {hierarchical(kValid, "box = [[0.5, 0.6], [0.0, 1.0]]\nmax_levels = 6\n"),
        "refinement.hierarchical.max_levels: must lie in 2..5"},
       {hierarchical(kValid, "box = [[0.5, 0.6], [0.0, 1.0]]\nsmallest = 1e-7\n"),
@@ -201,6 +205,19 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
        "stress_line[10].points: the stress lines together have more than 100000 points"},
       // names end at a NUL in HDF5 and file systems: refused, not cut short
       {replace(kValid, "name = \"block\"", "name = \"blo\\u0000ck\""), "body.name: contains a NUL character"},
+      // integers are bounded before they are narrowed: 2^32 + 4 must not become degree 4
+      {replace(kValid, "degrees = [2, 2]", "degrees = [4294967300, 2]"), "refinement.degrees[0]: must lie in 1..8, is 4294967300"},
+      {replace(kValid, "degrees = [2, 2]", "degrees = [9, 2]"), "refinement.degrees[0]: must lie in 1..8, is 9"},
+      {replace(kValid, "subdivisions = [4, 1]", "subdivisions = [4, -4294967295]"), "refinement.subdivisions[1]: must lie in 1..1000"},
+      {replace(kPatch, "degrees = [2, 1]", "degrees = [2, 4294967297]"), "degrees[1]: must lie in 1..8, is 4294967297"},
+      // graded knots are counted before they are marched: a tiny smallest with a growth near 1
+      // would march hundreds of millions of them
+      {replace(kValid, "subdivisions = [4, 1]", "subdivisions = [4, 1]\n[[refinement.graded]]\ndirection = \"xi\"\ntoward = 0.0\n"
+                                                "smallest = 1e-30\ngrowth = 1.0000001"),
+       "refinement.graded[0]: gives"},
+      {replace(kValid, "subdivisions = [4, 1]", "subdivisions = [4, 1]\n[[refinement.graded]]\ndirection = \"xi\"\ntoward = 0.5\n"
+                                                "smallest = 1e-9\ngrowth = 1.00001"),
+       "refinement.graded[0]: gives"},
   };
   for (const Case& c : cases) {
     INFO(c.expected);
@@ -394,6 +411,14 @@ TEST_CASE("reduction settings are validated", "[model][sid]") {
            {"[reduction]\nmethod = \"craig-bampton\"\nnormal_modes = 3\ninterface_surface = \"nope\"\ninterface_points = 2\ninterface_center = [0.5]\n",
             "reduction.interface_surface: no contact_surface named 'nope'"},
            {"[reduction]\nmethod = \"modal\"\ninterface_points = 2\n", "reduction.interface_points: only used by method"},
+           // bounded before the cast to int (2^31 crashed, 2^32 + 1 became 1), then by the side's nodes
+           {"[reduction]\nmethod = \"craig-bampton\"\nnormal_modes = 3\ninterface_surface = \"contact\"\ninterface_points = 2147483648\ninterface_center = [0.5]\n",
+            "reduction.interface_points: must lie in 1..2000000, is 2147483648"},
+           {"[reduction]\nmethod = \"craig-bampton\"\nnormal_modes = 3\ninterface_surface = \"contact\"\ninterface_points = 4294967297\ninterface_center = [0.5]\n",
+            "reduction.interface_points: must lie in 1..2000000, is 4294967297"},
+           {"[reduction]\nmethod = \"craig-bampton\"\nnormal_modes = 3\ninterface_surface = \"contact\"\ninterface_points = 2000000\ninterface_center = [0.5]\n",
+            "reduction.interface_points: 2000000 requested, the side has"},
+           {"[reduction]\nmethod = \"modal\"\nnormal_modes = 4294967306\n", "reduction.normal_modes: must lie in 0..100000"},
            // an interface on a clamped side has no DOF left (it was a failed computation, exit 1)
            {"[boundary]\nclamped = [\"top\"]\n[reduction]\nmethod = \"craig-bampton\"\nnormal_modes = 3\ninterface_surface = \"contact\"\ninterface_points = 2\ninterface_center = [0.5]\n",
             "reduction.interface_points: the 2 control points of 'contact' nearest the interface centre are all held by [boundary]"},

@@ -318,6 +318,17 @@ TEST_CASE("bad multi-patch models end with one line naming the patches", "[multi
     const auto f = write("nonmatching.model.toml", head + patch("a", "size = [1.0, 2.0]", steel) + patch("b", "size = [1.0, 1.0]\norigin = [1.0, 0.0]", steel));
     CHECK_THROWS_WITH(prep::build_body(prep::read_model_file(f)), Contains("non-matching interface between a.xi1 and b.xi0"));
   }
+  SECTION("patches that do not form one solid") {  // their relative motions would pass for elastic modes
+    const auto apart = write("apart.model.toml", head + patch("a", "size = [1.0, 1.0]", steel) + patch("b", "size = [1.0, 1.0]\norigin = [1.1, 0.0]", steel));
+    CHECK_THROWS_WITH(prep::build_body(prep::read_model_file(apart)),
+                      Contains("patch: patches 'a' and 'b' share no side (a body must be one connected solid)"));
+    const auto corner = write("corner.model.toml", head + patch("a", "size = [1.0, 1.0]", steel) + patch("b", "size = [1.0, 1.0]\norigin = [1.0, 1.0]", steel));
+    CHECK_THROWS_WITH(prep::build_body(prep::read_model_file(corner)), Contains("patches 'a' and 'b' meet at a point or an edge only"));
+    // a third patch beside a joined pair
+    const auto third = write("third.model.toml", head + patch("a", "size = [1.0, 1.0]", steel) + patch("b", "size = [1.0, 1.0]\norigin = [1.0, 0.0]", steel) +
+                                                     patch("c", "size = [1.0, 1.0]\norigin = [0.0, 3.0]", steel));
+    CHECK_THROWS_WITH(prep::build_body(prep::read_model_file(third)), Contains("patches 'a' and 'c' share no side"));
+  }
   SECTION("a patch without a material") {
     const auto f = write("nomaterial.model.toml", head + patch("a", "size = [1.0, 1.0]", steel) + patch("b", "size = [1.0, 1.0]\norigin = [1.0, 0.0]"));
     CHECK_THROWS_WITH(prep::read_model_file(f), Contains("patch 'b' has no material"));

@@ -274,6 +274,12 @@ TEST_CASE("adaptive: bad adaptive input is refused with exit 2 and one line", "[
   refused(scene + "[adaptive]\nimpact_output_interval = 1e-12\n", "exceeds the limit of 1e7 samples");
   refused(scene + "[adaptive]\ncoarse_integrator = \"leapfrog\"\n", "do not mix between phases");
   refused(scene + "[adaptive]\ncoarse_integrator = \"rk4\"\n", "unknown integrator 'rk4'");
+  // refined widths the tries cannot use: wider than the contact surface (a 1 km region refined
+  // the whole sphere, 7 GB), or too narrow to be widened to the contact in four tries (found at
+  // the touch, after the coarse phase)
+  refused(scene + "[adaptive]\ninterval_width = 1e3\n", "adaptive.interval_width: 1000 m is wider than contact surface 'contact' of 'sphere'");
+  refused(scene + "[adaptive]\ninterval_width = 0.02\n", "adaptive.interval_width: 0.02 m is wider than contact surface 'contact' of 'sphere'");
+  refused(scene + "[adaptive]\ninterval_width = 1e-12\n", "adaptive.interval_width: 1e-12 m cannot hold contact 'impact'");
 }
 
 TEST_CASE("adaptive: scene D, the wave through the rod between two sphere impacts (REFERENCE.md D, seed 001 example I)",

@@ -146,3 +146,25 @@ TEST_CASE("FloatingBody: the rotation loads on the quasistatic modes are the SID
     CHECK(loads.norm() > 1e3 * 1e-13 * scale);  // the loads themselves are far above that
   }
 }
+
+TEST_CASE("Simulation: an interrupt the observer asks for ends the run at that step, sampled there", "[runtime][unit][signals]") {
+  // one output interval for the whole flight: without the step's interrupt the integrator
+  // would return only at the end
+  run::Scene scene = free_flight_scene(0.02);
+  scene.simulation.output_interval = 0.02;
+  scene.simulation.max_step = 1e-5;
+  run::BodySpec beam;
+  beam.name = "beam";
+  beam.velocity = {1, 0, 0};
+  scene.bodies.push_back(beam);
+  run::Simulation simulation(scene, {format::read_sid(std::string(ISOSID_GOLDEN_DIR) + "/beam_small.sid.h5")});
+  struct Interrupting : CountingObserver {
+    bool interrupt_requested() const override { return steps >= 10; }
+  } observer;
+  const run::RunOutcome outcome = simulation.run(observer);
+  CHECK(outcome.status == "interrupted");
+  CHECK(observer.steps == 10);
+  CHECK(simulation.time() > 0);
+  CHECK(simulation.time() < 1e-3);
+  CHECK(observer.last_sample == simulation.time());  // the results end where the run stopped
+}

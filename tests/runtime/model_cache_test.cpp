@@ -91,6 +91,8 @@ TEST_CASE("model cache: a request isosid-prep refuses is an input error naming t
   refused(thb, {"rim", {0.1}, 0.5e-3}, "no contact_surface named 'rim'");
   refused(thb, {"contact", {0.1, 0.2}, 0.5e-3}, "tangential parameter");
   refused(graded, {"contact", {0.1}, 0.5e-3}, "no [refinement.hierarchical]");
+  // a region wider than the body would refine all of it (1 km on the 10 mm sphere: 7 GB)
+  refused(thb, {"contact", {0.1}, 1e3}, "a refined region 1000 m wide exceeds the patch it refines");
   CHECK(cache.builds() == 0);
   const bool empty = !std::filesystem::exists(dir.path("cache")) || std::filesystem::is_empty(dir.path("cache"));
   CHECK(empty);  // nothing half-built is left for a later run to find

@@ -1,11 +1,13 @@
 // isosid-run on the small golden SIDs: free flight against the closed-form motion, an
 // impact that must conserve energy and momentum, and bad scenes refused with one line.
+#include "isosid/common/sha256.hpp"
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene_runner.hpp"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -34,29 +36,7 @@ void check_agree(const json& reference, const json& other, std::initializer_list
 
 using test::replace;
 
-const std::string kImpact = R"(
-[simulation]
-dimension = "axisymmetric"
-end_time = 100e-6
-rtol = 1e-6
-atol = 1e-12
-output_interval = 1e-6
-[[flexible_body]]
-name = "sphere"
-sid = ")" + kGolden + R"(/sphere_small.sid.h5"
-position = [0.0, 0.0100001, 0.0]
-velocity = [0.0, -0.1, 0.0]
-high_modes = "quasistatic"
-[[fixed_plane]]
-name = "ground"
-normal = [0.0, 1.0, 0.0]
-[[contact]]
-name = "impact"
-body = "sphere"
-surface = "contact"
-target = "ground"
-penalty = 5e17
-)";
+const std::string kImpact = test::golden_impact_scene(kGolden);
 }  // namespace
 
 std::string beam_scene(const std::string& velocity, const std::string& angular_velocity, const std::string& gravity) {
@@ -171,6 +151,9 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
       {kImpact + "[output]\nparaview = true\nparaview_interval = 1e-7\n", "output.paraview_interval: is shorter than the output interval"},
       {replace(kImpact, "output_interval = 1e-6", "output_interval = 1e-6\nmax_step = 1e-300"),
        "simulation.max_step: end_time / max_step needs at least 1e+296 steps, more than max_steps = 10000000"},
+      // a penalty so soft that the bodies would pass through each other
+      {replace(kImpact, "penalty = 5e17", "penalty = 1e-300"), "contact[0].penalty: 1e-300 N/m^3 is below 1e-8 of the penalty derived"},
+      {replace(kImpact, "penalty = 5e17", "penalty = 1e8"), "contact[0].penalty: 1e+08 N/m^3 is below 1e-8 of the penalty derived"},
   };
   for (const Case& c : cases) {
     std::ofstream(dir.path("s.scene.toml")) << c.text;
@@ -235,7 +218,7 @@ TEST_CASE("ParaView frames that cannot be written fail the run with exit 1 and k
   CHECK(std::filesystem::exists(dir.path("out/paraview/scene.pvd")));  // the frames so far: none
 }
 
-TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run at a sample and keep its results so far", "[runtime][signals]") {
+TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run and keep its results so far", "[runtime][signals]") {
   const test::ScratchDir dir("signals");
   // the impact at 1 ns steps: about a second per 100 us simulated, far longer than the test waits
   std::ofstream(dir.path("s.scene.toml")) << replace(kImpact, "end_time = 100e-6", "end_time = 1e-3\nmax_step = 1e-9");
@@ -259,6 +242,45 @@ TEST_CASE("SIGTERM, SIGINT and SIGHUP stop a run at a sample and keep its result
     CHECK(time.size() > 1);
     CHECK(time(time.size() - 1) == Approx(reached));
   }
+}
+
+TEST_CASE("a signal stops a run within its steps, however far the next sample", "[runtime][signals]") {
+  const test::ScratchDir dir("signals-within");
+  // the sphere flies away from the plane for 1000 s at steps of 0.1 ms in one output interval:
+  // the integrator does not return for minutes
+  std::ofstream(dir.path("s.scene.toml")) << replace(replace(replace(kImpact, "end_time = 100e-6", "end_time = 1e3\nmax_step = 1e-4"),
+                                                             "output_interval = 1e-6", "output_interval = 1e3"),
+                                                     "velocity = [0.0, -0.1, 0.0]", "velocity = [0.0, 0.1, 0.0]");
+  const std::string out = dir.path("out");
+  const auto r = test::run_program("{ " + std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + out +
+                                   " & pid=$!; for i in $(seq 600); do [ -f " + out + "/summary.json ] && break; sleep 0.05; done; "
+                                   "sleep 1; kill -TERM $pid; start=$(date +%s%N); wait $pid; status=$?; "
+                                   "echo $(( ($(date +%s%N) - start) / 1000000 )); exit $status; }");
+  INFO(r.err);
+  CHECK(r.exit_status == 143);
+  // acted on at the next step: well within a second (the machine may be loaded)
+  CHECK(std::stol(r.out) < 1000);
+  const json s = json::parse(std::ifstream(out + "/summary.json"));
+  CHECK(s["status"] == "interrupted");
+  const Eigen::VectorXd time = format::h5::Reader(out + "/results.h5").vector("/time");
+  CHECK(time(time.size() - 1) == Approx(s["end_time_s"].get<double>()));
+}
+
+TEST_CASE("steps that collapse far below the contact time end the run as failed", "[runtime][contact]") {
+  // 0.1 mm into the plane at a penalty of 1e40 N/m^3: the steps fall to 1e-18 s and the run
+  // would crawl for hours toward max_steps
+  const test::ScratchDir dir("step-collapse");
+  const std::string scene = replace(replace(kImpact, "penalty = 5e17", "penalty = 1e40"), "position = [0.0, 0.0100001, 0.0]",
+                                    "position = [0.0, 0.0099, 0.0]");
+  std::ofstream(dir.path("s.scene.toml")) << replace(scene, "output_interval = 1e-6", "output_interval = 1e-6\nallow_initial_penetration = true");
+  const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + dir.path("out"));
+  INFO(r.err);
+  CHECK(r.exit_status == 1);
+  CHECK_THAT(r.err, Contains("the steps collapsed to") && Contains("a penalty far too stiff"));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  const json s = json::parse(std::ifstream(dir.path("out/summary.json")));
+  CHECK(s["status"] == "failed");
+  CHECK(std::filesystem::exists(dir.path("out/results.h5")));  // the results so far
 }
 
 TEST_CASE("a scene whose model isosid-prep refuses: exit 2 and isosid-prep's one line", "[runtime]") {
@@ -371,6 +393,54 @@ TEST_CASE("keys dotted 40 000 deep are refused by both programs in one line", "[
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK(r.err.find("line 2: nests deeper than 64 levels") != std::string::npos);
   }
+}
+
+TEST_CASE("a SID built from another model than the scene's is refused, one from another version of it rebuilt", "[runtime][sid]") {
+  const test::ScratchDir dir("sid-provenance");
+  const auto copy = [&](const std::string& from, const std::string& to) {
+    std::filesystem::copy_file(from, dir.path(to), std::filesystem::copy_options::overwrite_existing);
+  };
+  copy(kGolden + "/sphere_small.model.toml", "other.model.toml");
+  copy(kGolden + "/sphere_small.sid.h5", "s.sid.h5");  // newer than the model: no rebuild by file times
+  const std::string scene = replace(kImpact, "sid = \"" + kGolden + "/sphere_small.sid.h5\"", "sid = \"s.sid.h5\"\nmodel = \"other.model.toml\"");
+  std::ofstream(dir.path("s.scene.toml")) << scene;
+  const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + dir.path("out"));
+  CHECK(r.exit_status == 2);
+  CHECK_THAT(r.err, Contains("flexible_body[0].sid: " + dir.path("s.sid.h5") + " was built from sphere_small.model.toml, not other.model.toml"));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  // the same model file name with other content (here: a finer grading): rebuilt from it
+  std::ifstream golden_model(kGolden + "/sphere_small.model.toml");
+  std::ofstream(dir.path("sphere_small.model.toml"))
+      << replace(std::string((std::istreambuf_iterator<char>(golden_model)), std::istreambuf_iterator<char>()), "smallest = 0.5e-3",
+                 "smallest = 0.4e-3");
+  std::filesystem::last_write_time(dir.path("sphere_small.model.toml"),
+                                   std::filesystem::last_write_time(dir.path("s.sid.h5")) - std::chrono::hours(1));
+  run_scene(dir, replace(scene, "other.model.toml", "sphere_small.model.toml"), 0);
+  const format::Sid rebuilt = format::read_sid(dir.path("s.sid.h5"));
+  CHECK(rebuilt.provenance.model_sha256 == common::sha256_file(dir.path("sphere_small.model.toml")));
+}
+
+TEST_CASE("a penalty that lets the bodies sink deeper than half their Hertz approach is reported", "[runtime][contact]") {
+  // 1e12 N/m^3 on the small sphere (its contact elements derive 1.6e17): above the floor of
+  // 1e-8 of that, but the penalty layer, not the sphere, takes the impact
+  const test::ScratchDir dir("soft-penalty");
+  const json soft = run_scene(dir, replace(replace(kImpact, "penalty = 5e17", "penalty = 1e12"), "end_time = 100e-6", "end_time = 400e-6"), 0);
+  const json& contact = soft["contacts"][0];
+  CHECK(contact["penalty_too_soft"] == true);
+  CHECK(contact["penetration_per_hertz_approach"].get<double>() > 0.5);
+  // (besides the golden sphere's coarse contact elements and narrow interface)
+  const auto blames_penalty = [](const json& summary) {
+    return std::count_if(summary["warnings"].begin(), summary["warnings"].end(), [](const json& w) {
+      return w.get<std::string>().find("times the Hertz approach of the bodies") != std::string::npos &&
+             w.get<std::string>().find("its penalty (1e+12 N/m^3, scene) is too soft") != std::string::npos;
+    });
+  };
+  CHECK(blames_penalty(soft) == 1);
+  // the scene's own penalty penetrates a fraction of a percent of the approach
+  const json stiff = run_scene(dir, kImpact, 0);
+  CHECK(stiff["contacts"][0]["penalty_too_soft"] == false);
+  CHECK(stiff["contacts"][0]["penetration_per_hertz_approach"].get<double>() < 0.01);
+  CHECK(blames_penalty(stiff) == 0);
 }
 
 TEST_CASE("a contact that outgrows its contact surface is reported", "[runtime][contact]") {

@@ -35,12 +35,6 @@ nlohmann::json run_seed_scene(const ScratchDir& dir, const std::string& scene, c
   return run_file(dir, scene, 0);
 }
 
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
-}
-
 std::string model_text(const std::string& file) {
   std::ifstream in(std::string(ISOSID_MODELS_DIR) + "/" + file);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

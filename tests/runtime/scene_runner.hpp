@@ -2,6 +2,7 @@
 // their model files through isosid-prep (ISOSID_PREP), the JSON summary parsed.
 #pragma once
 #include "support/run_program.hpp"
+#include "support/scene_text.hpp"
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -14,8 +15,6 @@ nlohmann::json run_scene(const ScratchDir& dir, const std::string& text, int exp
 void copy_model_file(const ScratchDir& dir, const std::string& file);
 /// Copies a scene of models/ and its model into dir and runs it.
 nlohmann::json run_seed_scene(const ScratchDir& dir, const std::string& scene, const std::string& model);
-/// `text` with its first `from` replaced by `to` (which must be there).
-std::string replace(std::string text, const std::string& from, const std::string& to);
 /// The text of a file of models/.
 std::string model_text(const std::string& file);
 /// The size of the relative error of a [reference] value in a summary (stored signed).

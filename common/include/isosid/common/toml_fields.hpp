@@ -39,6 +39,13 @@ public:
   double positive(const std::string& key, double fallback) const;
   long long integer(const std::string& key) const;
   long long integer(const std::string& key, long long fallback) const;
+  /// An integer within [lo, hi]: every count and index read from a file is bounded here,
+  /// before it is narrowed to int or sizes anything.
+  int integer_in(const std::string& key, int lo, int hi) const;
+  int integer_in(const std::string& key, int lo, int hi, int fallback) const;
+  std::vector<int> integers_in(const std::string& key, int lo, int hi) const;
+  /// A name that becomes part of an HDF5 path or a dotted field: non-empty, without '/'.
+  std::string name(const std::string& key) const;
   std::string string(const std::string& key) const;
   std::string string(const std::string& key, const std::string& fallback) const;
   bool boolean(const std::string& key, bool fallback) const;
