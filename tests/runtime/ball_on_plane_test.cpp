@@ -2,6 +2,7 @@
 // contact must not be stiffer than the validated 2D one, and the elements' depth under the
 // contact decides it.
 #include "scene_runner.hpp"
+#include "support/scene_text.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
