@@ -125,6 +125,27 @@ TEST_CASE("isosid-diff exits 0 for the same body in another basis and 1 for a di
   CHECK(loose.exit_status == 0);
 }
 
+TEST_CASE("isosid-diff refuses a tolerance that is not a finite number >= 0, in one short line", "[format][tools]") {
+  const test::ScratchDir dir("diff-rtol");
+  const auto body = test::random_lumped_body(12, 5, 8);
+  auto stiffer = test::lumped_sid(body);
+  stiffer.refmod.frequencies_hz(4) *= 1.1;
+  stiffer.Ke.M0(4, 4) *= 1.1 * 1.1;
+  format::write_sid(test::lumped_sid(body), dir.path("a.sid.h5"));
+  format::write_sid(stiffer, dir.path("b.sid.h5"));
+  const std::string diff = std::string(ISOSID_DIFF_EXE) + " " + dir.path("a.sid.h5") + " " + dir.path("b.sid.h5") + " --rtol ";
+  for (const char* rtol : {"nan", "NaN", "-nan", "inf", "-inf", "1e400", "-1", "-1e-300", "abc", "0x"}) {
+    INFO(rtol);
+    const auto r = test::run_program(diff + rtol);
+    CHECK(r.exit_status == 2);
+    CHECK_THAT(r.err, Contains("--rtol: must be a finite number >= 0"));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err.size() < 160);
+  }
+  CHECK(test::run_program(diff + "0").exit_status == 1);  // exact: the stiffer mode differs
+  CHECK(test::run_program(diff + "0.5").exit_status == 0);
+}
+
 TEST_CASE("isosid-export onto a FIFO is refused in one line and leaves it a FIFO", "[format][tools]") {
   const test::ScratchDir dir("export-fifo");
   format::write_sid(test::lumped_sid(test::random_lumped_body(8, 3, 1)), dir.path("a.sid.h5"));

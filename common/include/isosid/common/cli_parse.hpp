@@ -4,10 +4,24 @@
 #include "isosid/common/cli_guard.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <optional>
+#include <string>
 
 namespace isosid::common {
+
+/// For tolerances: a finite number >= 0. CLI11's range checks let "nan" through (every
+/// comparison with it is false), and print "inf"'s refusal against a 310-digit bound.
+inline const CLI::Validator kFiniteNonNegative{[](std::string& text) {
+                                                 char* end = nullptr;
+                                                 const double value = std::strtod(text.c_str(), &end);
+                                                 if (text.empty() || *end != '\0' || !std::isfinite(value) || value < 0)
+                                                   return "must be a finite number >= 0, not '" + text + "'";
+                                                 return std::string();
+                                               },
+                                               "FINITE >= 0"};
 
 /// Parses argv; returns an exit status if the program should stop now (help or usage error).
 inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
