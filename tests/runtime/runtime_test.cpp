@@ -3,6 +3,7 @@
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene_runner.hpp"
+#include "support/impact_scene.hpp"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -35,29 +36,7 @@ void check_agree(const json& reference, const json& other, std::initializer_list
 
 using test::replace;
 
-const std::string kImpact = R"(
-[simulation]
-dimension = "axisymmetric"
-end_time = 100e-6
-rtol = 1e-6
-atol = 1e-12
-output_interval = 1e-6
-[[flexible_body]]
-name = "sphere"
-sid = ")" + kGolden + R"(/sphere_small.sid.h5"
-position = [0.0, 0.0100001, 0.0]
-velocity = [0.0, -0.1, 0.0]
-high_modes = "quasistatic"
-[[fixed_plane]]
-name = "ground"
-normal = [0.0, 1.0, 0.0]
-[[contact]]
-name = "impact"
-body = "sphere"
-surface = "contact"
-target = "ground"
-penalty = 5e17
-)";
+const std::string kImpact = test::golden_impact_scene(kGolden + "/sphere_small.sid.h5");
 }  // namespace
 
 std::string beam_scene(const std::string& velocity, const std::string& angular_velocity, const std::string& gravity) {
