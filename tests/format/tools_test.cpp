@@ -158,3 +158,12 @@ TEST_CASE("isosid-export onto a FIFO is refused in one line and leaves it a FIFO
     CHECK(std::filesystem::is_fifo(dir.path("fifo")));
   }
 }
+
+TEST_CASE("isosid-info, isosid-diff and isosid-export print the project's version", "[format][tools]") {
+  for (const std::string& exe : {std::string(ISOSID_INFO_EXE), std::string(ISOSID_DIFF_EXE), std::string(ISOSID_EXPORT_EXE)}) {
+    const auto r = test::run_program(exe + " --version");
+    CHECK(r.exit_status == 0);
+    CHECK_THAT(r.out, Catch::Matchers::StartsWith(std::filesystem::path(exe).filename().string() + " " + ISOSID_VERSION));
+    CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
+  }
+}

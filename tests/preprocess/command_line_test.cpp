@@ -1,6 +1,6 @@
 // isosid-prep's command line: flags it cannot all honour are refused in one line (exit 2)
 // before any work, never some of them dropped; an output that is no regular file is refused
-// before the work too.
+// before the work too; --version.
 #include "support/run_program.hpp"
 
 #include <catch2/catch.hpp>
@@ -52,4 +52,10 @@ TEST_CASE("isosid-prep -o onto a FIFO or a folder is refused before the work and
   }
   CHECK(std::filesystem::is_fifo(dir.path("fifo")));
   CHECK(std::filesystem::is_directory(dir.path("folder")));
+}
+
+TEST_CASE("isosid-prep prints the project's version", "[prep][command-line]") {
+  const auto r = test::run_program(kPrep + " --version");
+  CHECK(r.exit_status == 0);
+  CHECK_THAT(r.out, Catch::Matchers::StartsWith(std::string("isosid-prep ") + ISOSID_VERSION));
 }

@@ -1,7 +1,7 @@
 // isosid-run's results folder as a user meets it: -o that is no folder, or that holds an input
 // the run would replace, is refused in one line before any work; a folder another run writes
 // is refused naming that run; a rerun leaves nothing of the earlier run; a run that fails
-// before its first sample still ends with one "failed:" line and exit 1.
+// before its first sample still ends with one "failed:" line and exit 1. Also --version.
 #include "scene_runner.hpp"
 #include "support/impact_scene.hpp"
 
@@ -129,4 +129,10 @@ TEST_CASE("a run that fails before its first sample ends with one failed: line a
     CHECK(summary["status"] == "failed");
     CHECK(fs::exists(dir.path("out/results.h5")));
   }
+}
+
+TEST_CASE("isosid-run prints the project's version", "[runtime][results-folder]") {
+  const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " --version");
+  CHECK(r.exit_status == 0);
+  CHECK_THAT(r.out, Catch::Matchers::StartsWith(std::string("isosid-run ") + ISOSID_VERSION));
 }
