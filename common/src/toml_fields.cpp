@@ -2,6 +2,7 @@
 #include "isosid/common/toml_fields.hpp"
 
 #include "isosid/common/toml_bounds.hpp"
+#include "isosid/format/file_kind.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -12,8 +13,8 @@
 namespace isosid::common {
 
 toml::table parse_toml_file(const std::string& path) {
+  format::require_input_file(path);  // a FIFO would block the read, a directory has no text
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw format::InputError(path, "", "file not found");
   const auto bytes = std::filesystem::file_size(path, ec);
   if (ec) throw format::InputError(path, "", "cannot be read");
   if (bytes > kMaxTomlBytes)

@@ -2,6 +2,7 @@
 #include "isosid/format/atomic_output.hpp"
 
 #include "isosid/format/error.hpp"
+#include "isosid/format/file_kind.hpp"
 
 #include <atomic>
 #include <csignal>
@@ -59,12 +60,14 @@ void remove_temporaries_on_signals(const char* program) {
   for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, remove_temporaries_and_exit);
 }
 
-AtomicOutput::AtomicOutput(std::string target) : target_(std::move(target)) {
-  const fs::path t(target_);
-  const fs::path dir = t.has_parent_path() ? t.parent_path() : fs::path(".");
+AtomicOutput::AtomicOutput(std::string target) : target_(std::move(target)), destination_(target_) {
+  require_output_file(target_);
   std::error_code ec;
+  // a link to a regular file is written through: the file is replaced, the link stays
+  if (fs::is_symlink(target_, ec)) destination_ = fs::canonical(target_).string();
+  const fs::path t(destination_);
+  const fs::path dir = t.has_parent_path() ? t.parent_path() : fs::path(".");
   if (!fs::is_directory(dir, ec)) throw InputError(target_, "", "output folder '" + dir.string() + "' does not exist");
-  if (fs::is_directory(t, ec)) throw InputError(target_, "", "output path is a directory");
   static std::atomic<unsigned> counter{0};
   temp_ = (dir / ("." + t.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
                   std::to_string(counter++)))
@@ -87,8 +90,9 @@ void AtomicOutput::commit() {
   const int synced = ::fsync(fd);
   ::close(fd);
   if (synced != 0) throw ComputationError(target_ + ": cannot flush temporary file to disk");
+  require_output_file(target_);  // what stands there may have changed while the output was written
   std::error_code ec;
-  fs::rename(temp_, target_, ec);
+  fs::rename(temp_, destination_, ec);
   if (ec) throw ComputationError(target_ + ": cannot rename temporary file onto target: " + ec.message());
   committed_ = true;
   if (slot_ >= 0) g_used[slot_].store(false), slot_ = -1;  // the target is complete: a signal now leaves it

@@ -2,6 +2,7 @@
 #include "isosid/format/hdf5_file.hpp"
 
 #include "isosid/format/error.hpp"
+#include "isosid/format/file_kind.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -276,9 +277,8 @@ void Writer::close() {
 
 Reader::Reader(const std::string& path) : path_(path) {
   silence_hdf5();
+  require_input_file(path);
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path, "", "file not found");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory, not a file");
   const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
   if (is_hdf5 <= 0) throw InputError(path, "", "not an HDF5 file");
   file_bytes_ = std::filesystem::file_size(path, ec);

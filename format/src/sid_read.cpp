@@ -1,6 +1,7 @@
 // Reads and validates a SID from HDF5; paths from the layout table.
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/error.hpp"
+#include "isosid/format/file_kind.hpp"
 #include "isosid/format/isolated_probe.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "isosid/format/sid_layout.hpp"
@@ -210,7 +211,8 @@ Sid read_sid_unprobed(const std::string& path, const ReadOptions& options) {
 
 Sid read_sid(const std::string& path, const ReadOptions& options) {
   // a corrupt file may crash libhdf5 or make it allocate without bound: a child reads it first,
-  // and its verdict on bad input is final
+  // and its verdict on bad input is final; a FIFO or a directory is refused before, at once
+  require_input_file(path);
   probe_in_child(path, [&] { read_sid_unprobed(path, options); });
   return read_sid_unprobed(path, options);
 }

@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
     double rtol = 1e-6;
     app.add_option("a", file_a, "first SID file")->required();
     app.add_option("b", file_b, "second SID file")->required();
-    app.add_option("--rtol", rtol, "relative tolerance (default 1e-6)")->check(CLI::PositiveNumber);
+    app.add_option("--rtol", rtol, "relative tolerance (default 1e-6)")->check(isosid::common::kFiniteNonNegative);
     if (auto status = isosid::common::parse_command_line(app, argc, argv)) return *status;
     const Sid a = read_sid(file_a);
     const Sid b = read_sid(file_b);

@@ -2,6 +2,7 @@
 // flexible FFR body HDF5). Exit 0 written, 2 bad input (unknown format, unwritable path,
 // the SID itself as output, a SID the format cannot hold).
 #include "isosid/common/cli_parse.hpp"
+#include "isosid/format/file_kind.hpp"
 #include "isosid/format/sid_export.hpp"
 #include "isosid/format/sid_io.hpp"
 
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
       const std::size_t dot = file.rfind(".sid.h5");
       output = (dot == std::string::npos ? file : file.substr(0, dot)) + extension.at(format);
     }
+    require_output_file(output);
     if (std::filesystem::exists(output) && std::filesystem::equivalent(output, file))
       throw InputError(output, "--output", "is the SID itself: choose another file");
     const ExportFormat kind = format == "sid-fem" ? ExportFormat::SidFem : ExportFormat::MbsimH5;

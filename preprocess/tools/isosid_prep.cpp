@@ -1,10 +1,12 @@
 // isosid-prep: builds an isogeometric body from a model file, assembles it, reduces it and
 // writes its SID (or, with --modes, reports its size and natural frequencies).
 #include "isosid/format/atomic_output.hpp"
+#include "isosid/format/file_kind.hpp"
 #include "isosid/common/cli_parse.hpp"
 #include "pipeline/prepare.hpp"
 #include "tools/prep_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -74,6 +76,16 @@ int main(int argc, char** argv) {
                    "surface) at tangential parameter(s) U[,V] of contact surface SURFACE (isosid-run asks so at an impact)");
     app.add_option("--refine-width", refine_width, "with --refine-at: physical width of the refined region, m");
     if (auto status = common::parse_command_line(app, argc, argv)) return *status;
+    // flags that cannot all be honoured are refused, not some of them silently dropped
+    if (n_modes > 0 && app.count("--output")) throw format::InputError(model_file, "--modes", "reports only; it writes no SID (drop -o)");
+    if (coarse && app.count("--refine-at")) throw format::InputError(model_file, "--coarse", "and --refine-at exclude each other");
+    if (n_modes == 0) {  // the SID's path, checked before any work: only a regular file is replaced, never the model
+      if (output.empty()) output = default_output(model_file);
+      format::require_output_file(output);
+      std::error_code same_error;
+      if (std::filesystem::equivalent(model_file, output, same_error))
+        throw format::InputError(output, "-o", "is the model file itself; the SID would overwrite it");
+    }
 
     prep::ModelSpec spec = prep::read_model_file(model_file);  // progress starts on valid input (a meshed body is meshed here: gmsh takes well under a second)
     if (app.count("--contact-radius")) prep::set_contact_radius(spec, contact_radius, "--contact-radius");
@@ -83,17 +95,17 @@ int main(int argc, char** argv) {
       const auto [surface, at] = parse_refinement_point(refine_at, model_file);
       prep::set_refinement_point(spec, surface, at, refine_width, "--refine-at");
     }
-    if (coarse) spec = prep::coarse_model_spec(std::move(spec));
+    if (coarse) {
+      if (std::none_of(spec.patches.begin(), spec.patches.end(), [](const prep::PatchSpec& p) { return p.refinement.hierarchical.has_value(); }))
+        throw format::InputError(model_file, "--coarse", "the model has no [refinement.hierarchical]");
+      spec = prep::coarse_model_spec(std::move(spec));
+    }
     prep::StderrProgress progress("isosid-prep");
     prep::StageObserver& observer = quiet ? prep::no_progress() : progress;
     if (n_modes > 0) {
       prep::print_modal_report(prep::analyse_modes(spec, n_modes, observer), as_json);
       return 0;
     }
-    if (output.empty()) output = default_output(model_file);
-    std::error_code same_error;
-    if (std::filesystem::equivalent(model_file, output, same_error))
-      throw format::InputError(output, "-o", "is the model file itself; the SID would overwrite it");
     prep::print_sid_report(prep::prepare(spec, {.build_sid = true, .output = output}, observer), output, as_json);
     return 0;
   });

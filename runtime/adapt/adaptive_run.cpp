@@ -173,8 +173,8 @@ IntervalDecision decide_interval(double utilization, bool beyond, double width) 
 
 }  // namespace
 
-AdaptiveRun::AdaptiveRun(Scene scene, std::string out_dir, bool quiet)
-    : scene_(std::move(scene)), out_dir_(std::move(out_dir)), quiet_(quiet) {
+AdaptiveRun::AdaptiveRun(Scene scene, RunFolder& folder, bool quiet)
+    : scene_(std::move(scene)), folder_(folder), out_dir_(folder.path()), quiet_(quiet) {
   if (!scene_.hertz_contacts.empty())  // the phases' results would be joined without them
     throw format::InputError(scene_.file, "hertz_contact", "Hertz contacts in runs with adaptive bodies are not available yet");
 }
@@ -236,9 +236,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     if (phase++ == 0) {
       // the scene, its models and monitors (the recorder refuses those the models lack) are
       // accepted: the folder now holds this run, and no phases or frames of an earlier one
-      mark_run_started(out_dir_, scene_.file);
-      std::filesystem::remove_all(std::filesystem::path(out_dir_) / "phases");
-      std::filesystem::remove_all(std::filesystem::path(out_dir_) / "paraview");
+      folder_.start(scene_.file);
     }
     if (series) recorder.draw_frames(&*series);
     const double start = simulation.time();

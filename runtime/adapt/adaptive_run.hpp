@@ -5,6 +5,7 @@
 // are apart again, and the state moved back. Each phase writes a results folder of its own
 // (phases/NN-...); the run's results.h5 and summary.json join them and log every decision.
 #pragma once
+#include "output/run_folder.hpp"
 #include "scene/scene.hpp"
 #include "solve/simulation.hpp"
 
@@ -16,8 +17,9 @@ namespace isosid::run {
 
 class AdaptiveRun {
 public:
-  /// `scene` must have adaptive bodies; results go to `out_dir`.
-  AdaptiveRun(Scene scene, std::string out_dir, bool quiet);
+  /// `scene` must have adaptive bodies; results go to `folder` (started once the first
+  /// phase is accepted; it must outlive the run).
+  AdaptiveRun(Scene scene, RunFolder& folder, bool quiet);
 
   struct Result {
     RunOutcome outcome;     ///< of the run: "completed", or the failure or stop of the phase that ended it
@@ -29,6 +31,7 @@ public:
 
 private:
   Scene scene_;
+  RunFolder& folder_;
   std::string out_dir_;
   bool quiet_;
 };

@@ -44,10 +44,7 @@ double ParaviewSeries::frame_interval(const Scene& scene) {
 void ParaviewSeries::sample(double t, const double* y) {
   if (t < next_time_ * (1 - 1e-9)) return;
   try {
-    if (frames_ == 0) {  // a folder of this run only: frames of an earlier run would mix in
-      std::filesystem::remove_all(dir_);
-      std::filesystem::create_directories(dir_);
-    }
+    if (frames_ == 0) std::filesystem::create_directories(dir_);  // RunFolder::start removed an earlier run's
     char suffix[32];
     std::snprintf(suffix, sizeof suffix, "_%05d.vtu", frames_);
     int part = 0;
@@ -124,6 +121,10 @@ std::string ParaviewSeries::write_collection(const std::string& dir, const std::
   const std::string path = (std::filesystem::path(dir) / "scene.pvd").string();
   try {
     std::filesystem::create_directories(dir);
+    // a collection never lists a frame that is not there (removed while the run wrote)
+    for (const vtk::CollectionEntry& e : entries)
+      if (!std::filesystem::exists(std::filesystem::path(dir) / e.file))
+        throw format::ComputationError("frame " + e.file + " is missing: removed while the run wrote");
     vtk::write_pvd(path, entries);
   } catch (const std::exception& e) {
     throw format::ComputationError("ParaView collection " + path + ": " + e.what());

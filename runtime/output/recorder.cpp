@@ -104,36 +104,41 @@ Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(
 
 void Recorder::sample(double t, const double* y) {
   const OutputClock clock(output_s_);
+  // everything that may fail first (the quasistatic solve may not converge): a failed sample
+  // adds nothing, and every series keeps one entry per time
+  const auto states = system_.contact_states(y);  // also solves the quasistatic coordinates for y
+  const auto hertz = system_.hertz_states(y);
+  const auto joints = system_.joint_states(y);
+  const Energies e = system_.energies(y, states);
+  const bool first = time_.empty();
+  if (first) update_quasistatic_rates(t, y);  // the start: no rate yet
+  std::vector<Eigen::Vector3d> monitored;
+  for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) monitored.push_back(monitor_value(m, y));
+
   time_.push_back(t);
   body_states_.emplace_back(y, y + system_.size());
-  const auto states = system_.contact_states(y);  // also solves the quasistatic coordinates for y
   for (std::size_t b = 0; b < body_q_.size(); ++b) {
     const Eigen::VectorXd& q = system_.bodies()[b]->q(y);
     body_q_[b].insert(body_q_[b].end(), q.data(), q.data() + q.size());
   }
-  if (time_.size() == 1) last_step_t_ = t;  // a run (or a later phase of one) starts here, not at 0
+  if (first) last_step_t_ = t;  // a run (or a later phase of one) starts here, not at 0
   for (std::size_t k = 0; k < states.size(); ++k) {
-    if (time_.size() == 1) last_force_[k] = states[k].force.norm();  // a phase may start loaded
-    if (time_.size() == 1 && impact_modes_[k]) impact_modes_[k]->step(t, y, states[k].force.norm(), false);  // the start
+    if (first) last_force_[k] = states[k].force.norm();  // a phase may start loaded
+    if (first && impact_modes_[k]) impact_modes_[k]->step(t, y, states[k].force.norm(), false);  // the start
     for (int a = 0; a < 3; ++a) contact_force_[k].push_back(states[k].force(a));
     contact_points_[k].push_back(states[k].active_points);
     contact_penetration_[k].push_back(states[k].max_penetration);
   }
-  const auto hertz = system_.hertz_states(y);
   for (std::size_t k = 0; k < hertz.size(); ++k) hertz_logs_[k].sample(hertz[k]);
-  const auto joints = system_.joint_states(y);
   for (std::size_t k = 0; k < joints.size(); ++k) {
     for (int a = 0; a < 3; ++a) joint_force_[k].push_back(joints[k].force(a)), joint_torque_[k].push_back(joints[k].torque(a));
     joint_error_[k].push_back(joints[k].position_error);
     joint_error_[k].push_back(joints[k].angle_error);
   }
-  const Energies e = system_.energies(y, states);
   energies_.push_back({e.kinetic, e.elastic, e.gravity, e.penalty, e.dissipated, e.total()});
-  if (time_.size() == 1) update_quasistatic_rates(t, y);  // the start: no rate yet
   for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
-    const Eigen::Vector3d value = monitor_value(m, y);
-    for (int a = 0; a < 3; ++a) monitor_values_[m].push_back(value(a));
-    if (time_.size() == 1) monitor_events_[m].start(t, value);
+    for (int a = 0; a < 3; ++a) monitor_values_[m].push_back(monitored[m](a));
+    if (first) monitor_events_[m].start(t, monitored[m]);
   }
   for (StressMonitor& s : stress_monitors_) s.sample(y);
   if (frames_) frames_->sample(t, y);  // the quasistatic coordinates are y's (contact_states above)

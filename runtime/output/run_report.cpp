@@ -8,14 +8,6 @@
 
 namespace isosid::run {
 
-void mark_run_started(const std::string& dir, const std::string& scene_file) {
-  const std::filesystem::path folder(dir);
-  std::filesystem::create_directories(folder);
-  std::filesystem::remove(folder / "results.h5");
-  const nlohmann::json running = {{"scene", scene_file}, {"status", "running"}};
-  format::write_text_atomically((folder / "summary.json").string(), running.dump(2) + "\n");
-}
-
 nlohmann::json write_run_report(const std::string& dir, const Recorder& recorder, const Simulation& simulation,
                                 const RunOutcome& outcome) {
   const std::filesystem::path folder(dir);

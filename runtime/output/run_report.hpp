@@ -9,11 +9,6 @@
 
 namespace isosid::run {
 
-/// Creates the results folder and marks it as holding a run under way: summary.json with
-/// status "running" (so that an earlier run's "completed" cannot outlive a crash of this one),
-/// and no results.h5 of an earlier run.
-void mark_run_started(const std::string& dir, const std::string& scene_file);
-
 /// Writes dir/results.h5 and dir/summary.json and returns the summary.
 nlohmann::json write_run_report(const std::string& dir, const Recorder& recorder, const Simulation& simulation,
                                 const RunOutcome& outcome);

@@ -4,6 +4,7 @@
 #include "body/floating_body.hpp"
 #include "isosid/common/number_text.hpp"
 #include "isosid/common/toml_fields.hpp"
+#include "isosid/format/file_kind.hpp"
 
 #include <algorithm>
 #include <array>
@@ -287,8 +288,11 @@ Scene read_scene_file(const std::string& path) {
     if (f.adaptive && f.model_file.empty()) b.fail("model", "an adaptive body needs its model file (with [refinement.hierarchical])");
     for (const char* key : {"q0", "qdot0"})
       if (f.adaptive && b.has(key)) b.fail(key, "an adaptive body changes its model (and its coordinates) at each impact: start it at rest");
-    if (!f.model_file.empty() && !fs::is_regular_file(f.model_file)) b.fail("model", "file not found: " + f.model_file);
-    if (!f.adaptive && f.model_file.empty() && !fs::is_regular_file(f.sid_file)) b.fail("sid", "file not found: " + f.sid_file);
+    const auto require_file = [&](const char* key, const std::string& file) {
+      if (const std::string problem = format::input_file_problem(file); !problem.empty()) b.fail(key, problem + ": " + file);
+    };
+    if (!f.model_file.empty()) require_file("model", f.model_file);
+    if (!f.adaptive && f.model_file.empty()) require_file("sid", f.sid_file);
     if (b.has("q0")) {
       const auto v = b.numbers("q0");
       f.q0 = Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(v.size()));

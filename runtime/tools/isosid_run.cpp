@@ -5,6 +5,7 @@
 #include "adapt/adaptive_run.hpp"
 #include "output/paraview_series.hpp"
 #include "output/recorder.hpp"
+#include "output/run_folder.hpp"
 #include "output/run_report.hpp"
 #include "scene/sid_provider.hpp"
 #include "solve/contact_resolution.hpp"
@@ -82,10 +83,10 @@ int report(const nlohmann::json& summary, const run::RunOutcome& outcome, double
 }
 
 /// A scene with adaptive bodies: phase by phase (run::AdaptiveRun), reported like a plain run.
-int run_adaptive(run::Scene scene, const std::string& out_dir, bool as_json, bool quiet) {
-  run::AdaptiveRun adaptive(std::move(scene), out_dir, quiet);  // marks the folder once its first phase is accepted
+int run_adaptive(run::Scene scene, run::RunFolder& folder, bool as_json, bool quiet) {
+  run::AdaptiveRun adaptive(std::move(scene), folder, quiet);  // starts the folder once its first phase is accepted
   const run::AdaptiveRun::Result result = adaptive.run([] { return g_stop_signal != 0; });
-  return report(result.summary, result.outcome, result.end_time, out_dir, as_json, quiet);
+  return report(result.summary, result.outcome, result.end_time, folder.path(), as_json, quiet);
 }
 
 }  // namespace
@@ -106,7 +107,8 @@ int main(int argc, char** argv) {
     run::Scene scene = run::read_scene_file(scene_file);
     if (paraview_flag) scene.output.paraview = true;
     if (out_dir.empty()) out_dir = default_output(scene_file);
-    if (scene.has_adaptive_bodies()) return run_adaptive(std::move(scene), out_dir, as_json, quiet);
+    run::RunFolder folder(out_dir, scene);  // before any work: a results folder this run may write, and only this run
+    if (scene.has_adaptive_bodies()) return run_adaptive(std::move(scene), folder, as_json, quiet);
     std::vector<format::Sid> sids = run::load_sids(scene, quiet);
     run::fit_contact_resolution(scene, sids, quiet);
     run::Simulation simulation(std::move(scene), std::move(sids));
@@ -119,7 +121,7 @@ int main(int argc, char** argv) {
       std::cerr << "isosid-run: interrupted by " << strsignal(g_stop_signal) << " before the run started\n";
       return 128 + int(g_stop_signal);
     }
-    run::mark_run_started(out_dir, scene_file);  // only once the scene, its SIDs and monitors are accepted
+    folder.start(scene_file);  // only once the scene, its SIDs and monitors are accepted
     const run::RunOutcome outcome = simulation.run(recorder);
     recorder.end_progress();
     const nlohmann::json summary = run::write_run_report(out_dir, recorder, simulation, outcome);

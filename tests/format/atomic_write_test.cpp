@@ -1,4 +1,5 @@
-// An interrupted or failed SID write leaves nothing at the target path (and keeps an older file).
+// An interrupted or failed SID write leaves nothing at the target path (and keeps an older
+// file); an output replaces nothing but a regular file.
 #include "isosid/format/atomic_output.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "support/lumped_sid.hpp"
@@ -8,6 +9,8 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -105,4 +108,39 @@ TEST_CASE("a signal while an output is being written removes its temporary file"
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 128 + SIGTERM);
   CHECK(std::filesystem::is_empty(dir.dir()));  // neither the target nor a temporary file
+}
+
+TEST_CASE("an output never replaces a FIFO, a folder or a dangling link, and writes through a link to a file", "[format][atomic]") {
+  const test::ScratchDir dir("atomic-special");
+  REQUIRE(::mkfifo(dir.path("fifo").c_str(), 0600) == 0);
+  fs::create_symlink("fifo", dir.path("link_to_fifo"));
+  fs::create_symlink("nothing", dir.path("dangling"));
+  fs::create_directory(dir.path("folder"));
+  for (const char* name : {"fifo", "link_to_fifo", "dangling", "folder"}) {
+    INFO(name);
+    CHECK_THROWS_WITH(format::write_text_atomically(dir.path(name), "text"),
+                      Catch::Matchers::Contains("an output replaces only a regular file"));
+  }
+  CHECK(fs::is_fifo(dir.path("fifo")));
+  CHECK(fs::is_symlink(dir.path("link_to_fifo")));
+  CHECK(fs::is_symlink(dir.path("dangling")));
+  CHECK(fs::is_directory(dir.path("folder")));
+
+  std::ofstream(dir.path("real")) << "old";
+  fs::create_symlink("real", dir.path("link_to_real"));
+  format::write_text_atomically(dir.path("link_to_real"), "new");
+  CHECK(fs::is_symlink(dir.path("link_to_real")));
+  std::ifstream real(dir.path("real"));
+  CHECK(std::string(std::istreambuf_iterator<char>(real), {}) == "new");
+  CHECK(files_in(dir.dir()) == 6);  // no temporary file left
+}
+
+TEST_CASE("a FIFO that appears at the target while the output is written is not replaced", "[format][atomic]") {
+  const test::ScratchDir dir("atomic-late-fifo");
+  const std::string target = dir.path("out.txt");
+  format::AtomicOutput out(target);
+  std::ofstream(out.temp_path()) << "text";
+  REQUIRE(::mkfifo(target.c_str(), 0600) == 0);
+  CHECK_THROWS_WITH(out.commit(), Catch::Matchers::Contains("is a FIFO, not a file"));
+  CHECK(fs::is_fifo(target));
 }

@@ -1,4 +1,5 @@
-// isosid-info and isosid-diff as a user runs them: output, JSON keys and exit statuses.
+// isosid-info, isosid-diff and isosid-export as a user runs them: output, JSON keys and exit
+// statuses.
 #include "isosid/format/isolated_probe.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "support/hdf5_tamper.hpp"
@@ -6,9 +7,11 @@
 #include "support/run_program.hpp"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 using namespace isosid;
 using Catch::Matchers::Contains;
@@ -120,4 +123,47 @@ TEST_CASE("isosid-diff exits 0 for the same body in another basis and 1 for a di
   CHECK_THAT(differ.out, Contains("frequency of mode 4"));
   const auto loose = test::run_program(diff + " --rtol 0.01 " + dir.path("a.sid.h5") + " " + dir.path("c.sid.h5"));
   CHECK(loose.exit_status == 0);
+}
+
+TEST_CASE("isosid-diff refuses a tolerance that is not a finite number >= 0, in one short line", "[format][tools]") {
+  const test::ScratchDir dir("diff-rtol");
+  const auto body = test::random_lumped_body(12, 5, 8);
+  auto stiffer = test::lumped_sid(body);
+  stiffer.refmod.frequencies_hz(4) *= 1.1;
+  stiffer.Ke.M0(4, 4) *= 1.1 * 1.1;
+  format::write_sid(test::lumped_sid(body), dir.path("a.sid.h5"));
+  format::write_sid(stiffer, dir.path("b.sid.h5"));
+  const std::string diff = std::string(ISOSID_DIFF_EXE) + " " + dir.path("a.sid.h5") + " " + dir.path("b.sid.h5") + " --rtol ";
+  for (const char* rtol : {"nan", "NaN", "-nan", "inf", "-inf", "1e400", "-1", "-1e-300", "abc", "0x"}) {
+    INFO(rtol);
+    const auto r = test::run_program(diff + rtol);
+    CHECK(r.exit_status == 2);
+    CHECK_THAT(r.err, Contains("--rtol: must be a finite number >= 0"));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err.size() < 160);
+  }
+  CHECK(test::run_program(diff + "0").exit_status == 1);  // exact: the stiffer mode differs
+  CHECK(test::run_program(diff + "0.5").exit_status == 0);
+}
+
+TEST_CASE("isosid-export onto a FIFO is refused in one line and leaves it a FIFO", "[format][tools]") {
+  const test::ScratchDir dir("export-fifo");
+  format::write_sid(test::lumped_sid(test::random_lumped_body(8, 3, 1)), dir.path("a.sid.h5"));
+  REQUIRE(::mkfifo(dir.path("fifo").c_str(), 0600) == 0);
+  for (const char* format : {"sid-fem", "mbsim-h5"}) {
+    const auto r = test::run_program(std::string(ISOSID_EXPORT_EXE) + " " + dir.path("a.sid.h5") + " --format " + format + " -o " + dir.path("fifo"));
+    CHECK(r.exit_status == 2);
+    CHECK_THAT(r.err, Contains("is a FIFO, not a file"));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(std::filesystem::is_fifo(dir.path("fifo")));
+  }
+}
+
+TEST_CASE("isosid-info, isosid-diff and isosid-export print the project's version", "[format][tools]") {
+  for (const std::string& exe : {std::string(ISOSID_INFO_EXE), std::string(ISOSID_DIFF_EXE), std::string(ISOSID_EXPORT_EXE)}) {
+    const auto r = test::run_program(exe + " --version");
+    CHECK(r.exit_status == 0);
+    CHECK_THAT(r.out, Catch::Matchers::StartsWith(std::filesystem::path(exe).filename().string() + " " + ISOSID_VERSION));
+    CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
+  }
 }

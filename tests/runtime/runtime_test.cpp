@@ -4,6 +4,7 @@
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene_runner.hpp"
+#include "support/impact_scene.hpp"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <sys/stat.h>
 
 using namespace isosid;
 using Catch::Matchers::Contains;
@@ -36,7 +38,7 @@ void check_agree(const json& reference, const json& other, std::initializer_list
 
 using test::replace;
 
-const std::string kImpact = test::golden_impact_scene(kGolden);
+const std::string kImpact = test::golden_impact_scene(kGolden + "/sphere_small.sid.h5");
 }  // namespace
 
 std::string beam_scene(const std::string& velocity, const std::string& angular_velocity, const std::string& gravity) {
@@ -166,6 +168,31 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
   }
 }
 
+TEST_CASE("a scene or SID that is a FIFO, a folder or a link loop is named for what it is, at once", "[runtime][bad-input]") {
+  const test::ScratchDir dir("special-inputs");
+  REQUIRE(::mkfifo(dir.path("fifo").c_str(), 0600) == 0);
+  std::filesystem::create_directory(dir.path("folder"));
+  std::filesystem::create_symlink("loop_b", dir.path("loop_a"));
+  std::filesystem::create_symlink("loop_a", dir.path("loop_b"));
+  struct Case {
+    std::string scene, expected;
+  };
+  const std::vector<Case> cases = {
+      {"fifo", "fifo: is a FIFO, not a file"},
+      {"folder", "folder: is a directory, not a file"},
+      {"loop_a", "loop_a: too many levels of symbolic links"},
+      {"s.scene.toml", "flexible_body[0].sid: is a FIFO, not a file: " + dir.path("fifo")},
+      {"l.scene.toml", "flexible_body[0].sid: too many levels of symbolic links: " + dir.path("loop_a")}};
+  std::ofstream(dir.path("s.scene.toml")) << replace(kImpact, kGolden + "/sphere_small.sid.h5", dir.path("fifo"));
+  std::ofstream(dir.path("l.scene.toml")) << replace(kImpact, kGolden + "/sphere_small.sid.h5", dir.path("loop_a"));
+  for (const Case& c : cases) {
+    const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + dir.path(c.scene) + " -o " + dir.path("out"));
+    INFO(r.err);
+    CHECK(r.exit_status == 2);
+    CHECK_THAT(r.err, Contains(c.expected));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+}
 
 TEST_CASE("a full disk ends both programs with one line and exit 1, and the run keeps summary.json", "[runtime][faults]") {
   // the file size limit (ulimit -f, SIGXFSZ ignored) makes writes fail with EFBIG as a full disk

@@ -3,6 +3,7 @@
 #include "scene/scene.hpp"
 #include "isosid/format/error.hpp"
 #include "support/run_program.hpp"
+#include "support/impact_scene.hpp"
 #include "support/scene_text.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,7 +18,7 @@ namespace {
 
 const std::string kGolden = ISOSID_GOLDEN_DIR, kModels = ISOSID_MODELS_DIR;
 
-const std::string kImpact = test::golden_impact_scene(kGolden);
+const std::string kImpact = test::golden_impact_scene(kGolden + "/sphere_small.sid.h5");
 
 run::Scene read(const test::ScratchDir& dir, const std::string& text) {
   std::ofstream(dir.path("s.scene.toml")) << text;

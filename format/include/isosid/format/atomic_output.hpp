@@ -8,7 +8,10 @@ namespace isosid::format {
 class AtomicOutput {
 public:
   /// Chooses a unique temporary path in the folder of `target` (same file system, so the
-  /// final rename is atomic). Throws InputError if that folder does not exist.
+  /// final rename is atomic). Throws InputError if that folder does not exist, or if
+  /// `target` is anything but a regular file or nothing (a directory, a FIFO, a device
+  /// node, a socket, a dangling link or a link to one of those): renaming onto it would
+  /// replace it. A symbolic link to a regular file is written through.
   explicit AtomicOutput(std::string target);
   AtomicOutput(const AtomicOutput&) = delete;
   AtomicOutput& operator=(const AtomicOutput&) = delete;
@@ -17,11 +20,13 @@ public:
 
   const std::string& temp_path() const { return temp_; }
   const std::string& target() const { return target_; }
-  /// Flushes the temporary file to disk and renames it onto the target.
+  /// Flushes the temporary file to disk and renames it onto the target (checked again).
   void commit();
 
 private:
-  std::string target_, temp_;
+  std::string target_;
+  std::string destination_;  ///< the target, or the regular file it links to
+  std::string temp_;
   bool committed_ = false;
   int slot_ = -1;  ///< where the temporary path is registered for the signal handler
 };

@@ -1,0 +1,59 @@
+// What stands at a path; see file_kind.hpp.
+#include "isosid/format/file_kind.hpp"
+
+#include "isosid/format/error.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <sys/stat.h>
+
+namespace isosid::format {
+namespace {
+
+/// The problem of a path that exists (stat succeeded) but is no regular file.
+std::string kind_problem(mode_t mode) {
+  if (S_ISDIR(mode)) return "is a directory, not a file";
+  if (S_ISFIFO(mode)) return "is a FIFO, not a file";
+  if (S_ISSOCK(mode)) return "is a socket, not a file";
+  if (S_ISCHR(mode)) return "is a character device, not a file";
+  if (S_ISBLK(mode)) return "is a block device, not a file";
+  return "is not a regular file";
+}
+
+/// stat(2) of `path` with links followed: "" for a regular file, "missing" for nothing there
+/// (not even a dangling link), otherwise the problem.
+std::string classify(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) return S_ISREG(st.st_mode) ? "" : kind_problem(st.st_mode);
+  const int error = errno;
+  if (error == ENOENT) {
+    struct stat link {};
+    return ::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode) ? "is a symbolic link to a missing file" : "missing";
+  }
+  if (error == ENOTDIR) return "missing";  // a folder of the path is a file: nothing can be there
+  if (error == ELOOP) return "too many levels of symbolic links";
+  return std::string("cannot be read: ") + std::strerror(error);
+}
+
+}  // namespace
+
+std::string input_file_problem(const std::string& path) {
+  const std::string problem = classify(path);
+  return problem == "missing" ? "file not found" : problem;
+}
+
+void require_input_file(const std::string& path) {
+  if (const std::string problem = input_file_problem(path); !problem.empty()) throw InputError(path, "", problem);
+}
+
+std::string output_file_problem(const std::string& path) {
+  const std::string problem = classify(path);
+  return problem == "missing" ? "" : problem;
+}
+
+void require_output_file(const std::string& path) {
+  if (const std::string problem = output_file_problem(path); !problem.empty())
+    throw InputError(path, "", problem + "; an output replaces only a regular file");
+}
+
+}  // namespace isosid::format

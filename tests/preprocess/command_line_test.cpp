@@ -1,0 +1,61 @@
+// isosid-prep's command line: flags it cannot all honour are refused in one line (exit 2)
+// before any work, never some of them dropped; an output that is no regular file is refused
+// before the work too; --version.
+#include "support/run_program.hpp"
+
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <filesystem>
+#include <sys/stat.h>
+
+using namespace isosid;
+using Catch::Matchers::Contains;
+
+namespace {
+const std::string kPrep = ISOSID_PREP_EXE;
+const std::string kSphere = std::string(ISOSID_GOLDEN_DIR) + "/sphere_small.model.toml";  // no [refinement.hierarchical]
+const std::string kThbSphere = std::string(ISOSID_MODELS_DIR) + "/sphere_axisym_thb.model.toml";
+}  // namespace
+
+TEST_CASE("isosid-prep refuses flags that exclude each other, one line each", "[prep][command-line]") {
+  const test::ScratchDir dir("prep-flags");
+  struct Case {
+    std::string arguments, expected;
+  };
+  const std::vector<Case> cases = {
+      {"--modes 6 " + kSphere, "--modes: reports only; it writes no SID (drop -o)"},
+      {"--modes 6 --coarse " + kThbSphere, "--modes: reports only; it writes no SID (drop -o)"},
+      {"--coarse --refine-at contact:0.05 --refine-width 0.5e-3 " + kThbSphere, "--coarse: and --refine-at exclude each other"},
+      {"--coarse " + kSphere, "--coarse: the model has no [refinement.hierarchical]"}};
+  for (const Case& c : cases) {
+    INFO(c.arguments);
+    const auto r = test::run_program(kPrep + " -q " + c.arguments + " -o " + dir.path("x.sid.h5"));
+    CHECK(r.exit_status == 2);
+    CHECK_THAT(r.err, Contains(c.expected));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(std::filesystem::exists(dir.path("x.sid.h5")));
+  }
+  // --modes alone reports, as before
+  CHECK(test::run_program(kPrep + " -q --json --modes 6 " + kSphere).exit_status == 0);
+}
+
+TEST_CASE("isosid-prep -o onto a FIFO or a folder is refused before the work and leaves it", "[prep][command-line]") {
+  const test::ScratchDir dir("prep-special-output");
+  REQUIRE(::mkfifo(dir.path("fifo").c_str(), 0600) == 0);
+  std::filesystem::create_directory(dir.path("folder"));
+  for (const char* name : {"fifo", "folder"}) {
+    INFO(name);
+    const auto r = test::run_program(kPrep + " " + kSphere + " -o " + dir.path(name));
+    CHECK(r.exit_status == 2);
+    CHECK_THAT(r.err, Contains("not a file; an output replaces only a regular file"));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);  // one line: no progress, the refusal comes first
+  }
+  CHECK(std::filesystem::is_fifo(dir.path("fifo")));
+  CHECK(std::filesystem::is_directory(dir.path("folder")));
+}
+
+TEST_CASE("isosid-prep prints the project's version", "[prep][command-line]") {
+  const auto r = test::run_program(kPrep + " --version");
+  CHECK(r.exit_status == 0);
+  CHECK_THAT(r.out, Catch::Matchers::StartsWith(std::string("isosid-prep ") + ISOSID_VERSION));
+}
