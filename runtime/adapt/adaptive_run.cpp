@@ -46,7 +46,7 @@ constexpr double kSamplesPerImpact = 100, kMaxSamplesPerOutput = 1000, kSamplesP
 constexpr double kTargetUtilization = 0.7, kMinUtilization = 0.5, kMaxUtilization = 0.9;
 /// Tries of one impact before the last one is taken as it is.
 constexpr int kMaxTries = 4;
-/// Alg. 2 changes a width by at most this factor per try.
+/// Alg. 2 widens a width by at most this factor per try (and narrows it to half at most).
 constexpr double kMaxWidening = 1.5;
 /// Errors in one impact run before the next ends the run: the penalty is then down by two
 /// decades and more (seed 001's slow decrease has no limit).
@@ -153,7 +153,7 @@ struct IntervalDecision {
 
 IntervalDecision decide_interval(double utilization, bool beyond, double width) {
   IntervalDecision d;
-  const double toward_target = width * std::clamp(utilization / kTargetUtilization, 1 / kMaxWidening, kMaxWidening);
+  const double toward_target = width * std::clamp(utilization / kTargetUtilization, 0.5, kMaxWidening);
   if (beyond) {
     d.next_width = kMaxWidening * width;
     d.reason = "load beyond the refined region";

@@ -11,6 +11,7 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <utility>
@@ -95,6 +96,13 @@ struct TimeIntegrator::Impl {
       pending = std::current_exception();
       return -1;  // unrecoverable: ARKODE returns at once
     }
+  }
+  /// Where steps collapse, a hint at the penalty if a contact is closed at y (before any
+  /// contact the penalty cannot be the cause), else "".
+  std::string penalty_hint(const char* hint) const {
+    std::vector<double> gap(system.contacts().size());
+    system.gaps(N_VGetArrayPointer(y), gap.data());
+    return std::any_of(gap.begin(), gap.end(), [](double g) { return g < 0; }) ? hint : "";
   }
   /// The body whose state carries the largest weighted local error estimate of the last
   /// attempted step: where a failing step size control has been looking.
@@ -238,7 +246,7 @@ std::vector<TimeIntegrator::GapEvent> TimeIntegrator::advance(double tout, doubl
     throw format::ComputationError(
         "time integration failed" + (body.empty() ? "" : " in body '" + body + "'") +
         " (SUNDIALS flag " + std::to_string(flag) +
-        (flag == -4 ? ": error test failed repeatedly, the step size fell to its minimum (penalty too stiff?)" : "") +
+        (flag == -4 ? ": error test failed repeatedly, the step size fell to its minimum" + m.penalty_hint(" (penalty too stiff?)") : "") +
         (flag == -1 ? ": the step limit max_steps was reached" : "") +
         (flag != -4 && flag != -1 && !m.last_message.empty() ? ": " + m.last_message : "") + ")");
   }
@@ -246,7 +254,7 @@ std::vector<TimeIntegrator::GapEvent> TimeIntegrator::advance(double tout, doubl
     const std::string body = m.worst_body();
     throw format::ComputationError("the step limit max_steps = " + std::to_string(max_steps_) + " was reached" +
                                    (body.empty() ? "" : ", steps limited by body '" + body + "'") +
-                                   " (penalty too stiff for the contact resolution?)");
+                                   m.penalty_hint(" (penalty too stiff for the contact resolution?)"));
   }
   std::vector<GapEvent> changed;
   if (flag == ARK_ROOT_RETURN) {

@@ -310,6 +310,18 @@ TEST_CASE("steps that collapse far below the contact time end the run as failed"
   CHECK(std::filesystem::exists(dir.path("out/results.h5")));  // the results so far
 }
 
+TEST_CASE("a step limit reached before any contact does not blame the penalty", "[runtime]") {
+  const test::ScratchDir dir("step-limit");
+  // 0.1 mm above the plane: no contact within the 100 us, steps of at most 10 us
+  std::ofstream(dir.path("s.scene.toml")) << replace(replace(kImpact, "output_interval = 1e-6", "output_interval = 1e-6\nmax_steps = 10\nmax_step = 1e-5"),
+                                                     "position = [0.0, 0.0100001, 0.0]", "position = [0.0, 0.0101, 0.0]");
+  const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + dir.path("out"));
+  INFO(r.err);
+  CHECK(r.exit_status == 1);
+  CHECK_THAT(r.err, Contains("the step limit max_steps = 10 was reached"));
+  CHECK(r.err.find("penalty") == std::string::npos);
+}
+
 TEST_CASE("a scene whose model isosid-prep refuses: exit 2 and isosid-prep's one line", "[runtime]") {
   const test::ScratchDir dir("bad-model");
   std::ifstream golden(kGolden + "/sphere_small.model.toml");
