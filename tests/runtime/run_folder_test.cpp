@@ -37,7 +37,7 @@ std::string text_of(const std::string& path) {
 }
 }  // namespace
 
-TEST_CASE("-o that is a file, a FIFO or lies below a file is no results folder", "[runtime][run-folder]") {
+TEST_CASE("a results folder (-o) that is a file, a FIFO or lies below a file is refused", "[runtime][run-folder]") {
   const test::ScratchDir dir("run-folder-kind");
   const run::Scene scene = scene_in(dir);
   std::ofstream(dir.path("file")) << "x";
@@ -65,7 +65,7 @@ TEST_CASE("-o that is a file, a FIFO or lies below a file is no results folder",
   }
 }
 
-TEST_CASE("-o where the run would replace or remove an input is refused, and the input kept", "[runtime][run-folder]") {
+TEST_CASE("a results folder (-o) where the run would replace or remove an input is refused, the input kept", "[runtime][run-folder]") {
   const test::ScratchDir dir("run-folder-inputs");
   std::ofstream(dir.path("results.h5")) << "a SID named results.h5";
   // an input under each name the run replaces, also reached through another spelling of the folder
