@@ -207,6 +207,19 @@ double Recorder::max_relative_energy_error() const {
   return e0 != 0 ? worst / std::abs(e0) : worst;
 }
 
+double Recorder::energy_error_per_motion() const {
+  if (energies_.empty()) return 0;
+  const double e0 = energies_.front()[5];
+  double worst = 0, motion = 0;
+  for (const auto& e : energies_) {
+    worst = std::max(worst, std::abs(e[5] - e0));
+    motion = std::max(motion, e[0] + e[1] + e[3]);  // kinetic, elastic and penalty: independent of gravity's datum
+  }
+  return motion > 0 ? worst / motion : 0.0;
+}
+
+bool Recorder::closed_at_end(std::size_t k) const { return !intervals_[k].empty() && intervals_[k].back().end < 0; }
+
 void Recorder::write_results(const std::string& path) const {
   format::AtomicOutput out(path);
   {
@@ -304,6 +317,20 @@ std::vector<std::string> Recorder::warnings() const {
                   " m): its penalty (" + common::number_text(c.penalty()) + " N/m^3, " + c.penalty_source() +
                   ") is too soft, and the forces and contact time are the penalty layer's, not the bodies'");
   }
+  for (std::size_t k = 0; k < intervals_.size(); ++k) {
+    if (!closed_at_end(k)) continue;
+    const auto& estimate = system_.impact_estimates()[k];
+    out.push_back("contact '" + system_.contacts()[k].name() + "' is still closed at the end of the run (t = " +
+                  common::number_text(time_.empty() ? 0.0 : time_.back()) + " s): its duration and the bodies' rebound are not final" +
+                  (estimate && estimate->contact_time > 0 ? " (the Hertz estimate puts the contact time at " +
+                                                                 common::number_text(estimate->contact_time) + " s)"
+                                                           : std::string()) +
+                  "; extend simulation.end_time");
+  }
+  if (const double error = energy_error_per_motion(); error > kMaxEnergyError)
+    out.push_back("the energy balance is off by " + common::number_text(error) +
+                  " of the largest energy in motion: the integration did not follow the motion, so forces and velocities are not "
+                  "to be trusted; tighten simulation.rtol (or shorten simulation.step for the leapfrog)");
   for (std::size_t k = 0; k < interface_left_.size(); ++k) {
     if (interface_left_[k] < 0) continue;
     const SurfaceContact& c = system_.contacts()[k];
@@ -385,6 +412,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     const auto ratio = penetration_per_approach(max_penetration_[k], system_.impact_estimates()[k]);
     c["penetration_per_hertz_approach"] = ratio ? json(*ratio) : json(nullptr);
     c["penalty_too_soft"] = ratio && *ratio > kMaxPenetrationPerApproach;
+    c["closed_at_end"] = closed_at_end(k);
     j["contacts"].push_back(c);
   }
   j["hertz_contacts"] = json::array();
@@ -425,7 +453,9 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
   }
   const double e0 = energies_.empty() ? 0.0 : energies_.front()[5], e1 = energies_.empty() ? 0.0 : energies_.back()[5];
   j["energy"] = {{"initial_j", e0}, {"final_j", e1}, {"max_rel_error", max_relative_energy_error()},
-                 {"dissipated_j", energies_.empty() ? 0.0 : energies_.back()[4]}};
+                 {"dissipated_j", energies_.empty() ? 0.0 : energies_.back()[4]},
+                 {"error_per_energy_in_motion", energy_error_per_motion()},
+                 {"error_too_large", energy_error_per_motion() > kMaxEnergyError}};
   j["monitors"] = json::array();
   for (std::size_t m = 0; m < monitor_values_.size(); ++m) {
     const auto& v = monitor_values_[m];

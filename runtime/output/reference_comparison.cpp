@@ -25,7 +25,12 @@ std::optional<double> measured(const json& j, const std::string& key) {
   if (key == "peak_force_n" && !c.empty()) return c[0]["peak_force_n"].get<double>();
   if (key == "contact_time_s" && !c.empty()) return number(c[0]["duration_s"]);
   if (key == "contact_end_s" && !c.empty()) return number(c[0]["end_s"]);
-  if (key == "rebound_velocity_m_s") return Eigen::Vector3d(b["final_velocity"][0], b["final_velocity"][1], b["final_velocity"][2]).norm();
+  if (key == "rebound_velocity_m_s") {
+    // a rebound only once the impact is over: not while the contact is still closed at the
+    // end of the run, nor for a body that never touched
+    if (!c.empty() && (c[0]["start_s"].is_null() || c[0]["end_s"].is_null())) return std::nullopt;
+    return Eigen::Vector3d(b["final_velocity"][0], b["final_velocity"][1], b["final_velocity"][2]).norm();
+  }
   if (key == "final_velocity_x_m_s") return b["final_velocity"][0].get<double>();
   if (key == "final_velocity_y_m_s") return b["final_velocity"][1].get<double>();
   if (key == "final_velocity_z_m_s") return b["final_velocity"][2].get<double>();

@@ -391,7 +391,7 @@ TEST_CASE("scene A: sphere on sphere (Hertz) with the Craig-Bampton sphere", "[r
   CHECK(hertz["contact_radius_m"].get<double>() == Approx(0.168e-3).epsilon(3e-3));
 }
 
-TEST_CASE("a sphere sized from its contact radius is rebuilt for the scene's impact", "[runtime][contact]") {
+TEST_CASE("a sphere sized from its contact radius is rebuilt for the scene's impact; a contact still closed at the end is flagged", "[runtime][contact]") {
   // scene A at half the speed: Hertz gives a = 0.127 mm instead of the model's 0.168 mm, so
   // isosid-run rebuilds the SID with elements of a/8 (the SID records the radius it was sized
   // for) and a second run reuses it
@@ -405,15 +405,25 @@ TEST_CASE("a sphere sized from its contact radius is rebuilt for the scene's imp
   // Hertz scales a as v^(2/5): 0.168 mm x 0.5^0.4 (REFERENCE.md A's radius, to its 3 digits)
   CHECK(hertz["contact_radius_m"].get<double>() == Approx(0.168e-3 * std::pow(0.5, 0.4)).epsilon(3e-3));
   CHECK(hertz["elements_per_radius"].get<double>() == Approx(8).epsilon(0.01));
-  CHECK(slow["warnings"].empty());
+  // the slower impact lasts 95.5 us, past the scene's end: flagged, and no rebound is reported
+  // while the sphere is still in contact
+  REQUIRE(slow["warnings"].size() == 1);
+  CHECK(slow["warnings"][0].get<std::string>().find("'impact' is still closed at the end of the run") != std::string::npos);
+  CHECK(slow["contacts"][0]["closed_at_end"].get<bool>());
+  CHECK(slow["reference"]["rebound_velocity_m_s"]["value"].is_null());
   const format::Sid sid = format::read_sid(dir.path("sphere_axisym.sid.h5"));
   REQUIRE(sid.discretization);
   // the summary's estimate comes from the rebuilt SID, whose mass and curvature differ from the
   // first one's in the last digits (measured 1e-10)
   CHECK(sid.discretization->contact_radius == Approx(hertz["contact_radius_m"].get<double>()).epsilon(1e-8));
   const auto built = std::filesystem::last_write_time(dir.path("sphere_axisym.sid.h5"));
-  run_scene(dir, scene, 0);
+  // run on past the release: the same SID serves, nothing to warn about, the rebound is there
+  const json whole = run_scene(dir, replace(scene, "end_time = 95e-6", "end_time = 110e-6"), 0);
   CHECK(std::filesystem::last_write_time(dir.path("sphere_axisym.sid.h5")) == built);
+  CHECK(whole["warnings"].empty());
+  CHECK_FALSE(whole["contacts"][0]["closed_at_end"].get<bool>());
+  CHECK(whole["reference"]["rebound_velocity_m_s"]["value"].get<double>() == Approx(0.05).epsilon(1e-3));
+  CHECK_FALSE(whole["energy"]["error_too_large"].get<bool>());
 }
 
 TEST_CASE("keys dotted 40 000 deep are refused by both programs in one line", "[runtime][bad-input]") {
