@@ -80,6 +80,16 @@ TEST_CASE("a spinning free flexible body conserves energy", "[runtime]") {
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-6);
 }
 
+TEST_CASE("a body that never touches reports no rebound against a reference", "[runtime]") {
+  // the golden sphere moving away from its plane: no contact closes, so its final speed is no rebound
+  const test::ScratchDir dir("no-touch");
+  const json s = run_scene(dir, replace(kImpact, "velocity = [0.0, -0.1, 0.0]", "velocity = [0.0, 0.1, 0.0]") +
+                                    "[reference]\nrebound_velocity_m_s = 0.1\n");
+  CHECK(s["contacts"][0]["intervals"] == 0);
+  CHECK_FALSE(s["contacts"][0]["closed_at_end"].get<bool>());
+  CHECK(s["reference"]["rebound_velocity_m_s"]["value"].is_null());
+}
+
 TEST_CASE("an elastic sphere impact conserves energy and rebounds", "[runtime]") {
   const test::ScratchDir dir("impact");
   const json s = run_scene(dir, kImpact);
