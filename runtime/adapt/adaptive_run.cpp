@@ -595,7 +595,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                          {"refused_tries_cpu_s", refused_tries}, {"penalty_probes_cpu_s", probes_cpu},
                          {"penalty_search", search},         {"penalties_n_m3", penalties}, {"penalty_searches", searches},
                          {"phases", log}};
-  summary["reference"] = compare_with_reference(summary, scene_.reference);
+  summary["reference"] = compare_with_reference(summary, scene_.reference, scene_.reference_from_hertz);
   format::write_text_atomically((std::filesystem::path(out_dir_) / "summary.json").string(), summary.dump(2) + "\n");
   // one time series over the phases that make up the run; the results are written, so a
   // failure here fails the run with them kept

@@ -466,7 +466,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     j["monitors"].push_back(mon);
   }
   for (const StressMonitor& s : stress_monitors_) j["monitors"].push_back(s.summary());
-  j["reference"] = compare_with_reference(j, scene_.reference);
+  j["reference"] = compare_with_reference(j, scene_.reference, scene_.reference_from_hertz);
   return j;
 }
 

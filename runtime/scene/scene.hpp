@@ -170,6 +170,9 @@ struct Scene {
   bool has_adaptive_bodies() const;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   std::map<std::string, double> reference;  ///< [reference] values, e.g. peak_force_n
+  /// [reference] source = "hertz": peak force and contact time compared with the run's own
+  /// Hertz estimate of its first contact
+  bool reference_from_hertz = false;
 };
 
 /// Reads and validates a scene file; paths are resolved relative to it.

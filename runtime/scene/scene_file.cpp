@@ -463,8 +463,14 @@ Scene read_scene_file(const std::string& path) {
   if (scene.gravity.stableNorm() > kMaxGravity)
     top.table("simulation").fail("gravity", common::number_text(scene.gravity.stableNorm()) + " m/s^2 exceeds 1e8 m/s^2 (1e7 g)");
   if (auto r = top.optional_table("reference")) {
-    r->allow_only({"peak_force_n", "contact_time_s", "rebound_velocity_m_s", "final_velocity_m_s", "final_angular_velocity_rad_s",
+    r->allow_only({"source", "peak_force_n", "contact_time_s", "rebound_velocity_m_s", "final_velocity_m_s", "final_angular_velocity_rad_s",
                    "wave_arrival_s", "contact_end_s", "peak_von_mises_pa", "peak_von_mises_depth_m"});
+    if (r->has("source")) {
+      if (r->string("source") != "hertz") r->fail("source", "must be \"hertz\" (the run's own Hertz estimate), is \"" + r->string("source") + "\"");
+      if (r->has("peak_force_n") || r->has("contact_time_s"))
+        r->fail("source", "\"hertz\" gives peak_force_n and contact_time_s: drop them or the source");
+      scene.reference_from_hertz = true;
+    }
     for (const char* key : {"peak_force_n", "contact_time_s", "rebound_velocity_m_s", "final_angular_velocity_rad_s",
                             "wave_arrival_s", "contact_end_s", "peak_von_mises_pa", "peak_von_mises_depth_m"})
       if (r->has(key)) scene.reference[key] = r->number(key);

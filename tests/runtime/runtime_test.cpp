@@ -90,6 +90,23 @@ TEST_CASE("a body that never touches reports no rebound against a reference", "[
   CHECK(s["reference"]["rebound_velocity_m_s"]["value"].is_null());
 }
 
+TEST_CASE("a scene compared with its own Hertz estimate", "[runtime]") {
+  const test::ScratchDir dir("hertz-reference");
+  const json s = run_scene(dir, kImpact + "[reference]\nsource = \"hertz\"\nrebound_velocity_m_s = 0.1\n");
+  const json& e = s["contacts"][0]["hertz_estimate"];
+  for (const char* key : {"peak_force_n", "contact_time_s"}) {
+    const json& r = s["reference"][key];
+    CHECK(r["source"] == "hertz");
+    CHECK(r["reference"].get<double>() == e[key].get<double>());
+    // measured against it (the golden sphere, 0.34 elements per contact radius, is 70 % stiff)
+    CHECK(r["rel_error"].get<double>() == Approx(r["value"].get<double>() / r["reference"].get<double>() - 1).epsilon(1e-12));
+  }
+  CHECK_FALSE(s["reference"]["rebound_velocity_m_s"].contains("source"));
+  // another source, or Hertz's figures given twice, are refused
+  run_scene(dir, kImpact + "[reference]\nsource = \"finite elements\"\n", 2);
+  run_scene(dir, kImpact + "[reference]\nsource = \"hertz\"\npeak_force_n = 52.0\n", 2);
+}
+
 TEST_CASE("an elastic sphere impact conserves energy and rebounds", "[runtime]") {
   const test::ScratchDir dir("impact");
   const json s = run_scene(dir, kImpact);
