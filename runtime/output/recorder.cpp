@@ -327,6 +327,15 @@ std::vector<std::string> Recorder::warnings() const {
                                                            : std::string()) +
                   "; extend simulation.end_time");
   }
+  if (scene_.reference_from_hertz) {
+    const auto& estimates = system_.impact_estimates();
+    if (estimates.empty() || !estimates[0])
+      out.push_back("[reference] source = \"hertz\": the first contact has no Hertz estimate, so its peak force and contact "
+                    "time are not compared");
+    else if (estimates[0]->line_contact)
+      out.push_back("[reference] source = \"hertz\": the first contact is a line contact, whose Hertz estimate has no contact "
+                    "time; only its peak force is compared");
+  }
   if (const double error = energy_error_per_motion(); error > kMaxEnergyError)
     out.push_back("the energy balance is off by " + common::number_text(error) +
                   " of the largest energy in motion: the integration did not follow the motion, so forces and velocities are not "

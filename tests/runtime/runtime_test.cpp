@@ -102,6 +102,15 @@ TEST_CASE("a scene compared with its own Hertz estimate", "[runtime]") {
     CHECK(r["rel_error"].get<double>() == Approx(r["value"].get<double>() / r["reference"].get<double>() - 1).epsilon(1e-12));
   }
   CHECK_FALSE(s["reference"]["rebound_velocity_m_s"].contains("source"));
+  CHECK(s["warnings"].size() == 1);  // the coarse golden sphere's resolution, nothing about the reference
+  // a line contact (the planar disk of scene C) has no contact time to compare: said so
+  test::copy_model_file(dir, "disk_plane_strain.model.toml");
+  const std::string disk = test::model_text("cylinder_friction.scene.toml");
+  const json line = run_scene(dir, disk.substr(0, disk.find("[reference]")) + "[reference]\nsource = \"hertz\"\n");
+  CHECK(line["reference"]["peak_force_n"]["source"] == "hertz");
+  CHECK_FALSE(line["reference"].contains("contact_time_s"));
+  REQUIRE(line["warnings"].size() == 1);
+  CHECK(line["warnings"][0].get<std::string>().find("line contact") != std::string::npos);
   // another source, or Hertz's figures given twice, are refused
   run_scene(dir, kImpact + "[reference]\nsource = \"finite elements\"\n", 2);
   run_scene(dir, kImpact + "[reference]\nsource = \"hertz\"\npeak_force_n = 52.0\n", 2);
