@@ -23,6 +23,16 @@ ModalMatrix::ModalMatrix(const MatrixXd& M) {
     dense_ = M;
 }
 
+std::array<bool, 6> locked_dofs(Dimension dimension, const std::vector<std::string>& locked) {
+  std::array<bool, 6> out{};
+  if (dimension == Dimension::Axisymmetric) out = {true, false, true, true, true, true};  // only along the axis
+  if (dimension == Dimension::Planar) out = {false, false, true, true, true, false};      // in the x-y plane
+  for (const std::string& l : locked)
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (l == kFrameDofNames[i]) out[i] = true;
+  return out;
+}
+
 Matrix3d tait_bryan_matrix(const Vector3d& a) {
   return (Eigen::AngleAxisd(a.x(), Vector3d::UnitX()) * Eigen::AngleAxisd(a.y(), Vector3d::UnitY()) *
           Eigen::AngleAxisd(a.z(), Vector3d::UnitZ()))
@@ -74,12 +84,7 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
                              "a " + format::to_string(sid_.analysis) + " body in a " + to_string(dimension) + " scene");
   if (dimension == Dimension::Planar && sid_.dim() != 2)
     throw format::InputError(spec.sid_file, "/body/analysis_type", "a solid body in a planar scene");
-  if (dimension == Dimension::Axisymmetric) locked_ = {true, false, true, true, true, true};  // only along the axis
-  if (dimension == Dimension::Planar) locked_ = {false, false, true, true, true, false};      // in the x-y plane
-  const char* names[6] = {"x", "y", "z", "rx", "ry", "rz"};
-  for (const std::string& l : spec.locked)
-    for (int i = 0; i < 6; ++i)
-      if (l == names[i]) locked_[std::size_t(i)] = true;
+  locked_ = locked_dofs(dimension, spec.locked);
   rotates_ = !(locked_[3] && locked_[4] && locked_[5]);
   // coordinates without mass cannot be integrated: a massless boundary is always solved statically
   n_dynamic_ = n - massless;

@@ -182,6 +182,12 @@ inline void add_elastic_force(const Eigen::Ref<const Eigen::MatrixXd>& Psi, cons
   for (Eigen::Index a = 0; a < Psi.rows(); ++a) out.noalias() += F(a) * Psi.row(a).transpose();
 }
 
+/// The frame DOFs x y z rx ry rz, as a body's `locked` list names them.
+inline constexpr std::array<const char*, 6> kFrameDofNames = {"x", "y", "z", "rx", "ry", "rz"};
+/// The frame DOFs held at zero: those a scene of `dimension` locks (axisymmetric: all but y;
+/// planar: z, rx, ry) and those `locked` names.
+std::array<bool, 6> locked_dofs(Dimension dimension, const std::vector<std::string>& locked);
+
 /// Rotation matrix of Tait-Bryan angles (x, y, z): Rx(a) Ry(b) Rz(c) (seed 000 eq. 20).
 Eigen::Matrix3d tait_bryan_matrix(const Eigen::Vector3d& angles);
 /// Inverse of tait_bryan_matrix (beta in [-pi/2, pi/2]).

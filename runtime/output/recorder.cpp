@@ -461,10 +461,10 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     j["bodies"].push_back(entry);
   }
   const double e0 = energies_.empty() ? 0.0 : energies_.front()[5], e1 = energies_.empty() ? 0.0 : energies_.back()[5];
+  const double energy_error = energy_error_per_motion();
   j["energy"] = {{"initial_j", e0}, {"final_j", e1}, {"max_rel_error", max_relative_energy_error()},
                  {"dissipated_j", energies_.empty() ? 0.0 : energies_.back()[4]},
-                 {"error_per_energy_in_motion", energy_error_per_motion()},
-                 {"error_too_large", energy_error_per_motion() > kMaxEnergyError}};
+                 {"error_per_energy_in_motion", energy_error}, {"error_too_large", energy_error > kMaxEnergyError}};
   j["monitors"] = json::array();
   for (std::size_t m = 0; m < monitor_values_.size(); ++m) {
     const auto& v = monitor_values_[m];

@@ -2,10 +2,9 @@
 #include "output/reference_comparison.hpp"
 
 #include <Eigen/Dense>
-#include <algorithm>
 #include <cmath>
 #include <optional>
-#include <vector>
+#include <set>
 
 namespace isosid::run {
 
@@ -50,11 +49,11 @@ std::optional<double> measured(const json& j, const std::string& key) {
 
 json compare_with_reference(const json& summary, const std::map<std::string, double>& given, bool from_hertz) {
   std::map<std::string, double> reference = given;
-  std::vector<std::string> from_estimate;
+  std::set<std::string> from_estimate;  // the summary's estimate names its figures as [reference] does
   if (from_hertz && !summary["contacts"].empty() && summary["contacts"][0].contains("hertz_estimate")) {
     const json& e = summary["contacts"][0]["hertz_estimate"];
-    for (const auto& [key, field] : {std::pair<std::string, std::string>{"peak_force_n", "peak_force_n"}, {"contact_time_s", "contact_time_s"}})
-      if (e.contains(field) && e[field].is_number()) reference[key] = e[field].get<double>(), from_estimate.push_back(key);
+    for (const char* key : {"peak_force_n", "contact_time_s"})
+      if (e.contains(key) && e[key].is_number()) reference[key] = e[key].get<double>(), from_estimate.insert(key);
   }
   json cmp = json::object();
   for (const auto& [key, ref] : reference) {
@@ -63,7 +62,7 @@ json compare_with_reference(const json& summary, const std::map<std::string, dou
     entry["value"] = value ? json(*value) : json(nullptr);
     entry["rel_error"] = value && ref != 0 ? json((*value - ref) / std::abs(ref)) : json(nullptr);
     if (value && ref == 0) entry["abs_error"] = *value;
-    if (std::find(from_estimate.begin(), from_estimate.end(), key) != from_estimate.end()) entry["source"] = "hertz";
+    if (from_estimate.count(key)) entry["source"] = "hertz";
     cmp[key] = entry;
   }
   return cmp;

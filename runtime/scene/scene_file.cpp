@@ -43,13 +43,10 @@ constexpr double kMaxGravity = 1e8;
 /// DOFs that leave its symmetry, and a body's `locked` list more; the runtime holds those
 /// DOFs at zero, so a velocity or orientation there would be dropped without a word.
 void check_motion_fits(const TomlView& b, const BodySpec& f, Dimension dimension) {
-  static const char* const dof_names[6] = {"x", "y", "z", "rx", "ry", "rz"};
   if (dimension == Dimension::Axisymmetric && (f.position.x() != 0 || f.position.z() != 0))
     b.fail("position", "an axisymmetric scene needs its bodies on the axis (x = z = 0)");
   // what the dimension leaves free: axisymmetric y only, planar x, y and rz
-  std::array<bool, 6> locked{};
-  if (dimension == Dimension::Axisymmetric) locked = {true, false, true, true, true, true};
-  if (dimension == Dimension::Planar) locked = {false, false, true, true, true, false};
+  const std::array<bool, 6> locked = locked_dofs(dimension, {});
   const std::string why = dimension == Dimension::Axisymmetric ? "an axisymmetric scene moves its bodies along the axis only"
                           : dimension == Dimension::Planar     ? "a planar scene moves its bodies in the x-y plane only"
                                                                : "";
@@ -61,13 +58,14 @@ void check_motion_fits(const TomlView& b, const BodySpec& f, Dimension dimension
     b.fail("orientation", why + " (it may turn a body over, by pi about x or z, but not tilt it)");
   for (int a = 0; a < 3; ++a) {
     const auto i = std::size_t(a);
-    if (locked[i] && f.velocity(a) != 0) b.fail("velocity", why + " (no " + dof_names[a] + " component)");
-    if (locked[3 + i] && f.angular_velocity(a) != 0) b.fail("angular_velocity", why + " (no " + dof_names[3 + a] + " component)");
+    if (locked[i] && f.velocity(a) != 0) b.fail("velocity", why + " (no " + kFrameDofNames[i] + " component)");
+    if (locked[3 + i] && f.angular_velocity(a) != 0) b.fail("angular_velocity", why + " (no " + kFrameDofNames[3 + i] + " component)");
   }
   for (const std::string& l : f.locked)
     for (int a = 0; a < 3; ++a) {
-      if (l == dof_names[a] && f.velocity(a) != 0) b.fail("velocity", "moves along the locked DOF '" + l + "'");
-      if (l == dof_names[3 + a] && f.angular_velocity(a) != 0) b.fail("angular_velocity", "turns about the locked DOF '" + l + "'");
+      const auto i = std::size_t(a);
+      if (l == kFrameDofNames[i] && f.velocity(a) != 0) b.fail("velocity", "moves along the locked DOF '" + l + "'");
+      if (l == kFrameDofNames[3 + i] && f.angular_velocity(a) != 0) b.fail("angular_velocity", "turns about the locked DOF '" + l + "'");
     }
 }
 
