@@ -138,7 +138,7 @@ const std::vector<const Item*>& items() {
         &visual::group, &visual::corners_per_cell, &visual::position, &visual::cells, &visual::Phi,
         &visual::stress_components, &visual::S,
         &provenance::group, &provenance::model_file, &provenance::model_sha256, &provenance::program_version,
-        &provenance::created_utc, &provenance::timing_names, &provenance::timings_s});
+        &provenance::created_utc, &provenance::command_line, &provenance::timing_names, &provenance::timings_s});
     return v;
   }();
   return all;

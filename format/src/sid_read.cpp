@@ -163,6 +163,7 @@ void read_provenance(const h5::Reader& r, Sid& sid) {
   p.model_sha256 = r.string(provenance::model_sha256.at());
   p.program_version = r.string(provenance::program_version.at());
   p.created_utc = r.string(provenance::created_utc.at());
+  if (r.exists(provenance::command_line.at())) p.command_line = r.string(provenance::command_line.at());
   const std::vector<std::string> names = r.strings(provenance::timing_names.at());
   const Eigen::VectorXd seconds = r.vector(provenance::timings_s.at(), Eigen::Index(names.size()));
   for (std::size_t i = 0; i < names.size(); ++i) p.timings_s.emplace_back(names[i], seconds(Eigen::Index(i)));

@@ -179,6 +179,7 @@ void write_provenance(h5::Writer& w, const Sid& sid) {
   put(w, provenance::model_sha256, p.model_sha256);
   put(w, provenance::program_version, p.program_version);
   put(w, provenance::created_utc, p.created_utc);
+  if (!p.command_line.empty()) put(w, provenance::command_line, p.command_line);
   std::vector<std::string> names;
   Eigen::VectorXd seconds(Eigen::Index(p.timings_s.size()));
   for (std::size_t i = 0; i < p.timings_s.size(); ++i) {

@@ -91,7 +91,8 @@ json describe(const Sid& sid) {
   for (const auto& [name, s] : sid.provenance.timings_s) timings[name] = s;
   j["provenance"] = {{"model_file", sid.provenance.model_file}, {"model_sha256", sid.provenance.model_sha256},
                      {"program_version", sid.provenance.program_version},
-                     {"created_utc", sid.provenance.created_utc}, {"timings_s", timings}};
+                     {"created_utc", sid.provenance.created_utc}, {"command_line", sid.provenance.command_line},
+                     {"timings_s", timings}};
   return j;
 }
 

@@ -2,6 +2,7 @@
 #include "sid/sid_builder.hpp"
 
 #include "isosid/format/error.hpp"
+#include "isosid/common/invocation.hpp"
 #include "isosid/common/sha256.hpp"
 #include "isosid/version.hpp"
 #include "reduce/sparse_products.hpp"
@@ -31,12 +32,6 @@ Eigen::MatrixXd nodal_modes(const DofMap& dofs, const Eigen::MatrixXd& Phi_free)
 }
 
 namespace {
-std::string utc_now() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
-  return buf;
-}
 /// "boundary 7: control point 112 z": which physical DOF a massless coordinate is (its
 /// column of the basis is the unit displacement of that DOF at the boundary).
 std::string massless_coordinate_name(const BodyModel& body, const ReducedBasis& basis, Eigen::Index k) {
@@ -132,7 +127,8 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   sid.provenance.model_file = spec.file;
   sid.provenance.model_sha256 = std::filesystem::is_regular_file(spec.file) ? common::sha256_file(spec.file) : "";
   sid.provenance.program_version = kProgramVersion;
-  sid.provenance.created_utc = utc_now();
+  sid.provenance.created_utc = common::utc_now();
+  sid.provenance.command_line = common::command_line();
   return sid;
 }
 

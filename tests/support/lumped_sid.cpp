@@ -199,7 +199,7 @@ format::Sid lumped_sid(const LumpedBody& body) {
   v.S *= 2e11 / 0.05;
   s.visual = v;
 
-  s.provenance = {"lumped.model.toml", "feedbeef", "test", "2026-11-22T00:00:00Z", {{"assembly", 0.5}, {"eigen", 1.25}}};
+  s.provenance = {"lumped.model.toml", "feedbeef", "test", "2026-11-22T00:00:00Z", "isosid-prep lumped.model.toml", {{"assembly", 0.5}, {"eigen", 1.25}}};
   return s;
 }
 

@@ -134,6 +134,7 @@ struct Discretization {
 
 struct Provenance {
   std::string model_file, model_sha256, program_version, created_utc;
+  std::string command_line;  ///< the isosid-prep command that wrote the file (empty in older files)
   std::vector<std::pair<std::string, double>> timings_s;
 };
 

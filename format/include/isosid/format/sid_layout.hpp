@@ -282,6 +282,8 @@ inline constexpr Item program_version{"/provenance/program_version", {}, Kind::S
                                       "version of isosid-prep"};
 inline constexpr Item created_utc{"/provenance/created_utc", {}, Kind::String, kScalar, "", Presence::Required,
                                   "creation time (UTC)"};
+inline constexpr Item command_line{"/provenance/command_line", {}, Kind::String, kScalar, "", Presence::Optional,
+                                   "the isosid-prep command that made the file; absent in files made before it was recorded"};
 inline constexpr Item timing_names{"/provenance/timing_names", {}, Kind::String, vector_of({1, Size::Timings}), "",
                                    Presence::Required, "preprocessor stages"};
 inline constexpr Item timings_s{"/provenance/timings_s", {}, Kind::Float64, vector_of({1, Size::Timings}), "s",
