@@ -10,14 +10,21 @@
 namespace isosid::format {
 namespace {
 
+/// What a stat(2) mode is, as the messages name it.
+std::string noun(mode_t mode) {
+  if (S_ISREG(mode)) return "a file";
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISSOCK(mode)) return "a socket";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  return "";
+}
+
 /// The problem of a path that exists (stat succeeded) but is no regular file.
 std::string kind_problem(mode_t mode) {
-  if (S_ISDIR(mode)) return "is a directory, not a file";
-  if (S_ISFIFO(mode)) return "is a FIFO, not a file";
-  if (S_ISSOCK(mode)) return "is a socket, not a file";
-  if (S_ISCHR(mode)) return "is a character device, not a file";
-  if (S_ISBLK(mode)) return "is a block device, not a file";
-  return "is not a regular file";
+  const std::string what = noun(mode);
+  return what.empty() ? "is not a regular file" : "is " + what + ", not a file";
 }
 
 /// stat(2) of `path` with links followed: "" for a regular file, "missing" for nothing there
@@ -36,6 +43,13 @@ std::string classify(const std::string& path) {
 }
 
 }  // namespace
+
+std::string what_is_at(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return "";
+  const std::string what = noun(st.st_mode);
+  return what.empty() ? "not a regular file" : what;
+}
 
 std::string input_file_problem(const std::string& path) {
   const std::string problem = classify(path);

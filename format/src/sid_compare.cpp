@@ -338,7 +338,8 @@ bool compare_structure(const Sid& a, const Sid& b, Comparer& cmp, const Comparis
 
 }  // namespace
 
-Comparison compare_sids(const Sid& a, const Sid& b, double rtol) {
+Comparison compare_sids(const Sid& a, const Sid& b, double requested_rtol) {
+  const double rtol = std::max(requested_rtol, kComparisonRoundOff);
   Comparison out;
   Comparer cmp(rtol, out);
   const Scales s = natural_scales(a);

@@ -3,6 +3,7 @@
 #include "isosid/format/sid_compare.hpp"
 #include "isosid/format/sid_io.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -25,11 +26,11 @@ int main(int argc, char** argv) {
     for (const ModeCluster& cl : c.clusters) worst_sine = std::max(worst_sine, cl.max_sine);
     for (const std::string& note : c.notes) std::cout << "note: " << note << "\n";
     if (c.equal()) {
-      std::printf("equal within rtol %g (%zu frequency clusters, largest principal-angle sine %.2e)\n", rtol,
+      std::printf("equal within rtol %g (%zu frequency clusters, largest principal-angle sine %.2e)\n", std::max(rtol, kComparisonRoundOff),
                   c.clusters.size(), worst_sine);
       return 0;
     }
-    std::printf("%zu differences (rtol %g):\n", c.differences.size(), rtol);
+    std::printf("%zu differences (rtol %g):\n", c.differences.size(), std::max(rtol, kComparisonRoundOff));
     for (const Difference& d : c.differences)
       std::printf("  %s: %s (difference %.3e, allowed %.3e)\n", d.what.c_str(), d.detail.c_str(), d.difference,
                   d.tolerance);

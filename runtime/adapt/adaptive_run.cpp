@@ -1,6 +1,8 @@
 // The adaptive run's phases; see adaptive_run.hpp.
 #include "adapt/adaptive_run.hpp"
 
+#include "output/warning_list.hpp"
+
 #include "adapt/interval_width.hpp"
 #include "adapt/model_cache.hpp"
 #include "adapt/penalty_search.hpp"
@@ -181,6 +183,7 @@ AdaptiveRun::AdaptiveRun(Scene scene, RunFolder& folder, bool quiet)
 
 AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested) {
   const auto wall0 = std::chrono::steady_clock::now();
+  const RunProvenance provenance = run_provenance(scene_);  // the phases record the SIDs they were built
   const std::clock_t cpu0 = std::clock();
   ModelCache cache(scene_.adaptive.cache, quiet_);
   Scene coarse = scene_;
@@ -247,9 +250,11 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
     std::filesystem::create_directories(folder);
     out.summary = write_run_report(folder, recorder, simulation, out.outcome);
     for (const PhaseRecorder::Found& other : recorder.overlapping())
-      out.summary["warnings"].push_back("contact '" + scene_.contacts[std::size_t(other.contact)].name + "' touched at t = " +
-                                        common::number_text(other.time) + " s during the impact of '" +
-                                        scene_.contacts[std::size_t(impact.contact)].name + "': it ran on that impact's models, not refined for it");
+      add_warning(out.summary,
+                  {"adaptive_overlap", "contact '" + scene_.contacts[std::size_t(other.contact)].name + "' touched at t = " +
+                                           common::number_text(other.time) + " s during the impact of '" +
+                                           scene_.contacts[std::size_t(impact.contact)].name + "': it ran on that impact's models, not refined for it"},
+                  scene_.output.expected_warnings);
     entry.update({{"folder", folder}, {"start_s", start}, {"end_s", simulation.time()}, {"status", out.outcome.status},
                   {"steps", out.summary["steps"]}, {"cpu_time_s", out.outcome.cpu_time_s},
                   {"energy_start_j", out.summary["energy"]["initial_j"]}, {"energy_end_j", out.summary["energy"]["final_j"]}});
@@ -293,9 +298,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   auto drop_resolution_warnings = [](const MultibodySystem& system, json& summary) {
     for (std::size_t k = 0; k < system.contacts().size(); ++k)
       if (const auto& e = system.impact_estimates()[k]) {
-        const std::string w = resolution_warning(system.contacts()[k], *e);
-        auto& list = summary["warnings"];
-        list.erase(std::remove(list.begin(), list.end(), json(w)), list.end());
+        remove_warning(summary, resolution_warning(system.contacts()[k], *e));
       }
   };
 
@@ -465,9 +468,11 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       if (!run.over) d = {true, w, "the run ended during the impact"};  // it keeps what it has
       const bool accepted_now = d.acceptable || attempt == kMaxTries;
       if (accepted_now && !d.acceptable)  // the last try ran the whole impact, beyond its region or not
-        run.parts.back().summary["warnings"].push_back("contact '" + contact + "': the refined region did not fit after " + std::to_string(kMaxTries) +
-                                               " tries (utilization " + common::number_text(100 * run.utilization) +
-                                               " %, " + d.reason + "): forces beyond it are not modelled");
+        add_warning(run.parts.back().summary,
+                    {"adaptive_fit", "contact '" + contact + "': the refined region did not fit after " + std::to_string(kMaxTries) +
+                                         " tries (utilization " + common::number_text(100 * run.utilization) + " %, " + d.reason +
+                                         "): forces beyond it are not modelled"},
+                    scene_.output.expected_warnings);
       if (!quiet_) {  // seed 001's Table 1, one line per try
         bool built = false;
         for (const auto& r : requests) built = built || !r["cache_hit"].get<bool>();
@@ -575,10 +580,11 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   }
   // the run's results from its phases
   const std::string results = (std::filesystem::path(out_dir_) / "results.h5").string();
-  join_phase_results(files, results, scene_.simulation.output_interval);
+  join_phase_results(files, results, scene_.simulation.output_interval, provenance);
   json summary = join_phase_summaries(summaries, results, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(),
                                       double(std::clock() - cpu0) / CLOCKS_PER_SEC);
   summary["status"] = result.outcome.status;
+  summary["provenance"] = to_json(provenance);
   if (!result.outcome.failure.empty()) summary["failure"] = result.outcome.failure;
   // what refused tries and the wait for isosid-prep took of the run's time (each phase's own
   // times are in its folder and the log)

@@ -5,6 +5,8 @@
 #include "isosid/format/error.hpp"
 #include "isosid/format/hdf5_file.hpp"
 #include "output/force_spectrum.hpp"
+#include "output/recorder.hpp"
+#include "output/warning_list.hpp"
 #include "output/velocity_events.hpp"
 
 #include <Eigen/Dense>
@@ -29,6 +31,7 @@ void series_in(const format::h5::Reader& r, const std::string& group, hsize_t sa
       is_group = false;
     }
     if (is_group) {
+      if (path == "/provenance") continue;  // the run's own, written by the caller
       series_in(r, path, samples, out);
       continue;
     }
@@ -42,7 +45,8 @@ double add_nullable(const json& a, const json& b) { return (a.is_null() ? 0.0 : 
 
 }  // namespace
 
-void join_phase_results(const std::vector<std::string>& phase_files, const std::string& path, double output_interval) {
+void join_phase_results(const std::vector<std::string>& phase_files, const std::string& path, double output_interval,
+                        const RunProvenance& provenance) {
   if (phase_files.empty()) throw format::ComputationError("no phase results to join");
   std::vector<format::h5::Reader> files;
   for (const std::string& f : phase_files) files.emplace_back(f);
@@ -51,6 +55,7 @@ void join_phase_results(const std::vector<std::string>& phase_files, const std::
   format::AtomicOutput out(path);
   {
     format::h5::Writer w(out.temp_path());
+    write_provenance(w, provenance);
     std::vector<std::string> groups;
     for (const std::string& s : series) {
       std::vector<Eigen::MatrixXd> parts;
@@ -134,11 +139,11 @@ json join_phase_summaries(const std::vector<json>& phases, const std::string& jo
     for (const json& p : phases) sum += p["time_split_s"][part].get<double>();
     value = sum;
   }
-  json warnings = json::array();
+  json warnings = {{"warnings", json::array()}, {"expected_warnings", json::array()}};  // both lists, each text once
   for (const json& p : phases)
-    for (const json& w : p["warnings"])
-      if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
-  j["warnings"] = warnings;
+    for (const char* key : {"warnings", "expected_warnings"})
+      for (const json& w : p.value(key, json::array()))
+        if (std::find(warnings[key].begin(), warnings[key].end(), w) == warnings[key].end()) warnings[key].push_back(w);
   for (std::size_t k = 0; k < j["contacts"].size(); ++k) {
     json& c = j["contacts"][k];
     json start = nullptr, end = nullptr;
@@ -164,6 +169,9 @@ json join_phase_summaries(const std::vector<json>& phases, const std::string& jo
     if (!end.is_null() && !last["contacts"][k]["start_s"].is_null() && last["contacts"][k]["end_s"].is_null()) end = nullptr;
     c["start_s"] = start;
     c["end_s"] = end;
+    // a phase without the contact says nothing of the run, which warns only if none had it
+    c["never_closed"] = start.is_null();
+    if (!start.is_null()) remove_warning(warnings, Recorder::never_closed_warning(c["name"].get<std::string>()));
     c["duration_s"] = start.is_null() || end.is_null() ? json(nullptr) : json(end.get<double>() - start.get<double>());
     c["intervals"] = intervals;
     c["touches"] = touches;
@@ -177,6 +185,8 @@ json join_phase_summaries(const std::vector<json>& phases, const std::string& jo
       if (loudest->contains(key)) c[key] = (*loudest)[key];
     c.erase("impact_modes");  // a report of one phase's model: in that phase's summary
   }
+  j["warnings"] = warnings["warnings"];
+  j["expected_warnings"] = warnings["expected_warnings"];
   for (std::size_t k = 0; k < j["joints"].size(); ++k)
     for (const char* key : {"peak_force_n", "peak_torque_n_m", "max_position_error_m", "max_angle_error_rad"}) {
       double most = 0;

@@ -2,6 +2,8 @@
 // during them). Each phase leaves a results folder of its own, as a plain run would; these
 // join them into the run's results.h5 and summary.json, so an adaptive run reads like any other.
 #pragma once
+#include "output/run_provenance.hpp"
+
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -13,7 +15,8 @@ namespace isosid::run {
 /// series whose width changes between phases (the elastic coordinates and modal energies of a
 /// body whose model changed) stays in the phases' files only. Contact force spectra are
 /// computed again over the joined force.
-void join_phase_results(const std::vector<std::string>& phase_files, const std::string& path, double output_interval);
+void join_phase_results(const std::vector<std::string>& phase_files, const std::string& path, double output_interval,
+                        const RunProvenance& provenance);
 
 /// The run's summary from its phases' summaries, in order, and the joined results.h5: the
 /// run's wall and CPU time as given (refused tries and preprocessing included), sums of

@@ -76,6 +76,7 @@ std::optional<ImpactEstimate> estimate_impact(const SurfaceContact& contact, con
   const Eigen::Vector2d relative = slave + other;  // principal directions taken as aligned
 
   ImpactEstimate e;
+  e.gap = best.gap;
   e.line_contact = line;
   const Eigen::MatrixXd Psi = surface.Psi.middleRows(nearest * dim, dim);
   const Eigen::Vector3d v_target = target.body() ? Eigen::Vector3d(target.body()->v(y)) : Eigen::Vector3d::Zero();
@@ -103,6 +104,15 @@ std::optional<ImpactEstimate> estimate_impact(const SurfaceContact& contact, con
   e.peak_force = 4.0 / 3.0 * modulus * std::sqrt(R) * std::pow(e.approach, 1.5);
   e.contact_time = 2.9432 * e.approach / e.approach_speed;
   return e;
+}
+
+std::string closed_at_end_prediction(const SurfaceContact& contact, const ImpactEstimate& e, double t0, double end_time) {
+  if (e.contact_time <= 0 || e.approach_speed <= 0) return "";
+  const double touch = t0 + std::max(e.gap, 0.0) / e.approach_speed, release = touch + e.contact_time;
+  if (touch >= end_time || release <= end_time) return "";
+  return "contact '" + contact.name() + "' will likely still be closed at simulation.end_time (" + common::number_text(end_time) +
+         " s): at its approach speed it touches at t = " + common::number_text(touch) + " s and the Hertz estimate releases it at " +
+         common::number_text(release) + " s; extend end_time";
 }
 
 std::string resolution_warning(const SurfaceContact& contact, const ImpactEstimate& e) {

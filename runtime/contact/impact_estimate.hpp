@@ -23,6 +23,7 @@ struct ImpactEstimate {
   double contact_time = 0;       ///< s; 0 where Hertz gives no closed form (line contact)
   double approach = 0;           ///< m, the bodies' largest approach; 0 where Hertz gives no closed form (line contact)
   double element_size = 0;       ///< m, the slave's contact element at its nearest point
+  double gap = 0;                ///< m, between the nearest points at the estimate's state
   double elements_per_radius() const { return contact_radius / element_size; }
 };
 
@@ -31,6 +32,12 @@ struct ImpactEstimate {
 /// (rotation ignored) and the approach speed along the normal. None when the bodies do not
 /// approach, or when the surfaces there are flat or conforming (no Hertz contact).
 std::optional<ImpactEstimate> estimate_impact(const SurfaceContact& contact, const double* y);
+
+/// The warning, before a run from t0, that the contact will still be closed at end_time: flying
+/// at its approach speed it touches at t0 + gap / speed and Hertz releases it a contact time
+/// later (gravity or other loads make it earlier; the run's own check is after it). "" when the
+/// estimate puts the release before end_time, the touch after it, or has no contact time.
+std::string closed_at_end_prediction(const SurfaceContact& contact, const ImpactEstimate& estimate, double t0, double end_time);
 
 /// The warning for an estimate coarser than kConvergedElementsPerContactRadius, or "".
 std::string resolution_warning(const SurfaceContact& contact, const ImpactEstimate& estimate);

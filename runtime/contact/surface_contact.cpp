@@ -38,7 +38,7 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
     spec_.penalty = derived_penalty(0);
     penalty_source_ = "derived: 1000 E*/h";
   }
-  edge_ = edge_points(surface_, body.sid().analysis);
+  edge_ = edge_points(surface_, body.sid().analysis, format::find_master_patch(body.sid(), surface_.master_patch));
   shape_columns_ = surface_.Psi.transpose();
   const Eigen::Index nh = body.n_quasistatic();
   quasistatic_row_norms_.resize(surface_.points());

@@ -10,8 +10,12 @@ namespace isosid::run {
 
 /// Per point of `surface`: 1 if its element is the first or last along a tangential direction
 /// of the surface and the surface really ends there, 0 otherwise. Not ends: a pole (a patch
-/// side collapsed to a point, or an axisymmetric curve meeting the axis) and a seam (the
-/// first and last elements meet, as around a body of revolution).
-std::vector<char> edge_points(const format::ContactSurface& surface, format::AnalysisType analysis);
+/// side collapsed to a point, or an axisymmetric curve meeting the axis), a seam (the first and
+/// last elements meet, as around a body of revolution), and, given the master patch of the
+/// whole side (`side_patch`), the end of a one-patch body's side: a corner of the body, where no
+/// more of this boundary lies beyond to check (a bar landing flat on its whole side). On a body
+/// of several patches the side may go on in the next patch, so its ends stay ends.
+std::vector<char> edge_points(const format::ContactSurface& surface, format::AnalysisType analysis,
+                              const format::MasterPatch* side_patch = nullptr);
 
 }  // namespace isosid::run

@@ -1,6 +1,8 @@
 // Recording and reporting a run; see recorder.hpp.
 #include "output/recorder.hpp"
 
+#include "output/warning_list.hpp"
+
 #include "isosid/format/atomic_output.hpp"
 #include "isosid/format/error.hpp"
 #include "isosid/format/hdf5_file.hpp"
@@ -57,7 +59,8 @@ std::optional<double> penetration_per_approach(double max_penetration, const std
 }
 }  // namespace
 
-Recorder::Recorder(const MultibodySystem& system, const Scene& scene) : system_(system), scene_(scene) {
+Recorder::Recorder(const MultibodySystem& system, const Scene& scene)
+    : system_(system), scene_(scene), provenance_(run_provenance(scene)) {
   const std::size_t nc = system.contacts().size();
   contact_force_.resize(nc);
   contact_points_.resize(nc);
@@ -226,6 +229,7 @@ void Recorder::write_results(const std::string& path) const {
     format::h5::Writer w(out.temp_path());
     const auto n = Eigen::Index(time_.size());
     w.vector("/time", Eigen::Map<const Eigen::VectorXd>(time_.data(), n), "s");
+    write_provenance(w, provenance_);
     for (std::size_t body = 0; body < system_.bodies().size(); ++body) {
       const FloatingBody* b = system_.bodies()[body].get();
       const std::string g = "/bodies/" + b->name();
@@ -298,55 +302,62 @@ void Recorder::write_results(const std::string& path) const {
   out.commit();
 }
 
-std::vector<std::string> Recorder::warnings() const {
-  std::vector<std::string> out = system_.warnings();
+std::string Recorder::never_closed_warning(const std::string& contact) {
+  return "contact '" + contact + "' never closed: it reports no force, duration or rebound; check the bodies' start positions and "
+         "velocities against simulation.end_time, or leave the contact out";
+}
+
+std::vector<RunWarning> Recorder::warnings() const {
+  std::vector<RunWarning> out = system_.warnings();
   for (std::size_t k = 0; k < edge_reached_.size(); ++k) {
     if (edge_reached_[k] < 0) continue;
     const SurfaceContact& c = system_.contacts()[k];
-    out.push_back("contact '" + c.name() + "' loaded the edge elements of surface '" + c.surface().name + "' of body '" +
+    out.push_back({"edge_reached", "contact '" + c.name() + "' loaded the edge elements of surface '" + c.surface().name + "' of body '" +
                   c.body().name() + "' at t = " + common::number_text(edge_reached_[k]) +
-                  " s: the surface beyond is not checked for contact, so forces may be cut off; widen its interval");
+                  " s: the surface beyond is not checked for contact, so forces may be cut off; widen its interval"});
   }
   for (std::size_t k = 0; k < max_penetration_.size(); ++k) {
     const auto& estimate = system_.impact_estimates()[k];
     const auto ratio = penetration_per_approach(max_penetration_[k], estimate);
     if (!ratio || *ratio <= kMaxPenetrationPerApproach) continue;
     const SurfaceContact& c = system_.contacts()[k];
-    out.push_back("contact '" + c.name() + "' penetrated " + common::number_text(max_penetration_[k]) + " m, " + common::number_text(*ratio) +
+    out.push_back({"penalty_too_soft", "contact '" + c.name() + "' penetrated " + common::number_text(max_penetration_[k]) + " m, " + common::number_text(*ratio) +
                   " times the Hertz approach of the bodies (" + common::number_text(estimate->approach) +
                   " m): its penalty (" + common::number_text(c.penalty()) + " N/m^3, " + c.penalty_source() +
-                  ") is too soft, and the forces and contact time are the penalty layer's, not the bodies'");
+                  ") is too soft, and the forces and contact time are the penalty layer's, not the bodies'"});
   }
+  for (std::size_t k = 0; k < intervals_.size(); ++k)
+    if (intervals_[k].empty()) out.push_back({"never_closed", never_closed_warning(system_.contacts()[k].name())});
   for (std::size_t k = 0; k < intervals_.size(); ++k) {
     if (!closed_at_end(k)) continue;
     const auto& estimate = system_.impact_estimates()[k];
-    out.push_back("contact '" + system_.contacts()[k].name() + "' is still closed at the end of the run (t = " +
+    out.push_back({"closed_at_end", "contact '" + system_.contacts()[k].name() + "' is still closed at the end of the run (t = " +
                   common::number_text(time_.empty() ? 0.0 : time_.back()) + " s): its duration and the bodies' rebound are not final" +
                   (estimate && estimate->contact_time > 0 ? " (the Hertz estimate puts the contact time at " +
                                                                  common::number_text(estimate->contact_time) + " s)"
                                                            : std::string()) +
-                  "; extend simulation.end_time");
+                  "; extend simulation.end_time"});
   }
   if (scene_.reference_from_hertz) {
     const auto& estimates = system_.impact_estimates();
     if (estimates.empty() || !estimates[0])
-      out.push_back("[reference] source = \"hertz\": the first contact has no Hertz estimate, so its peak force and contact "
-                    "time are not compared");
+      out.push_back({"reference", "[reference] source = \"hertz\": the first contact has no Hertz estimate, so its peak force and contact "
+                    "time are not compared"});
     else if (estimates[0]->line_contact)
-      out.push_back("[reference] source = \"hertz\": the first contact is a line contact, whose Hertz estimate has no contact "
-                    "time; only its peak force is compared");
+      out.push_back({"reference", "[reference] source = \"hertz\": the first contact is a line contact, whose Hertz estimate has no contact "
+                    "time; only its peak force is compared"});
   }
   if (const double error = energy_error_per_motion(); error > kMaxEnergyError)
-    out.push_back("the energy balance is off by " + common::number_text(error) +
+    out.push_back({"energy", "the energy balance is off by " + common::number_text(error) +
                   " of the largest energy in motion: the integration did not follow the motion, so forces and velocities are not "
-                  "to be trusted; tighten simulation.rtol (or shorten simulation.step for the leapfrog)");
+                  "to be trusted; tighten simulation.rtol (or shorten simulation.step for the leapfrog)"});
   for (std::size_t k = 0; k < interface_left_.size(); ++k) {
     if (interface_left_[k] < 0) continue;
     const SurfaceContact& c = system_.contacts()[k];
-    out.push_back("contact '" + c.name() + "' loaded points of surface '" + c.surface().name + "' of body '" + c.body().name() +
+    out.push_back({"interface_left", "contact '" + c.name() + "' loaded points of surface '" + c.surface().name + "' of body '" + c.body().name() +
                   "' beyond its Craig-Bampton interface at t = " + common::number_text(interface_left_[k]) +
                   " s: only normal modes deform the surface there, so it presses like a rigid one and the forces come out too "
-                  "high; widen the interface (reduction.interface_points) or move its interface_center over where the contact goes");
+                  "high; widen the interface (reduction.interface_points) or move its interface_center over where the contact goes"});
   }
   return out;
 }
@@ -355,12 +366,15 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
   using nlohmann::json;
   json j;
   j["scene"] = scene_.file;
+  j["provenance"] = to_json(provenance_);
   j["status"] = outcome.status;
   if (!outcome.failure.empty()) j["failure"] = outcome.failure;
   const double wall_time = outcome.wall_time_s;
   j["wall_time_s"] = wall_time;
   j["cpu_time_s"] = outcome.cpu_time_s;
-  j["warnings"] = warnings();
+  j["warnings"] = json::array();
+  j["expected_warnings"] = json::array();
+  for (const RunWarning& w : warnings()) add_warning(j, w, scene_.output.expected_warnings);
   j["end_time_s"] = time_.empty() ? 0.0 : time_.back();
   j["steps"] = stats.steps;
   j["rejected_steps"] = stats.attempts - stats.steps;
@@ -422,6 +436,7 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
     c["penetration_per_hertz_approach"] = ratio ? json(*ratio) : json(nullptr);
     c["penalty_too_soft"] = ratio && *ratio > kMaxPenetrationPerApproach;
     c["closed_at_end"] = closed_at_end(k);
+    c["never_closed"] = list.empty();
     j["contacts"].push_back(c);
   }
   j["hertz_contacts"] = json::array();

@@ -6,6 +6,7 @@
 #include "solve/multibody_system.hpp"
 #include "output/hertz_contact_log.hpp"
 #include "output/impact_modes.hpp"
+#include "output/run_provenance.hpp"
 #include "output/stress_monitor.hpp"
 #include "output/velocity_events.hpp"
 #include "solve/simulation.hpp"
@@ -59,8 +60,11 @@ public:
   /// Contact k's largest force over the accepted steps so far, N.
   double peak_force(int k) const { return peak_force_[std::size_t(k)]; }
   /// The system's warnings, then what the run showed: contacts that reached the edge of
-  /// their surface.
-  std::vector<std::string> warnings() const;
+  /// their surface, penetrated too far, stayed closed at the end or never closed, an energy
+  /// balance that drifted.
+  std::vector<RunWarning> warnings() const;
+  /// The warning of a contact that never closed in the run (summary.json: never_closed).
+  static std::string never_closed_warning(const std::string& contact);
 
 private:
   /// Contact k closed and did not open again before the last step.
@@ -72,6 +76,7 @@ private:
 
   const MultibodySystem& system_;
   const Scene& scene_;
+  RunProvenance provenance_;  ///< gathered when the run starts: the inputs as it found them
   // time series
   std::vector<double> time_;
   std::vector<std::vector<double>> body_states_;  ///< per sample: all states

@@ -19,18 +19,6 @@ namespace isosid::run {
 namespace fs = std::filesystem;
 namespace {
 
-/// What stands at a path that exists but is no folder, for "-o: X is a file, not a results folder".
-std::string kind_of(fs::file_type type) {
-  switch (type) {
-    case fs::file_type::regular: return "a file";
-    case fs::file_type::fifo: return "a FIFO";
-    case fs::file_type::socket: return "a socket";
-    case fs::file_type::character: return "a character device";
-    case fs::file_type::block: return "a block device";
-    default: return "not a folder";
-  }
-}
-
 /// Refuses a results folder that is no folder or cannot be written, or cannot be created.
 void require_writable_folder(const std::string& dir) {
   const auto refuse = [&](const std::string& problem) { throw format::InputError("", "-o", dir + problem); };
@@ -42,7 +30,7 @@ void require_writable_folder(const std::string& dir) {
     if (::access(dir.c_str(), W_OK | X_OK) != 0) refuse(" is a folder this user cannot write");
     return;
   }
-  if (!missing && status.type() != fs::file_type::not_found) refuse(" is " + kind_of(status.type()) + ", not a results folder");
+  if (!missing && status.type() != fs::file_type::not_found) refuse(" is " + format::what_is_at(dir) + ", not a results folder");
   // created at the start of the run: its nearest existing folder must let it be
   fs::path existing = fs::absolute(dir).parent_path();
   while (!fs::exists(existing, ec) && existing.has_relative_path()) existing = existing.parent_path();

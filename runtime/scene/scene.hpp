@@ -151,6 +151,9 @@ struct OutputSettings {
   /// loaded contact points, one frame per `paraview_interval`.
   bool paraview = false;
   double paraview_interval = 0;  ///< s; 0: the output interval, but at most 200 frames (also for --paraview)
+  /// Kinds of warning (scene/run_warning.hpp) this scene expects: summary.json lists them under
+  /// expected_warnings, apart from the warnings that call for attention.
+  std::vector<std::string> expected_warnings;
 };
 
 struct Scene {

@@ -1,6 +1,8 @@
 // Scene file parsing and validation; see scene.hpp.
 #include "scene/scene.hpp"
 
+#include "scene/run_warning.hpp"
+
 #include "body/floating_body.hpp"
 #include "isosid/common/number_text.hpp"
 #include "isosid/common/toml_fields.hpp"
@@ -259,7 +261,7 @@ Scene read_scene_file(const std::string& path) {
   scene.file = path;
   scene.simulation = read_simulation(top.table("simulation"));
   if (auto o = top.optional_table("output")) {
-    o->allow_only({"paraview", "paraview_interval"});
+    o->allow_only({"paraview", "paraview_interval", "expected_warnings"});
     scene.output.paraview = o->boolean("paraview", false);
     if (o->has("paraview_interval")) {
       scene.output.paraview_interval = o->positive("paraview_interval");
@@ -267,6 +269,13 @@ Scene read_scene_file(const std::string& path) {
         o->fail("paraview_interval", "is shorter than the output interval (frames are written at output samples)");
       if (scene.output.paraview_interval > scene.simulation.end_time) o->fail("paraview_interval", "exceeds end_time");
     }
+    if (o->has("expected_warnings")) scene.output.expected_warnings = o->strings("expected_warnings");
+    for (const std::string& kind : scene.output.expected_warnings)
+      if (!is_warning_kind(kind)) {
+        std::string kinds;
+        for (const std::string_view k : kWarningKinds) kinds += (kinds.empty() ? "" : ", ") + std::string(k);
+        o->fail("expected_warnings", "'" + kind + "' is no kind of warning (" + kinds + ")");
+      }
   }
   std::set<std::string> names;
   auto unique = [&](const TomlView& t) {
@@ -352,6 +361,10 @@ Scene read_scene_file(const std::string& path) {
     s.friction = c.number("friction", 0.0);
     if (s.friction < 0 || s.friction > 10) c.fail("friction", "must lie in [0, 10]");
     s.regularization = c.positive("regularization", s.regularization);
+    // the friction law's slope at rest is friction x normal force / regularization: below 1e-9
+    // m/s it is a step no solver resolves, above 1 m/s friction hardly acts in an impact
+    if (s.regularization < 1e-9 || s.regularization > 1)
+      c.fail("regularization", "must lie in [1e-9, 1] m/s (the sliding speed below which friction is smoothed)");
     const std::string enforcement = c.string("enforcement", "penalty");
     if (enforcement != "penalty" && enforcement != "exact") c.fail("enforcement", "must be penalty or exact");
     s.exact = enforcement == "exact";

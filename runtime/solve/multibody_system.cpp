@@ -69,12 +69,12 @@ void MultibodySystem::estimate_impacts(const double* y) {
     impact_estimates_.push_back(estimate_impact(c, y));
     if (!impact_estimates_.back()) continue;
     c.fit_penalty_to_contact_radius(impact_estimates_.back()->contact_radius);
-    if (std::string w = resolution_warning(c, *impact_estimates_.back()); !w.empty()) resolution_warnings_.push_back(w);
+    if (std::string w = resolution_warning(c, *impact_estimates_.back()); !w.empty()) resolution_warnings_.push_back({"resolution", w});
   }
 }
 
-std::vector<std::string> MultibodySystem::warnings() const {
-  std::vector<std::string> all = warnings_;
+std::vector<RunWarning> MultibodySystem::warnings() const {
+  std::vector<RunWarning> all = warnings_;
   all.insert(all.end(), resolution_warnings_.begin(), resolution_warnings_.end());
   return all;
 }
@@ -91,9 +91,9 @@ void MultibodySystem::warn_of_many_dynamic_modes(const FloatingBody& body, const
     advice = "lower quasistatic_above_hz";
   else
     advice = "its SID marks no high modes (" + modes.reduction_method + " reduction); set quasistatic_above_hz";
-  warnings_.push_back("body '" + body.name() + "' integrates " + std::to_string(body.n_dynamic()) +
-                      " modes dynamically (up to " + common::number_text(modes.frequencies_hz(body.n_dynamic() - 1)) +
-                      " Hz), which makes small steps: " + advice);
+  warnings_.push_back({"many_dynamic_modes", "body '" + body.name() + "' integrates " + std::to_string(body.n_dynamic()) +
+                                                 " modes dynamically (up to " + common::number_text(modes.frequencies_hz(body.n_dynamic() - 1)) +
+                                                 " Hz), which makes small steps: " + advice});
 }
 
 namespace {

@@ -10,6 +10,7 @@
 #include "contact/surface_contact.hpp"
 #include "contact/surface_touch.hpp"
 #include "joint/joint_constraints.hpp"
+#include "scene/run_warning.hpp"
 #include "scene/scene.hpp"
 
 #include <memory>
@@ -85,7 +86,7 @@ public:
   /// Position of a body in bodies() (refused as input if the scene has none of that name).
   std::size_t body_index(const std::string& name) const;
   /// What the user should know about the set-up (e.g. hundreds of dynamically integrated modes).
-  std::vector<std::string> warnings() const;
+  std::vector<RunWarning> warnings() const;
   /// The Hertz estimate of every contact at state y (impact_estimates()), the derived penalties
   /// fitted to it and the resolution warnings: at the initial state, and again where a later
   /// phase of a run starts (an impact long after t = 0).
@@ -142,8 +143,8 @@ private:
   mutable bool rhs_valid_ = false;            ///< the call completed
   mutable Eigen::VectorXd solved_y_;          ///< the state the quasistatic modes were last solved for
   mutable bool solved_valid_ = false;         ///< that solve completed
-  std::vector<std::string> warnings_;
-  std::vector<std::string> resolution_warnings_;  ///< of the last estimate_impacts
+  std::vector<RunWarning> warnings_;
+  std::vector<RunWarning> resolution_warnings_;  ///< of the last estimate_impacts
   std::vector<std::optional<ImpactEstimate>> impact_estimates_;
 };
 

@@ -2,6 +2,7 @@
 #include "solve/run_checks.hpp"
 
 #include "contact/default_penalty.hpp"
+#include "contact/impact_estimate.hpp"
 #include "isosid/common/number_text.hpp"
 #include "isosid/format/error.hpp"
 
@@ -76,6 +77,14 @@ void refuse_unsteady_spin(const MultibodySystem& system, const Scene& scene) {
                                  number_text(2 * std::numbers::pi * lowest) + " rad/s, " + number_text(lowest) +
                                  " Hz): a body spinning faster has no steady state for elastic_start = \"steady\"");
   }
+}
+
+std::vector<std::string> closed_at_end_predictions(const MultibodySystem& system, double t0, double end_time) {
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < system.contacts().size(); ++k)
+    if (const auto& estimate = system.impact_estimates()[k])
+      if (std::string w = closed_at_end_prediction(system.contacts()[k], *estimate, t0, end_time); !w.empty()) out.push_back(w);
+  return out;
 }
 
 }  // namespace isosid::run

@@ -5,6 +5,9 @@
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
 
+#include <string>
+#include <vector>
+
 namespace isosid::run {
 
 /// contact[k].penalty: a scene's penalty below kMinPenaltyRatio of the one derived from the
@@ -19,5 +22,10 @@ void refuse_unstable_leapfrog_step(const MultibodySystem& system, const Scene& s
 /// equilibrium, which exists only for spins below the lowest natural frequency (above it
 /// the spin softens the body beyond its stiffness).
 void refuse_unsteady_spin(const MultibodySystem& system, const Scene& scene);
+
+/// Warnings to print before a run from t0: contacts whose Hertz estimate puts their release
+/// after end_time (contact/impact_estimate.hpp, closed_at_end_prediction). The run itself flags
+/// a contact still closed at its end (summary.json closed_at_end).
+std::vector<std::string> closed_at_end_predictions(const MultibodySystem& system, double t0, double end_time);
 
 }  // namespace isosid::run

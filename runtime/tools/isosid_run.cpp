@@ -9,8 +9,10 @@
 #include "output/run_report.hpp"
 #include "scene/sid_provider.hpp"
 #include "solve/contact_resolution.hpp"
+#include "solve/run_checks.hpp"
 #include "solve/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -64,8 +66,10 @@ int report(const nlohmann::json& summary, const run::RunOutcome& outcome, double
            bool quiet) {
   if (as_json) std::cout << summary.dump(2) << "\n";
   // after the run: a refusal or a failure stays the one line; summary.json always holds them
-  if (!quiet && outcome.completed())
+  if (!quiet && outcome.completed()) {
     for (const auto& warning : summary["warnings"]) std::cerr << "isosid-run: warning: " << warning.get<std::string>() << "\n";
+    for (const auto& warning : summary["expected_warnings"]) std::cerr << "isosid-run: expected warning: " << warning.get<std::string>() << "\n";
+  }
   const std::string phases = summary.contains("adaptive") ? ", " + std::to_string(summary["adaptive"]["phases"].size()) + " phases" : "";
   if (!quiet)
     std::fprintf(stderr, "isosid-run: %s in %.3f s wall, %lld steps%s -> %s\n%s", outcome.status.c_str(), summary["wall_time_s"].get<double>(),
@@ -112,6 +116,10 @@ int main(int argc, char** argv) {
     std::vector<format::Sid> sids = run::load_sids(scene, quiet);
     run::fit_contact_resolution(scene, sids, quiet);
     run::Simulation simulation(std::move(scene), std::move(sids));
+    const std::vector<std::string>& expected = simulation.scene().output.expected_warnings;
+    if (!quiet && std::find(expected.begin(), expected.end(), "closed_at_end") == expected.end())
+      for (const std::string& w : run::closed_at_end_predictions(simulation.system(), simulation.time(), simulation.scene().simulation.end_time))
+        std::cerr << "isosid-run: warning: " << w << "\n";
 
     std::optional<run::ParaviewSeries> paraview;
     if (simulation.scene().output.paraview) paraview.emplace(simulation.system(), simulation.scene(), out_dir);

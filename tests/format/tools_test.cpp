@@ -143,6 +143,10 @@ TEST_CASE("isosid-diff refuses a tolerance that is not a finite number >= 0, in 
     CHECK(r.err.size() < 160);
   }
   CHECK(test::run_program(diff + "0").exit_status == 1);  // exact: the stiffer mode differs
+  // a file against itself, and against its copy in another basis, is equal at rtol 0 (to round-off)
+  const auto self = test::run_program(std::string(ISOSID_DIFF_EXE) + " --rtol 0 " + dir.path("a.sid.h5") + " " + dir.path("a.sid.h5"));
+  CHECK(self.exit_status == 0);
+  CHECK_THAT(self.out, Contains("equal within rtol 1e-13"));
   CHECK(test::run_program(diff + "0.5").exit_status == 0);
 }
 

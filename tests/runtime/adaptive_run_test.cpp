@@ -52,6 +52,14 @@ TEST_CASE("adaptive: a sphere's impact on its refined model, between coarse phas
   CHECK(adaptive["energy"]["max_rel_error"].get<double>() < 1e-6);
   CHECK(test::rel_error(adaptive, "peak_force_n") < 0.01);   // Hertz, as scene A (+0.7 %)
   CHECK(test::rel_error(adaptive, "contact_time_s") < 0.01);
+  // the run's provenance names its scene and the model it refines; each phase's results name
+  // the SIDs that phase ran on
+  const std::vector<std::string> roles{"scene", "model sphere"};
+  REQUIRE(adaptive["provenance"]["inputs"].size() == 2);
+  for (std::size_t i = 0; i < roles.size(); ++i) CHECK(adaptive["provenance"]["inputs"][i]["role"] == roles[i]);
+  CHECK(format::h5::Reader(dir.path("out-s.scene.toml/results.h5")).strings("/provenance/input_roles") == roles);
+  CHECK(format::h5::Reader(dir.path("out-s.scene.toml/phases/01-impact-impact/results.h5")).strings("/provenance/input_roles") ==
+        std::vector<std::string>{"scene", "model sphere", "sid sphere"});
 
   // the same refined model, run throughout as a plain body: the phases change nothing of the
   // impact. Same model and state at the touch; the two runs differ by their step sequences,

@@ -80,14 +80,42 @@ TEST_CASE("a spinning free flexible body conserves energy", "[runtime]") {
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-6);
 }
 
-TEST_CASE("a body that never touches reports no rebound against a reference", "[runtime]") {
+TEST_CASE("a body that never touches reports no rebound against a reference, and its contact warns", "[runtime]") {
   // the golden sphere moving away from its plane: no contact closes, so its final speed is no rebound
   const test::ScratchDir dir("no-touch");
   const json s = run_scene(dir, replace(kImpact, "velocity = [0.0, -0.1, 0.0]", "velocity = [0.0, 0.1, 0.0]") +
                                     "[reference]\nrebound_velocity_m_s = 0.1\n");
   CHECK(s["contacts"][0]["intervals"] == 0);
   CHECK_FALSE(s["contacts"][0]["closed_at_end"].get<bool>());
+  CHECK(s["contacts"][0]["never_closed"].get<bool>());
+  REQUIRE(s["warnings"].size() == 1);  // (moving away, it has no Hertz estimate to find its elements coarse)
+  CHECK_THAT(s["warnings"][0].get<std::string>(), Catch::Matchers::StartsWith("contact 'impact' never closed"));
+  CHECK(s["expected_warnings"].empty());
   CHECK(s["reference"]["rebound_velocity_m_s"]["value"].is_null());
+  // a scene that expects it lists it apart: its warnings keep only what calls for attention
+  const json expected = run_scene(dir, replace(kImpact, "velocity = [0.0, -0.1, 0.0]", "velocity = [0.0, 0.1, 0.0]") +
+                                           "[output]\nexpected_warnings = [\"never_closed\"]\n");
+  CHECK(expected["warnings"].empty());
+  REQUIRE(expected["expected_warnings"].size() == 1);
+  CHECK(expected["expected_warnings"][0] == s["warnings"][0]);
+}
+
+TEST_CASE("a contact the Hertz estimate sees closed at end_time is announced before the run", "[runtime]") {
+  // the golden sphere touches after 1 us and Hertz releases it tens of us later: an end at 20 us
+  // is announced before the run starts, and the run flags the contact closed at its end
+  const test::ScratchDir dir("closed-at-end-predicted");
+  std::ofstream(dir.path("s.scene.toml")) << replace(kImpact, "end_time = 100e-6", "end_time = 20e-6");
+  const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " --json " + dir.path("s.scene.toml") + " -o " + dir.path("out"));
+  REQUIRE(r.exit_status == 0);
+  const std::string announced = "isosid-run: warning: contact 'impact' will likely still be closed at simulation.end_time";
+  REQUIRE(r.err.find(announced) != std::string::npos);
+  CHECK(r.err.find(announced) < r.err.find("completed"));  // before the run's report
+  CHECK(json::parse(r.out)["contacts"][0]["closed_at_end"].get<bool>());
+  // with time for the whole impact, nothing is announced
+  std::ofstream(dir.path("s.scene.toml")) << kImpact;
+  const auto whole = test::run_program(std::string(ISOSID_RUN_EXE) + " " + dir.path("s.scene.toml") + " -o " + dir.path("out"));
+  REQUIRE(whole.exit_status == 0);
+  CHECK(whole.err.find("will likely still be closed") == std::string::npos);
 }
 
 TEST_CASE("a scene compared with its own Hertz estimate", "[runtime]") {

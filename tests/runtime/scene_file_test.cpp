@@ -52,6 +52,25 @@ TEST_CASE("scene file: tolerances outside the range the step control can honour 
   CHECK(read(dir, replace(kImpact, "rtol = 1e-6", "rtol = 1e-12")).simulation.rtol == 1e-12);
 }
 
+TEST_CASE("scene file: expected warnings are kinds the run knows", "[runtime][unit][scene][bad-input]") {
+  const test::ScratchDir dir("scene-expected-warnings");
+  refused(dir, kImpact + "[output]\nexpected_warnings = [\"resolution\", \"resolutoin\"]\n",
+          "output.expected_warnings: 'resolutoin' is no kind of warning (resolution, many_dynamic_modes");
+  refused(dir, kImpact + "[output]\nexpected_warnings = \"resolution\"\n", "output.expected_warnings");
+  CHECK(read(dir, kImpact + "[output]\nexpected_warnings = [\"resolution\", \"closed_at_end\"]\n").output.expected_warnings ==
+        std::vector<std::string>{"resolution", "closed_at_end"});
+}
+
+TEST_CASE("scene file: a friction regularization no solver can follow, or one that leaves no friction, is refused",
+          "[runtime][unit][scene][bad-input]") {
+  const test::ScratchDir dir("scene-regularization");
+  const std::string friction = replace(kImpact, "penalty = 5e17", "penalty = 5e17\nfriction = 0.3");
+  for (const char* eps : {"1e-300", "9.9e-10", "1.5", "1e300"})
+    refused(dir, friction + "regularization = " + eps + "\n", "contact[0].regularization: must lie in [1e-9, 1] m/s");
+  CHECK(read(dir, friction + "regularization = 1e-9\n").contacts[0].regularization == 1e-9);
+  CHECK(read(dir, friction + "regularization = 1.0\n").contacts[0].regularization == 1.0);
+}
+
 TEST_CASE("scene file: motion a planar or axisymmetric scene, or a locked DOF, would drop is refused", "[runtime][unit][scene][bad-input]") {
   const test::ScratchDir dir("scene-motion");
   const std::string along_axis = "an axisymmetric scene moves its bodies along the axis only";

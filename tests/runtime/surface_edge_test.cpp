@@ -92,3 +92,20 @@ TEST_CASE("surface edges: a flat 3D patch ends on all four sides", "[runtime][un
   CHECK(marked.size() == 16);  // the 5 x 5 elements less the 3 x 3 inside
   CHECK(marked.count(2 * 5 + 2) == 0);
 }
+
+TEST_CASE("surface edges: the end of a one-patch body's side is its corner, not an end of the surface", "[runtime][unit]") {
+  // a plane bar's bottom side (eta0), x = 0.1 u over u in [0, 1], 6 elements
+  format::MasterPatch side;
+  side.knots = {(Eigen::VectorXd(7) << 0, 0, 0, 0.5, 1, 1, 1).finished()};
+  auto whole = grid(6, 0, 1.0, [](double u, double) { return Eigen::Vector2d(0.1 * u, 0.0); });
+  whole.side = "eta0";
+  CHECK(marked_elements(whole, run::edge_points(whole, format::AnalysisType::PlaneStrain, &side)).empty());
+  CHECK(marked_elements(whole, run::edge_points(whole, format::AnalysisType::PlaneStrain)) == std::set<int>{0, 5});  // side unknown
+  // an interval of the side: its end inside the side is an end, its end at the corner is not
+  auto part = grid(6, 0, 0.5, [](double u, double) { return Eigen::Vector2d(0.1 * u, 0.0); });
+  part.side = "eta0";
+  CHECK(marked_elements(part, run::edge_points(part, format::AnalysisType::PlaneStrain, &side)) == std::set<int>{5});
+  // on one patch of several, the side may go on in the next patch: both ends stay ends
+  whole.patch = "left";
+  CHECK(marked_elements(whole, run::edge_points(whole, format::AnalysisType::PlaneStrain, &side)) == std::set<int>{0, 5});
+}

@@ -6,6 +6,10 @@
 
 namespace isosid::format {
 
+/// What stands at `path` (links followed), as messages name it: "a file", "a directory", "a
+/// FIFO", "a socket", "a character device", "a block device"; "" if nothing does.
+std::string what_is_at(const std::string& path);
+
 /// Empty if `path` names a regular file (symbolic links followed); otherwise the problem, as
 /// InputError's: "file not found", "is a directory, not a file", "is a FIFO, not a file",
 /// "is a socket, not a file", "is a character device, not a file", "too many levels of

@@ -29,8 +29,14 @@ struct Comparison {
   bool equal() const { return differences.empty(); }
 };
 
-/// rtol: relative tolerance on every compared quantity; small quantities are compared
-/// against rtol times their natural scale (mass, size and frequencies of the body).
+/// The smallest tolerance a comparison can honour: aligning the mode bases (principal angles,
+/// an orthogonal Procrustes rotation) and rotating the reduced terms into one basis leave
+/// round-off of a few hundred machine epsilons even between identical files.
+constexpr double kComparisonRoundOff = 1e-13;
+
+/// rtol: relative tolerance on every compared quantity (at least kComparisonRoundOff, so that
+/// rtol 0 means "equal to round-off"); small quantities are compared against rtol times their
+/// natural scale (mass, size and frequencies of the body).
 Comparison compare_sids(const Sid& a, const Sid& b, double rtol);
 
 }  // namespace isosid::format
