@@ -12,15 +12,21 @@
 
 namespace isosid::fuzz {
 
+/// Writes the input to `path` and loads it.
 template <class Load>
-int load_input(const std::uint8_t* data, std::size_t size, const std::string& suffix, Load load) {
-  const std::string path = "/tmp/isosid-fuzz-" + std::to_string(::getpid()) + suffix;
+int load_input_at(const std::uint8_t* data, std::size_t size, const std::string& path, Load load) {
   std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data), std::streamsize(size));
   try {
     load(path);
   } catch (const format::InputError&) {
   }
   return 0;
+}
+
+/// Writes the input to a file of this process named with `suffix` and loads it.
+template <class Load>
+int load_input(const std::uint8_t* data, std::size_t size, const std::string& suffix, Load load) {
+  return load_input_at(data, size, "/tmp/isosid-fuzz-" + std::to_string(::getpid()) + suffix, load);
 }
 
 }  // namespace isosid::fuzz
