@@ -103,6 +103,13 @@ constexpr double kPointGridPerWidth = 16, kWidthStepsPerOctave = 8;
 
 double snapped_width(double width) { return std::exp2(std::round(std::log2(width) * kWidthStepsPerOctave) / kWidthStepsPerOctave); }
 
+/// A contact radius for a model's [contact_resolution], on the same grid but rounded down, so
+/// that its elements stay at or below a/8 of the impact (up to 9 % finer) and near-equal
+/// impacts ask for the same model.
+double snapped_contact_radius(double radius) {
+  return std::exp2(std::floor(std::log2(radius) * kWidthStepsPerOctave) / kWidthStepsPerOctave);
+}
+
 /// The request for `body`'s `surface` at touch parameter u: u snapped to a grid of width / 16
 /// (physical, through the surface's parametric derivatives there), inside the patch, and the
 /// snapped point's body-frame position.
@@ -418,7 +425,12 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
           const double* y = simulation->state().data();
           centre = Eigen::Vector3d(body.r(y)) + body.orientation(y) * r.centre;
         }
-        batch.push_back({scene_.bodies[r.body].model_file, r.request});
+        FineRequest request{scene_.bodies[r.body].model_file, r.request};
+        // a model that sizes its contact elements from a contact radius gets this impact's
+        // (its coarse SID records the one it was built for): a/8 at every impact
+        if (const auto& d = coarse_sids[r.body].discretization; estimate && d && d->contact_radius > 0)
+          request.request.contact_radius = snapped_contact_radius(estimate->contact_radius);
+        batch.push_back(request);
       }
       const auto preparation_start = std::chrono::steady_clock::now();
       const std::vector<CachedSid> sids = cache.fine(batch);  // both bodies' models side by side

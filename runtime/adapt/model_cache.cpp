@@ -47,7 +47,14 @@ std::vector<CachedSid> ModelCache::fine(const std::vector<FineRequest>& requests
     }
     char width[32];
     std::snprintf(width, sizeof width, "%.17g", r.request.width);
-    asked.push_back({r.model_file, {"--refine-at", at, "--refine-width", width}, std::string(" (refined at ") + at + ", " + width + " m wide)"});
+    Request request{r.model_file, {"--refine-at", at, "--refine-width", width}, std::string(" (refined at ") + at + ", " + width + " m wide)"};
+    if (r.request.contact_radius > 0) {
+      char radius[32];
+      std::snprintf(radius, sizeof radius, "%.17g", r.request.contact_radius);
+      request.options.insert(request.options.end(), {"--contact-radius", radius});
+      request.what.insert(request.what.size() - 1, std::string(", for a contact radius of ") + radius + " m");
+    }
+    asked.push_back(request);
   }
   return lookup(asked);
 }

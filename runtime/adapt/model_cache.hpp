@@ -14,7 +14,8 @@ namespace isosid::run {
 struct RefinementRequest {
   std::string surface;
   std::vector<double> at;
-  double width = 0;  ///< m
+  double width = 0;           ///< m
+  double contact_radius = 0;  ///< m; > 0: the model's [contact_resolution] sized for it (isosid-prep --contact-radius)
 };
 
 /// One fine model of a batch: the body's model file and where it is refined.

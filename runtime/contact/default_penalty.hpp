@@ -26,6 +26,14 @@ constexpr double kPenaltyStiffnessRatio = 1000;
 /// stability suite's soft case, scene A at 1e12 N/m^3 (rebound and energy kept), is 3.4e-7 of it.
 constexpr double kMinPenaltyRatio = 1e-8;
 
+/// The stiffest penalty a scene may give, relative to the derived one: 1e6 of it, a layer 1e9
+/// times stiffer than an element's depth of the material. The derived penalty already moves
+/// forces by under 0.1 % (its layer is 1000 times stiffer than the contact patch); a stiffer
+/// one only shortens the steps, as the square root of its ratio. Scene A at 1.7e10 of it
+/// (5e28 N/m^3) stepped at 1e-7 of its contact time and would have crawled for hours; the
+/// stability suite's stiffest case is 340 times the derived penalty.
+constexpr double kMaxPenaltyRatio = 1e6;
+
 /// The deepest penetration of the contact points, relative to the Hertz approach of the
 /// bodies, that a plausible penalty leaves: the derived penalty penetrates by about 1e-3 of
 /// the approach (its layer is 1000 times stiffer than the contact patch); at half the

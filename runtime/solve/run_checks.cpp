@@ -38,17 +38,27 @@ std::pair<double, double> integrated_frequencies(const FloatingBody& body) {
 
 }  // namespace
 
-void refuse_vanishing_penalties(const MultibodySystem& system, const Scene& scene) {
+void refuse_implausible_penalties(const MultibodySystem& system, const Scene& scene) {
   for (std::size_t k = 0; k < system.contacts().size(); ++k) {
     const SurfaceContact& c = system.contacts()[k];
     if (c.exact() || c.penalty_source() != "scene") continue;  // exact contact: any augmentation converges
+    // an adaptive body's penalty is meant for its refined models, not the coarse one here
+    const BodySpec* body = scene.body(c.body().name());
+    if (body && body->adaptive) continue;
     const double derived = c.derived_penalty(0);
-    if (c.penalty() >= kMinPenaltyRatio * derived) continue;
-    throw format::InputError(scene.file, "contact[" + std::to_string(k) + "].penalty",
-                             number_text(c.penalty()) + " N/m^3 is below 1e-8 of the penalty derived from the contact elements (" +
-                                 number_text(derived) +
-                                 " N/m^3, 1000 E*/h): so soft a layer, not the bodies, would take the impact and let them pass into each other "
-                                 "(leave penalty out to have it derived)");
+    const std::string field = "contact[" + std::to_string(k) + "].penalty";
+    if (c.penalty() < kMinPenaltyRatio * derived)
+      throw format::InputError(scene.file, field,
+                               number_text(c.penalty()) + " N/m^3 is below 1e-8 of the penalty derived from the contact elements (" +
+                                   number_text(derived) +
+                                   " N/m^3, 1000 E*/h): so soft a layer, not the bodies, would take the impact and let them pass into each "
+                                   "other (leave penalty out to have it derived)");
+    if (c.penalty() > kMaxPenaltyRatio * derived)
+      throw format::InputError(scene.file, field,
+                               number_text(c.penalty()) + " N/m^3 is above 1e6 times the penalty derived from the contact elements (" +
+                                   number_text(derived) +
+                                   " N/m^3, 1000 E*/h): so stiff a layer changes no force, only shortens the steps until the run crawls "
+                                   "(leave penalty out to have it derived)");
   }
 }
 

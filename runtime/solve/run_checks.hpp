@@ -11,8 +11,9 @@
 namespace isosid::run {
 
 /// contact[k].penalty: a scene's penalty below kMinPenaltyRatio of the one derived from the
-/// contact elements (contact/default_penalty.hpp) lets the bodies pass into each other.
-void refuse_vanishing_penalties(const MultibodySystem& system, const Scene& scene);
+/// contact elements (contact/default_penalty.hpp) lets the bodies pass into each other; one
+/// above kMaxPenaltyRatio of it makes steps so short that the run crawls for hours.
+void refuse_implausible_penalties(const MultibodySystem& system, const Scene& scene);
 
 /// simulation.step: the leapfrog (Stoermer-Verlet) is stable only for steps below 2/omega of
 /// every integrated mode; beyond, the highest grows without bound.

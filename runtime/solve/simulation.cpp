@@ -41,7 +41,7 @@ Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
       system_(scene_, std::move(sids)),
       integrator_(system_, scene_.simulation, initial_state(system_, scene_)) {
   report_steps();
-  refuse_vanishing_penalties(system_, scene_);
+  refuse_implausible_penalties(system_, scene_);
   refuse_unstable_leapfrog_step(system_, scene_);
   refuse_unsteady_spin(system_, scene_);
   if (!scene_.simulation.allow_initial_penetration) refuse_initial_penetration();

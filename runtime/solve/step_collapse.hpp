@@ -1,7 +1,7 @@
 // A run whose accepted steps have collapsed many decades below the time scale of its contacts
-// (a penalty far too stiff for the contact, bodies started deep in each other) would crawl
-// for hours toward max_steps: it is ended as failed, with a diagnosis, once that has lasted
-// long enough not to be a dip at an event.
+// would crawl for hours toward max_steps: it is ended as failed, with a diagnosis, once that
+// has lasted long enough not to be a dip at an event. Penalties far too stiff, its usual cause,
+// are refused before the run (solve/run_checks.hpp); this is the net behind that refusal.
 #pragma once
 
 namespace isosid::run {

@@ -4,6 +4,7 @@
 #include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "solve/simulation.hpp"
+#include "solve/step_collapse.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -63,4 +64,25 @@ TEST_CASE("run checks: a steady start spinning faster than the lowest natural fr
   scene.bodies[0].elastic_start = "rest";
   scene.bodies[0].angular_velocity = {0, 0, 1.01 * lowest};
   CHECK_NOTHROW(run::Simulation(scene, {sid}));
+}
+
+TEST_CASE("run checks: steps collapsed far below the time scale for long end the run, a dip does not", "[runtime][unit]") {
+  // the safety net behind the penalty's ceiling: time scale 1e-6 s, so steps under 1e-15 s count
+  const double scale = 1e-6, collapsed = 0.5 * run::kCollapsedStepRatio * scale;
+  run::StepCollapse dip(scale);
+  double t = 0;
+  dip.observe(t);
+  for (long i = 0; i + 1 < run::kCollapsedSteps; ++i) dip.observe(t += collapsed);
+  dip.observe(t += 1e-9);  // one normal step resets the count
+  for (long i = 0; i + 1 < run::kCollapsedSteps; ++i) dip.observe(t += collapsed);
+  run::StepCollapse crawl(scale);
+  t = 0;
+  crawl.observe(t);
+  for (long i = 0; i + 1 < run::kCollapsedSteps; ++i) crawl.observe(t += collapsed);
+  try {
+    crawl.observe(t += collapsed);
+    FAIL("not ended");
+  } catch (const format::ComputationError& e) {
+    CHECK_THAT(e.what(), Contains("the steps collapsed to 5e-16 s") && Contains("for 1000 steps in a row"));
+  }
 }

@@ -100,6 +100,21 @@ TEST_CASE("a body that never touches reports no rebound against a reference, and
   CHECK(expected["expected_warnings"][0] == s["warnings"][0]);
 }
 
+TEST_CASE("an integration that loses the energy balance is flagged, and a tight one is not", "[runtime]") {
+  // rtol 0.1 and atol 1e-6, the loosest tolerances a scene may give: the golden sphere's impact
+  // gains about its own energy in motion (measured 1.0 of it); at the scene's 1e-6 it keeps it
+  const test::ScratchDir dir("energy-flag");
+  const json loose = run_scene(dir, replace(replace(kImpact, "rtol = 1e-6", "rtol = 0.1"), "atol = 1e-12", "atol = 1e-6"));
+  CHECK(loose["energy"]["error_too_large"].get<bool>());
+  CHECK(loose["energy"]["error_per_energy_in_motion"].get<double>() > 0.05);
+  bool warned = false;
+  for (const auto& w : loose["warnings"]) warned = warned || w.get<std::string>().rfind("the energy balance is off by", 0) == 0;
+  CHECK(warned);
+  const json tight = run_scene(dir, kImpact);
+  CHECK_FALSE(tight["energy"]["error_too_large"].get<bool>());
+  CHECK(tight["energy"]["error_per_energy_in_motion"].get<double>() < 1e-3);
+}
+
 TEST_CASE("a contact the Hertz estimate sees closed at end_time is announced before the run", "[runtime]") {
   // the golden sphere touches after 1 us and Hertz releases it tens of us later: an end at 20 us
   // is announced before the run starts, and the run flags the contact closed at its end
@@ -220,6 +235,11 @@ TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[r
       // a penalty so soft that the bodies would pass through each other
       {replace(kImpact, "penalty = 5e17", "penalty = 1e-300"), "contact[0].penalty: 1e-300 N/m^3 is below 1e-8 of the penalty derived"},
       {replace(kImpact, "penalty = 5e17", "penalty = 1e8"), "contact[0].penalty: 1e+08 N/m^3 is below 1e-8 of the penalty derived"},
+      // so stiff that the steps collapse and the run crawls for hours (the golden sphere's
+      // derived penalty is 1.6e17 N/m^3; 5e28 is scene A's crawl, 1e40 into an overlap its hang)
+      {replace(kImpact, "penalty = 5e17", "penalty = 1e40"), "contact[0].penalty: 1e+40 N/m^3 is above 1e6 times the penalty derived"},
+      {replace(kImpact, "penalty = 5e17", "penalty = 5e28"), "contact[0].penalty: 5e+28 N/m^3 is above 1e6 times the penalty derived"},
+      {replace(kImpact, "penalty = 5e17", "penalty = 2e23"), "contact[0].penalty: 2e+23 N/m^3 is above 1e6 times the penalty derived"},
   };
   for (const Case& c : cases) {
     std::ofstream(dir.path("s.scene.toml")) << c.text;
@@ -357,21 +377,20 @@ TEST_CASE("a signal stops a run within its steps, however far the next sample", 
   CHECK(time(time.size() - 1) == Approx(s["end_time_s"].get<double>()));
 }
 
-TEST_CASE("steps that collapse far below the contact time end the run as failed", "[runtime][contact]") {
-  // 0.1 mm into the plane at a penalty of 1e40 N/m^3: the steps fall to 1e-18 s and the run
-  // would crawl for hours toward max_steps
-  const test::ScratchDir dir("step-collapse");
-  const std::string scene = replace(replace(kImpact, "penalty = 5e17", "penalty = 1e40"), "position = [0.0, 0.0100001, 0.0]",
+TEST_CASE("a penalty just below the ceiling into a deep overlap still runs", "[runtime][contact]") {
+  // 0.1 mm into the plane (0.3 Hertz radii of this coarse sphere) at 1.5e23 N/m^3, just under
+  // 1e6 times the derived penalty: the steps shrink but the run completes (measured 659 steps)
+  const test::ScratchDir dir("stiff-overlap");
+  const std::string scene = replace(replace(kImpact, "penalty = 5e17", "penalty = 1.5e23"), "position = [0.0, 0.0100001, 0.0]",
                                     "position = [0.0, 0.0099, 0.0]");
-  std::ofstream(dir.path("s.scene.toml")) << replace(scene, "output_interval = 1e-6", "output_interval = 1e-6\nallow_initial_penetration = true");
+  std::ofstream(dir.path("s.scene.toml")) << replace(replace(scene, "end_time = 100e-6", "end_time = 5e-6"), "output_interval = 1e-6",
+                                                     "output_interval = 1e-6\nallow_initial_penetration = true");
   const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + dir.path("out"));
   INFO(r.err);
-  CHECK(r.exit_status == 1);
-  CHECK_THAT(r.err, Contains("the steps collapsed to") && Contains("a penalty far too stiff"));
-  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(r.exit_status == 0);
   const json s = json::parse(std::ifstream(dir.path("out/summary.json")));
-  CHECK(s["status"] == "failed");
-  CHECK(std::filesystem::exists(dir.path("out/results.h5")));  // the results so far
+  CHECK(s["status"] == "completed");
+  CHECK(s["steps"].get<long>() < 100000);
 }
 
 TEST_CASE("a step limit reached before any contact does not blame the penalty", "[runtime]") {
@@ -412,11 +431,11 @@ TEST_CASE("bodies may start interpenetrating where the scene allows it", "[runti
 }
 
 TEST_CASE("a run that cannot proceed stops naming time and body and keeps its results", "[runtime]") {
-  // penalty 1e30 with dynamic constraint modes: the steps shrink towards 1e-12 s; the step
-  // limit turns the crawl into a diagnosis instead of a hang
+  // a penalty near the ceiling (1.5e23 N/m^3) with dynamic constraint modes: the steps shrink;
+  // the step limit turns the crawl into a diagnosis instead of a hang
   const test::ScratchDir dir("stalled");
   std::string text = kImpact;
-  text.replace(text.find("penalty = 5e17"), 14, "penalty = 1e30");
+  text.replace(text.find("penalty = 5e17"), 14, "penalty = 1.5e23");
   text.replace(text.find("high_modes = \"quasistatic\""), 26, "high_modes = \"dynamic\"");
   text.replace(text.find("output_interval = 1e-6"), 22, "output_interval = 1e-6\nmax_steps = 3000");
   std::ofstream(dir.path("s.scene.toml")) << text;
