@@ -1,7 +1,7 @@
 // A body in the floating frame of reference formulation, fed only by its SID: state r
 // (world), unit quaternion, q; velocities v (world), omega (body frame), qdot. A rigid body
 // is the same frame with no elastic coordinates (its SID comes from rigid_body_sid()).
-// Equations of motion: shared/research/sid-and-ffrf.md section 2 (MBSim updateMb, CADyn).
+// Equations of motion: docs/references.md [R8] (as MBSim's updateMb and CADyn assemble them).
 #pragma once
 #include "isosid/format/sid.hpp"
 #include "scene/scene.hpp"
@@ -85,7 +85,7 @@ public:
   void set_quasistatic_offset(Eigen::Index offset) { quasistatic_offset_ = offset; }
 
   /// Time derivative of this body's state under the applied forces `applied` (body frame)
-  /// and gravity (world); quasistatic modes carry no inertia (seed 001). Returns the
+  /// and gravity (world); quasistatic modes carry no inertia ([R2]). Returns the
   /// dissipated power of the modal damping.
   double derivatives(const double* y, const GeneralizedForce& applied, const Eigen::Vector3d& gravity, double* ydot) const;
 
@@ -109,7 +109,7 @@ public:
   double gravity_potential(const double* y, const Eigen::Vector3d& gravity) const;
 
   /// Energy of each mode that carries mass (all but a massless boundary), J:
-  /// E_k = 1/2 (qdot_k^2 + omega_k^2 q_k^2) with the SID's frequencies (seed 003's modal energy).
+  /// E_k = 1/2 (qdot_k^2 + omega_k^2 q_k^2) with the SID's frequencies ([R3]'s modal energy).
   /// For a SID in normal form they partition the elastic energy exactly; for a massless-boundary
   /// SID once its boundary is free (it then follows the modes: u_b = Phi_b eta).
   Eigen::VectorXd modal_energies(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) const;
@@ -178,7 +178,9 @@ private:
 /// out += Psi^T F for shape rows Psi (dim x n, dim <= 3) and the first dim components of a
 /// body-frame force F: the generalized elastic force of a point load. Row by row, which also
 /// keeps GCC 12's -Warray-bounds quiet about vectorized reads of a partial fixed-size vector.
+/// A rigid body's shape rows have no columns (and no data to index): nothing to add.
 inline void add_elastic_force(const Eigen::Ref<const Eigen::MatrixXd>& Psi, const Eigen::Vector3d& F, Eigen::Ref<Eigen::VectorXd> out) {
+  if (Psi.cols() == 0) return;
   for (Eigen::Index a = 0; a < Psi.rows(); ++a) out.noalias() += F(a) * Psi.row(a).transpose();
 }
 
@@ -188,7 +190,7 @@ inline constexpr std::array<const char*, 6> kFrameDofNames = {"x", "y", "z", "rx
 /// planar: z, rx, ry) and those `locked` names.
 std::array<bool, 6> locked_dofs(Dimension dimension, const std::vector<std::string>& locked);
 
-/// Rotation matrix of Tait-Bryan angles (x, y, z): Rx(a) Ry(b) Rz(c) (seed 000 eq. 20).
+/// Rotation matrix of Tait-Bryan angles (x, y, z): Rx(a) Ry(b) Rz(c) ([R1] eq. 20).
 Eigen::Matrix3d tait_bryan_matrix(const Eigen::Vector3d& angles);
 /// Inverse of tait_bryan_matrix (beta in [-pi/2, pi/2]).
 Eigen::Vector3d tait_bryan_angles(const Eigen::Matrix3d& A);
