@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Cost model of the runtime (issue 19): for each validation scene, the time per right-hand side
+"""Cost model of the runtime: for each validation scene, the time per right-hand side
 split into the quasistatic static solve, contact detection and forces, joints, the floating-frame
 equations and output (summary.json `time_split_s`), set against a bound from the work no
 evaluation can avoid:

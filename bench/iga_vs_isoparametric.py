@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""IGA against isoparametric bodies at equal contact resolution (seed 000 Tables 1-2): scenes
-A and B with the spline bodies of models/ and with gmsh's quadratic quadrilaterals of the same
-contact element size ([mesh] models), plus coarser variants of each kind. For every body: free
-DOFs, nq, preprocessing wall time (isosid-prep alone, two runs, the faster), the scene's CPU
-time and its errors against the scene's references. Writes the 'iga-vs-isoparametric' section
-of bench/RESULTS.md.
+"""IGA against isoparametric bodies at equal contact resolution ([R1] Tables 1-2 in
+docs/references.md): scenes A and B with the spline bodies of models/ and with gmsh's quadratic
+quadrilaterals of the same contact element size ([mesh] models), plus coarser variants of each
+kind. For every body: free DOFs, nq, preprocessing wall time (isosid-prep alone, two runs, the
+faster), the scene's CPU time and its errors against the scene's references. Writes the
+'iga-vs-isoparametric' section of bench/RESULTS.md.
 
 usage: bench/iga_vs_isoparametric.py"""
 import json
@@ -75,7 +75,7 @@ def main():
             print(f"{scene:18s} {label:48s} dofs {info['mesh']['free_dofs']:6d} prep {prep_s:6.2f} s run {s['cpu_time_s']:6.2f} s "
                   + " ".join(f"{key} {100 * v:+.2f} %" for key, v in errors.items()), flush=True)
     m = machine()
-    lines = [f"## IGA against isoparametric bodies at equal contact resolution (issue 18)",
+    lines = [f"## IGA against isoparametric bodies at equal contact resolution",
              f"{m['date']}, {m['machine']}, commit {m['commit']}; `python3 bench/iga_vs_isoparametric.py`. Preprocessing: "
              "isosid-prep's wall time, the faster of two runs (the gmsh meshing included); run: the scene's CPU time. "
              "Errors are signed, against each scene's references (A: Hertz 51.70 N, 83.1 us; B: l/c 195.7 us, the Hertz "

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Preprocessor speed: assembly throughput (DOFs/s) and eigen-solve time for 2D and 3D seed
-models, and the convergence of the seed 003 beam's first twelve elastic frequencies.
+"""Preprocessor speed: assembly throughput (DOFs/s) and eigen-solve time for 2D and 3D
+validation models, and the convergence of the first twelve elastic frequencies of the beam of
+case F ([R3] in docs/references.md).
 Writes the 'prep-modal' section of bench/RESULTS.md. Usage: bench/prep_modal.py [--quick]"""
 import os
 import re
@@ -54,7 +55,7 @@ def main():
         os.unlink(path)
         spectra.append((sub, r["dofs"], r["frequencies_hz"][6:18], sum(r["timings_s"].values())))
     finest = spectra[-1][2]
-    lines += ["", "### Seed 003 beam (210 x 15 x 10 mm, free-free, cubic): first twelve elastic frequencies [Hz]",
+    lines += ["", "### [R3]'s beam (210 x 15 x 10 mm, free-free, cubic): first twelve elastic frequencies [Hz]",
               "", "| elements | DOFs | time [s] | " + " | ".join(f"f{k + 1}" for k in range(12)) + " | max change vs finest |",
               "|---|---|---|" + "---|" * 12 + "---|"]
     for sub, dofs, f, seconds in spectra:

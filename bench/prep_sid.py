@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Preprocessing time of every seed model by stage, from model file to SID (target: each seed
-000 model under 20 s on this 2-core machine; the seed's MATLAB tool took minutes per model).
+"""Preprocessing time of every validation model by stage, from model file to SID (target: each
+model of [R1] in docs/references.md under 20 s on this 2-core machine; [R1]'s MATLAB tool took
+minutes per model).
 Writes the 'prep-sid' section of bench/RESULTS.md. Usage: bench/prep_sid.py [--quick]"""
 import os
 import statistics

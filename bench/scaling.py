@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""How the runtime's cost grows with the work (issue 19): scene A's sphere reduced to nq = 36,
+"""How the runtime's cost grows with the work: scene A's sphere reduced to nq = 36,
 100, 148 and 300 (Craig-Bampton, 6 to 270 normal modes and the same 31 interface DOFs; the
 interface coordinates quasistatic, the normal modes integrated), and the nq = 36 sphere hit
 at 0.03 to 1 m/s so that more and more contact points carry load. For each run: steps, CPU
@@ -63,7 +63,7 @@ def main():
     info = machine()
     header = ["| case | nq (quasistatic) | steps | µs per step (CPU) | RHS per step | mean loaded points | µs per RHS | "
               "of it static solve | bound [µs] | ratio |", "|---|---|---|---|---|---|---|---|---|---|"]
-    lines = ["## Runtime: scaling with nq and with loaded contact points (issue 19)",
+    lines = ["## Runtime: scaling with nq and with loaded contact points",
              f"{info['date']}, {info['machine']}, commit {info['commit']}; `bench/scaling.py`. Scene A's sphere "
              f"(`sphere_axisym`, contact elements a/8 for 0.1 m/s) against its symmetry plane, dopri5 with quasistatic "
              f"interface coordinates; bound as in the cost model ({rate / 1e9:.1f} G multiply-adds/s).", "",

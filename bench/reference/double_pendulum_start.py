@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Scene E's start (REFERENCE.md E, seed 001 Sect. 6): the left double pendulum is released
-from rest at alpha0 = -20 degrees (rod) and the ball's angle beta0 is chosen so that the rod
-and the ball reach the vertical together (alpha = beta = 0), where the right pendulum's ball
-hangs: the first impact is head-on. The pendulums as rigid bodies (the rods' elastic sag
-under gravity moves the touch by nanometres):
+"""Scene E's start (two double pendulums, E; [R2] Sect. 6 in docs/references.md): the left
+double pendulum is released from rest at alpha0 = -20 degrees (rod) and the ball's angle beta0
+is chosen so that the rod and the ball reach the vertical together (alpha = beta = 0), where the
+right pendulum's ball hangs: the first impact is head-on. The pendulums as rigid bodies (the
+rods' elastic sag under gravity moves the touch by nanometres):
 
   rod: uniform cylinder r = 4 mm, l = 0.4 m, hinged at its top; ball: r = 10 mm, hinged at
   its top to the rod's lower end; steel rho = 7850, g = 9.81. alpha, beta: angles of the

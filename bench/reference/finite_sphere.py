@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""Finite-sphere reference for sphere impacts (issue 13, scope 2): the static force-approach law
+"""Finite-sphere reference for sphere impacts: the static force-approach law
 F(delta) of a linear elastic sphere pressed on a rigid, frictionless plane, computed with
 CalculiX (ccx, Debian package calculix-ccx), and the impact it gives by integrating
-m x'' = -F(x) (REFERENCE.md A and two other spheres). Hertz is the half-space limit.
+m x'' = -F(x) (sphere on sphere, case A of docs/references.md, and two other spheres). Hertz is
+the half-space limit.
 
 Model (all choices below are the comparison's: the reduced model is linear, small strain,
 frictionless):

@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
-"""Independent reference for REFERENCE.md B: a rod with a spherical end dropping on a rigid
-plane, modelled as a 1D elastic rod (St. Venant wave, impedance Z = rho c A) whose end carries
-a Hertz contact F = K d^(3/2), K = 4/3 E/(1 - nu^2) sqrt(r) (sphere of the rod's radius on a
-rigid plane). While the wave travels, the end moves as v_end = -v0 + F(t)/Z + 2 F(t - T)/Z
-(T = 2 l / c: the force wave comes back from the free top end with its sign flipped), so the
-approach d obeys the delay equation d' = v0 - F(t)/Z - 2 F(t - T)/Z (Goldsmith, Impact, ch. 4).
+"""Independent reference for the rod with a spherical end on a rigid plane (B,
+docs/references.md): a rod with a spherical end dropping on a rigid plane, modelled as a 1D
+elastic rod (St. Venant wave, impedance Z = rho c A) whose end carries a Hertz contact
+F = K d^(3/2), K = 4/3 E/(1 - nu^2) sqrt(r) (sphere of the rod's radius on a rigid plane). While
+the wave travels, the end moves as v_end = -v0 + F(t)/Z + 2 F(t - T)/Z (T = 2 l / c: the force wave
+comes back from the free top end with its sign flipped), so the approach d obeys the delay
+equation d' = v0 - F(t)/Z - 2 F(t - T)/Z (Goldsmith, Impact, ch. 4).
 
-REFERENCE.md quotes 2 l / c = 391.5 us for the end of contact, which is the flat-ended rod's
-value. The Hertzian end needs about 150 us to build the force up and as long to let it go, so
-the spherical-ended rod leaves the plane later; this model gives that time.
+A flat-ended rod would end its contact at 2 l / c = 391.5 us. The Hertzian end needs about
+150 us to build the force up and as long to let it go, so the spherical-ended rod leaves the
+plane later; this model gives that time.
 
 Usage: hertz_rod.py [--check SCENE]  (prints JSON; --check compares with the scene's
 [reference] contact_end_s and exits 1 if they differ by more than 0.2 %)."""
@@ -16,7 +17,7 @@ import json
 import math
 import sys
 
-E, NU, RHO, R, L, V0 = 7.28e10, 0.33, 2789.0, 0.01, 1.0, 0.3  # REFERENCE.md B
+E, NU, RHO, R, L, V0 = 7.28e10, 0.33, 2789.0, 0.01, 1.0, 0.3  # case B
 
 
 def simulate(dt=2e-9):

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Why MacNeal's massless-boundary model of a free bar rings against a rigid wall (issue 16's
-plateau within +-5 %), from the held system's modes, in 1D.
+"""Why MacNeal's massless-boundary model of a free bar rings against a rigid wall (its force
+does not keep within +-5 % of the plateau), from the held system's modes, in 1D.
 
 While the bar presses on the wall its boundary is held, and the reduced model is a linear
 system in the free-interface coordinates (the rigid translation, carried by the floating
@@ -98,7 +98,7 @@ def main():
 
     m = machine()
     fmt = lambda s: f"{s[0]:.3f} / {s[1]:.3f} / {s[2]:.3f}"  # noqa: E731
-    lines = [f"## Why MacNeal's bar rings: the held system's top mode (issue 16)",
+    lines = [f"## Why MacNeal's bar rings: the held system's top mode",
              f"{m['date']}, commit {m['commit']}; `bench/reference/macneal_bar_held_modes.py` (numpy, no isosid code). "
              f"The steel bar of bench/bar_drop in 1D ({ELEMENTS} linear elements), reduced by MacNeal's method with inertia "
              "relief to N free-interface modes; with the boundary held at the wall, the force from the touch at v0 "
@@ -115,7 +115,7 @@ def main():
               "a force amplitude of 0.80 of the plateau whatever N, and about the energy share 2 / (pi^2 N) that the N modes do "
               "not hold. More modes raise its frequency, not lower its amplitude. Without it the force is the partial sum "
               "of N clamped modes and flat to the Gibbs ripple of the window's edges. The ringing of bench/bar_drop "
-              "(min 0.16, max 1.84 at N = 30, plane stress) is this mode; the plateau within +-5 % of issue 16 is out of "
+              "(min 0.16, max 1.84 at N = 30, plane stress) is this mode; the plateau within +-5 % asked for is out of "
               "reach of MacNeal's model of a free body as long as its static boundary flexibility is exact (the issue's "
               "first acceptance item). The top mode sits only 1.2 times above the band, too close for an integrator's "
               "numerical damping to remove it without the upper real modes. The massless Craig-Bampton variant has no "

@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
-"""Independent reference for REFERENCE.md D's first impact: a steel sphere (r = 10 mm) at
-0.1 m/s on the flat end of a resting aluminium rod (r = 10 mm, l = 1 m), modelled as a rigid
-mass on a Hertz contact F = K d^(3/2) (K = 4/3 E* sqrt(r), E* of both materials) and a 1D
-elastic rod of impedance Z = rho c A: the end moves at F(t) / Z while no reflection has come
-back (2 l / c = 391 us, long after the contact), so the sphere's velocity v and the approach d
-obey v' = -F(d) / m, d' = v - F(d) / Z (Goldsmith, Impact, ch. 4).
-It leaves out the sphere's own vibration and the rod end's 3D field near the contact (a
-half-space for Hertz, a plane wave at once for the rod).
+"""Independent reference for the first impact of wave propagation (D, docs/references.md): a
+steel sphere (r = 10 mm) at 0.1 m/s on the flat end of a resting aluminium rod (r = 10 mm,
+l = 1 m), modelled as a rigid mass on a Hertz contact F = K d^(3/2) (K = 4/3 E* sqrt(r), E* of
+both materials) and a 1D elastic rod of impedance Z = rho c A: the end moves at F(t) / Z while
+no reflection has come back (2 l / c = 391 us, long after the contact), so the sphere's velocity
+v and the approach d obey v' = -F(d) / m, d' = v - F(d) / Z (Goldsmith, Impact, ch. 4). It
+leaves out the sphere's own vibration and the rod end's 3D field near the contact (a half-space
+for Hertz, a plane wave at once for the rod).
 
 Usage: sphere_on_rod.py [--check SCENE]  (prints JSON; --check compares with the scene's
 [reference] peak_force_n and contact_time_s and exits 1 if either differs by more than 0.1 %)."""

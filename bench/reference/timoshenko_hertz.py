@@ -1,9 +1,10 @@
 #!/usr/bin/python3
-"""Classical reference for REFERENCE.md F's free-free case (seed 003: the steel sphere dropped
-centrically on the free-free steel beam at 1.1 m/s): Hertz contact on a Timoshenko beam by
-modal superposition, the sphere a rigid mass (Goldsmith, Impact, 1960, ch. 4: the sphere on a
-beam by normal modes, Hertz's law for the contact; Timoshenko's beam with shear and rotary
-inertia), plus 3D side calculations that bound the classical model's own error.
+"""Classical reference for the free-free case of sphere on a beam (F; [R3] in
+docs/references.md: the steel sphere dropped centrically on the free-free steel beam at
+1.1 m/s): Hertz contact on a Timoshenko beam by modal superposition, the sphere a rigid mass
+(Goldsmith, Impact, 1960, ch. 4: the sphere on a beam by normal modes, Hertz's law for the
+contact; Timoshenko's beam with shear and rotary inertia), plus 3D side calculations that bound
+the classical model's own error.
 
 Model (every input is read from the scene and its two model files; see --scene):
 - Beam: bending in the impact plane (deflection w along the sphere's velocity), Timoshenko

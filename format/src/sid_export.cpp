@@ -1,4 +1,4 @@
-// SID export; see sid_export.hpp. Layouts: shared/research/interchange-formats.md, the EMBS
+// SID export; see sid_export.hpp. Layouts: docs/references.md [R12], the EMBS
 // reader (vwaurich/EMBS_ModelicaLib, EMBSlib/Resources/Include/ReadSID_C.h) and its sample
 // beam.SID_FEM; MBSim's external_flexible_ffr_body.cc and fbt_lma.cc.
 #include "isosid/format/sid_export.hpp"

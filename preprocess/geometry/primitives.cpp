@@ -15,7 +15,8 @@ Eigen::VectorXd knots(std::initializer_list<double> k) {
   return v;
 }
 
-/// Builds a 2D patch from seed-style tables indexed [i][j] (i along xi, j along eta).
+/// Builds a 2D patch from tables in the style of [R1]'s eq. 35-41, indexed [i][j] (i along xi, j
+/// along eta).
 NurbsPatch from_tables(int p, int q, const Eigen::VectorXd& U, const Eigen::VectorXd& V,
                        const std::vector<std::vector<double>>& X, const std::vector<std::vector<double>>& Y,
                        const std::vector<std::vector<double>>& W) {

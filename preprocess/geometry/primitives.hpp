@@ -1,19 +1,20 @@
-// RIGA-style primitives: exact NURBS control nets of the seed papers' bodies, with named sides.
-// 2D bodies lie in the x-y plane; bodies of revolution have x radial and y on the axis.
+// RIGA-style primitives: exact NURBS control nets of the bodies of [R1] (docs/references.md), with
+// named sides. 2D bodies lie in the x-y plane; bodies of revolution have x radial and y on the
+// axis.
 #pragma once
 #include "geometry/nurbs_patch.hpp"
 
 namespace isosid::prep::primitives {
 
-/// Half-disk x >= 0 of radius r centred at the origin (seed 000 eq. 35-36): p=2, q=1.
+/// Half-disk x >= 0 of radius r centred at the origin ([R1] eq. 35-36): p=2, q=1.
 /// Sides: axis (xi0), lower (eta0, contact at the bottom pole), upper (eta1); xi1 collapses to (r, 0).
 NurbsPatch half_disk(double r);
 
-/// Rod of radius r and length l with a spherical end at y = 0 (seed 000 eq. 38): p=2, q=1.
+/// Rod of radius r and length l with a spherical end at y = 0 ([R1] eq. 38): p=2, q=1.
 /// Sides: axis (xi0), cap (eta0, contact at the pole), top (eta1), lateral (xi1).
 NurbsPatch rod_with_spherical_end(double r, double l);
 
-/// Disk of radius r centred at the origin (seed 000 eq. 39-41): p=q=2, one patch.
+/// Disk of radius r centred at the origin ([R1] eq. 39-41): p=q=2, one patch.
 /// Sides: top (xi0), bottom (xi1, contact at (0, -r)), left (eta0), right (eta1).
 NurbsPatch disk(double r);
 

@@ -35,8 +35,8 @@ struct BodyModel {
 /// makes them conform on their interfaces, builds the space and the DOF map.
 BodyModel build_body(const ModelSpec& spec);
 
-/// The coarse model a THB model refines (seed 001): the spec without its hierarchical
-/// refinement, reduced by modal truncation to the same number of normal modes.
+/// The coarse model a THB model refines ([R2], docs/references.md): the spec without its
+/// hierarchical refinement, reduced by modal truncation to the same number of normal modes.
 ModelSpec coarse_model_spec(const ModelSpec& spec);
 
 /// Applies the refinement of a spec to a patch (elevation first, then knot insertion); a

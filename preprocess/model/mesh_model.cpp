@@ -47,7 +47,8 @@ MeshSpec read_mesh(const TomlView& t) {
   s.growth = t.positive("growth", s.growth);
   if (s.growth <= 1.05 || s.growth > 3) t.fail("growth", "must lie in (1.05, 3]");
   // refused before gmsh runs: 2e5 nodes (4e5 DOFs) is far beyond the comparison bodies of the
-  // seed scenes (the 2 mm rod has 14 000) and meshes in seconds; more would take minutes and gigabytes
+  // validation scenes (the 2 mm rod has 14 000) and meshes in seconds; more would take minutes and
+  // gigabytes
   constexpr double kMaxMeshNodes = 2e5;
   if (const double nodes = 4 * estimated_elements(s); nodes > kMaxMeshNodes) {
     char text[200];

@@ -1,8 +1,8 @@
 // Model files of meshed bodies ([mesh] instead of [geometry]): the isoparametric comparison
-// bodies of seed 000's Tables 1-2. gmsh meshes the primitive; each 9-node element becomes a
-// patch in Bezier form; contact surfaces are the boundary edges of a primitive side within a
-// distance of the contact point, joined along the side; nodes and the Craig-Bampton interface
-// are given in metres.
+// bodies of [R1] Tables 1-2 (docs/references.md). gmsh meshes the primitive; each 9-node element
+// becomes a patch in Bezier form; contact surfaces are the boundary edges of a primitive side
+// within a distance of the contact point, joined along the side; nodes and the Craig-Bampton
+// interface are given in metres.
 #pragma once
 #include "model/model_tables.hpp"
 

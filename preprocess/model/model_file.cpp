@@ -124,7 +124,8 @@ std::string width_problem(double width, const NurbsPatch& patch) {
 }
 
 /// [refinement.hierarchical]: a parameter box, or a point with a physical width; how fine
-/// (smallest element in metres, "contact", or elements across the box) and the level limits of seed 001.
+/// (smallest element in metres, "contact", or elements across the box) and the level limits of [R2]
+/// (docs/references.md).
 HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch, ContactResolutionSpec* resolution) {
   h.allow_only({"box", "point", "width", "smallest", "elements_across", "admissibility", "max_levels", "max_knots_per_level"});
   HierarchicalRequest q;
@@ -159,7 +160,7 @@ HierarchicalRequest read_hierarchical(const TomlView& h, const NurbsPatch& patch
     q.smallest = h.positive("smallest");
   }
   q.elements_across = h.integer_in("elements_across", 1, 1000, 16);
-  // seed 001: more levels make every basis evaluation dearer, more knots per level approach
+  // [R2]: more levels make every basis evaluation dearer, more knots per level approach
   // global refinement; max_levels counts the coarse level
   const int levels = h.integer_in("max_levels", 2, 5, 5), knots = h.integer_in("max_knots_per_level", 1, 10, 10);
   q.limits = {levels, knots};

@@ -52,7 +52,7 @@ struct ReductionSpec {
 };
 
 struct DampingSpec {
-  double kappa = 1e-3;                   ///< seed 000's value
+  double kappa = 1e-3;                   ///< the value of [R1] (docs/references.md)
   double f1_hz = -1, f2_hz = -1;         ///< band; negative: the normal modes' lowest and highest
 };
 
@@ -148,7 +148,7 @@ ModelSpec read_model_file(const std::string& path);
 /// the refinements derived from it. Throws InputError(model file, `source`) if it has none.
 void set_contact_radius(ModelSpec& model, double radius, const std::string& source);
 
-/// Centres the model's hierarchical refinement on a point of a contact surface (seed 001
+/// Centres the model's hierarchical refinement on a point of a contact surface ([R2]
 /// Sect. 4.3: the runtime asks for a fine model where an impact happens): the refined region
 /// becomes `width` (m) wide around the surface's tangential parameter(s) `at`, and a
 /// Craig-Bampton interface moves to that surface, centred there too. Throws InputError(model file,

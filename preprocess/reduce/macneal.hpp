@@ -1,4 +1,4 @@
-// MacNeal's massless-boundary reduction (seed 003; Monjaraz-Tec, Gross & Krack 2022):
+// MacNeal's massless-boundary reduction ([R3], [R4] in docs/references.md):
 // free-interface normal modes plus residual-flexibility attachment modes of the boundary DOFs.
 // Coordinates [u_b; eta]: u_b the physical displacements of the boundary DOFs, which carry no
 // mass, eta the amplitudes of the retained elastic modes. A free body is reduced with inertia

@@ -1,4 +1,4 @@
-// Reduced models with a massless boundary (seed 003; Monjaraz-Tec, Gross & Krack 2022): the
+// Reduced models with a massless boundary ([R3], [R4] in docs/references.md): the
 // boundary DOFs stay physical coordinates u_b and carry no mass, the mass rides on modal
 // coordinates eta. Made by MacNeal's method (reduce/macneal) or the massless Craig-Bampton
 // variant (reduce/craig_bampton).

@@ -1,8 +1,9 @@
 // How much of each mode is beam motion: the share of its kinetic energy carried by the mean
-// translation of the body's cross-sections. Seed 003 labels a beam's bending modes in the impact
-// direction 1F, 2F, ...; a bending mode in direction d moves its sections along d as wholes
-// (share along d near 1), an axial mode along the axis, while torsion and cross-section modes
-// leave the sections' means at rest (shares near 0). isosid-run labels modes from these shares.
+// translation of the body's cross-sections. [R3] (docs/references.md) labels a beam's bending modes
+// in the impact direction 1F, 2F, ...; a bending mode in direction d moves its sections along d as
+// wholes (share along d near 1), an axial mode along the axis, while torsion and cross-section
+// modes leave the sections' means at rest (shares near 0). isosid-run labels modes from these
+// shares.
 #pragma once
 #include <Eigen/Dense>
 #include <Eigen/Sparse>

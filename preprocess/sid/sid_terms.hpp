@@ -1,7 +1,7 @@
 // The classic SID body terms (mdCM, J, Ct, Cr, Gr, Ge, Oe with their first-order Taylor parts)
 // from the body integrals int c dm, int c c^T dm, int Phi dm, int c_a Phi_b dm and
 // int Phi_a^T Phi_b dm, each an exact quadratic form of the scalar consistent mass matrix
-// (formulas: shared/research/sid-and-ffrf.md section 1, MBSim's assemble()).
+// (formulas: docs/references.md [R8], as MBSim's assemble() builds them).
 #pragma once
 #include "isosid/format/sid.hpp"
 
@@ -16,7 +16,7 @@ namespace isosid::prep {
 void fill_inertia_terms(format::Sid& sid, const Eigen::SparseMatrix<double>& scalar_mass,
                         const Eigen::MatrixXd& node_points, const Eigen::MatrixXd& Phi_nodal);
 
-/// Rayleigh coefficients from (kappa, f1, f2) (seed 000 eq. 26-27).
+/// Rayleigh coefficients from (kappa, f1, f2) ([R1] eq. 26-27).
 format::Damping rayleigh_damping(double kappa, double f1_hz, double f2_hz);
 
 }  // namespace isosid::prep

@@ -1,9 +1,9 @@
 // Transfer of deformation states between a coarse model and its hierarchical refinement
-// (seed 001 Sect. 4.4). Nodal: coarse -> fine is exact (the coarse space is nested in the
-// THB space); fine -> coarse solves, on every coarse element, for the element's control-point
-// displacements from the fine displacements at its (p+1)^d Gauss points and averages control
-// points shared by elements. Reduced: q_fine = T q_coarse and back by mass-weighted projection
-// of the transferred nodal field onto the other basis (the seed's pseudo-inverse weighted
+// ([R2] Sect. 4.4, docs/references.md). Nodal: coarse -> fine is exact (the coarse space is nested
+// in the THB space); fine -> coarse solves, on every coarse element, for the element's
+// control-point displacements from the fine displacements at its (p+1)^d Gauss points and averages
+// control points shared by elements. Reduced: q_fine = T q_coarse and back by mass-weighted
+// projection of the transferred nodal field onto the other basis ([R2]'s pseudo-inverse weighted
 // with M, so dense control nets near the contact do not outweigh the rest of the body). The
 // refined model's basis holds the prolongated coarse modes, so coarse -> fine -> coarse is
 // the identity and a coarse state keeps its elastic energy.

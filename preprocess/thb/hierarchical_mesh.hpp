@@ -1,7 +1,7 @@
 // The mesh of a hierarchically refined patch: per-level knot vectors (each level splits
 // every span of its parent level into an integer number of equal spans) and nested parameter
 // boxes Omega^0 = patch > Omega^1 > ... where each level's functions live (THB refinement,
-// seed 001 Sect. 2.3 and 4.3). The boxes are built from a refinement request.
+// [R2] Sect. 2.3 and 4.3 in docs/references.md). The boxes are built from a refinement request.
 #pragma once
 #include "geometry/nurbs_patch.hpp"
 #include "thb/level_factors.hpp"
@@ -25,7 +25,7 @@ struct HierarchicalRequest {
   std::vector<double> point;               ///< patch parameter of the contact point ...
   double width = 0;                        ///< ... and the physical width of the refined region, m
   double smallest = 0;                     ///< m, element size in the box; 0: from elements_across
-  int elements_across = 16;                ///< seed 001: elements across the interval per direction
+  int elements_across = 16;                ///< [R2]: elements across the interval per direction
   int admissibility = 2;                   ///< class m: functions of at most m levels on any element
   LevelLimits limits;
 };
@@ -43,7 +43,7 @@ struct HierarchicalMesh {
 };
 
 /// Resolves the request on `base` (the globally refined coarse patch): the parameter box,
-/// the level factors of each direction (seed 001 Alg. 3, largest split at the coarsest level)
+/// the level factors of each direction ([R2] Alg. 3, largest split at the coarsest level)
 /// and nested domains admissible of class m (Omega^{l+m-1} grown by p level-l elements lies in
 /// Omega^l, so at most m levels have functions on any element). Throws InputError(file, field, problem).
 HierarchicalMesh hierarchical_mesh(const NurbsPatch& base, const HierarchicalRequest& request, const std::string& file);

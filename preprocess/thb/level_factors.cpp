@@ -1,4 +1,4 @@
-// Seed 001 Alg. 3; see level_factors.hpp.
+// [R2] Alg. 3 (docs/references.md); see level_factors.hpp.
 #include "thb/level_factors.hpp"
 
 #include <algorithm>
@@ -32,7 +32,7 @@ std::vector<int> level_factors(int wanted, const LevelLimits& limits) {
                                 std::to_string(ceiling) + "); refine the coarse model first");
   for (int elements = wanted;; ++elements) {  // Alg. 3 line 2-3: the next guess
     std::vector<int> f = prime_factors(elements);
-    // line 5-6: merge the two leading (smallest) factors until the levels fit; the seed's
+    // line 5-6: merge the two leading (smallest) factors until the levels fit; [R2]'s
     // "+2" counts the coarse and the contact level, here the finest factor level is the contact level
     while (int(f.size()) > refined_levels) {
       f[1] *= f[0];

@@ -43,15 +43,15 @@ using nlohmann::json;
 /// phase going), and its ParaView frames: one every few samples.
 constexpr double kSamplesPerImpact = 100, kMaxSamplesPerOutput = 1000, kSamplesPerFrame = 4;
 
-/// Seed 001 Sect. 4.2: the contact interval is used best at 70 % (the first impact's width
-/// makes the Hertz contact diameter 70 % of it).
+/// [R2] Sect. 4.2 (docs/references.md): the contact interval is used best at 70 % (the first
+/// impact's width makes the Hertz contact diameter 70 % of it).
 constexpr double kTargetUtilization = 0.7, kMinUtilization = 0.5, kMaxUtilization = 0.9;
 /// Tries of one impact before the last one is taken as it is.
 constexpr int kMaxTries = 4;
 /// Alg. 2 widens a width by at most this factor per try (and narrows it to half at most).
 constexpr double kMaxWidening = 1.5;
 /// Errors in one impact run before the next ends the run: the penalty is then down by two
-/// decades and more (seed 001's slow decrease has no limit).
+/// decades and more ([R2]'s slow decrease has no limit).
 constexpr int kMaxPenaltyLowerings = 20;
 
 /// The output interval of an impact with the Hertz estimate `estimate` at its touch: the
@@ -148,10 +148,10 @@ std::vector<Refinement> refinements(const Scene& scene, const MultibodySystem& s
   return out;
 }
 
-/// Seed 001 Alg. 2: whether an impact's refined region fits its contact, and the width for the
+/// [R2] Alg. 2: whether an impact's refined region fits its contact, and the width for the
 /// next try or the next impact of that contact. Over 1: the load reached beyond the region
 /// (widen by half); over kMaxUtilization the load came within a tenth of its edge, where the
-/// seed's edge elements are (widen toward the target); under kMinUtilization the region wastes
+/// edge elements of [R2] are (widen toward the target); under kMinUtilization the region wastes
 /// its elements (narrow toward the target); in between the model is acceptable and the width
 /// still moves toward the target, by at most half.
 struct IntervalDecision {
@@ -218,7 +218,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   std::vector<std::string> files;
   std::vector<format::vtk::CollectionEntry> frames;  // their ParaView frames, relative to out_dir/paraview
   json log = json::array();           // every phase run, tries included
-  json searches = json::array();      // the penalty searches (seed 001 Fig. 3)
+  json searches = json::array();      // the penalty searches ([R2] Fig. 3)
   Result result;
   int phase = 0;
   double probes_cpu = 0;
@@ -310,7 +310,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
   };
 
   // One run of an impact on `fine` (scene `fine_scene`, SIDs `fine_sids`), and with the
-  // penalty search its continuations after errors (seed 001 Fig. 3's slow decrease: the
+  // penalty search its continuations after errors ([R2] Fig. 3's slow decrease: the
   // penalty one lower, on from the last good step). `fine` ends as the last part's simulation.
   struct ImpactRun {
     bool over = false;          ///< the impact ended as the loop asks (the last part's, unless it ended on an error)
@@ -485,7 +485,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
                                          " tries (utilization " + common::number_text(100 * run.utilization) + " %, " + d.reason +
                                          "): forces beyond it are not modelled"},
                     scene_.output.expected_warnings);
-      if (!quiet_) {  // seed 001's Table 1, one line per try
+      if (!quiet_) {  // as [R2] Table 1, one line per try
         bool built = false;
         for (const auto& r : requests) built = built || !r["cache_hit"].get<bool>();
         std::fprintf(stderr, "isosid-run:   try %d: width %.4g mm (%s), penalty %.3g N/m^3, utilization %.0f %%, %s%s\n", attempt, 1e3 * w,
@@ -507,7 +507,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       }
     }
 
-    // seed 001 Fig. 3's quick increase, on the contact's first impact that ran without error:
+    // [R2] Fig. 3's quick increase, on the contact's first impact that ran without error:
     // probes of the accepted model over the impact's first contact steps, ten times stiffer
     // each, from the touch; a penalty other than the one run runs the impact again
     if (impact_over && search && !learned_penalty[std::size_t(k)] && !accepted.lowered) {

@@ -1,8 +1,8 @@
-// A run whose adaptive bodies change their model at each impact (seed 001 Fig. 2): coarse
-// phases between impacts on each body's coarse model, stopped where a contact's exact surfaces
-// first touch; a fine model refined around that point (isosid-prep, cached) for the impact;
-// the state moved into it with the refined SID's transfer, the impact run until its surfaces
-// are apart again, and the state moved back. Each phase writes a results folder of its own
+// A run whose adaptive bodies change their model at each impact ([R2] Fig. 2, docs/references.md):
+// coarse phases between impacts on each body's coarse model, stopped where a contact's exact
+// surfaces first touch; a fine model refined around that point (isosid-prep, cached) for the
+// impact; the state moved into it with the refined SID's transfer, the impact run until its
+// surfaces are apart again, and the state moved back. Each phase writes a results folder of its own
 // (phases/NN-...); the run's results.h5 and summary.json join them and log every decision.
 #pragma once
 #include "output/run_folder.hpp"

@@ -1,6 +1,6 @@
 // The first impact's refined width of an adaptive run ([adaptive] interval_width) against what
-// it can do: the region is centred on the touch of a contact surface, and seed 001's Alg. 2
-// widens it by at most half per try.
+// it can do: the region is centred on the touch of a contact surface, and [R2] Alg. 2
+// (docs/references.md) widens it by at most half per try.
 #pragma once
 #include "isosid/format/sid.hpp"
 #include "scene/scene.hpp"

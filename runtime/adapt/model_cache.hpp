@@ -1,6 +1,6 @@
-// The SIDs the adaptive loop asks for (seed 001 Sect. 4, Fig. 2): a body's coarse model and
-// its fine models, refined hierarchically around an impact point, built by isosid-prep as a
-// subprocess and kept in a cache directory under the hash of their request. A request that
+// The SIDs the adaptive loop asks for ([R2] Sect. 4, Fig. 2, docs/references.md): a body's coarse
+// model and its fine models, refined hierarchically around an impact point, built by isosid-prep as
+// a subprocess and kept in a cache directory under the hash of their request. A request that
 // was built before (by this run, an earlier impact or an earlier run) is read, not rebuilt.
 #pragma once
 #include <string>

@@ -27,7 +27,7 @@ void PenaltySearch::record(PenaltyProbe probe) {
     probes_.back().error = "steps grew from " + std::to_string(before->steps) + " to " + std::to_string(p.steps);
   if (!p.error.empty()) {
     done_ = true;
-    // the seed's slow decrease starts from the penalty that failed; after a good decade the
+    // [R2]'s slow decrease starts from the penalty that failed; after a good decade the
     // search keeps that one instead (it ran without error, and the next is ten times stiffer)
     result_ = before ? before->penalty : p.penalty.lowered();
     reason_ = "error at " + number_text(p.penalty.value()) + " N/m^3 (" + p.error + ")";

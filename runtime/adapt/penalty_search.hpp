@@ -1,26 +1,26 @@
-// Seed 001 Sect. 4.1 and Fig. 3: the penalty factor of an adaptive impact, found by trial.
-// The penalty is c_p = m 10^e (eq. 8). Quick increase: short probes of the impact's first
+// [R2] Sect. 4.1 and Fig. 3 (docs/references.md): the penalty factor of an adaptive impact, found
+// by trial. The penalty is c_p = m 10^e (eq. 8). Quick increase: short probes of the impact's first
 // n_con = 30 contact steps raise the exponent by one while they run without error. Slow
 // decrease: an error during the impact lowers the leading digit by one and the run goes on
 // from its last good step (adaptive_run).
 //
-// Where this differs from the seed, and why. The seed's quasistatic Newton (a finite-difference
+// Where this differs from [R2], and why. [R2]'s quasistatic Newton (a finite-difference
 // Jacobian with Broyden updates) fails close above the penalty's converging value, so its
 // errors end the increase. Ours has the exact Jacobian and does not fail: scene A's sphere runs
 // at 5e24 N/m^3, 10^6 times its converged penalty, but needs 470 times the steps (0.1 s of CPU
 // become 53 s) and its peak force drifts by 0.5 % (Gauss points over-constrained); at 1e27,
 // +20 %. So the increase also stops once a probe's contact force at the window's end agrees
 // with the previous decade's to kForceTolerance (the result no longer depends on the penalty,
-// the seed's aim in its ref. [16]); it keeps the lower of the two. And a probe that needs
+// [R2]'s aim in its ref. [16]); it keeps the lower of the two. And a probe that needs
 // kStepGrowth times the previous decade's steps for the same window counts as an error (the
-// seed's "increases the computation time, or the numerical integration might even terminate").
+// [R2]: "increases the computation time, or the numerical integration might even terminate").
 #pragma once
 #include <string>
 #include <vector>
 
 namespace isosid::run {
 
-/// c_p, N/m^3, with seed 001's steps: times ten, or one off its leading digit.
+/// c_p, N/m^3, with [R2]'s steps: times ten, or one off its leading digit.
 class PenaltyFactor {
 public:
   explicit PenaltyFactor(double value = 0) : value_(value) {}
@@ -46,7 +46,7 @@ struct PenaltyProbe {
 
 class PenaltySearch {
 public:
-  /// Seed 001's n_con: contact steps of a probe.
+  /// [R2]'s n_con: contact steps of a probe.
   static constexpr int kContactSteps = 30;
   /// Relative change of the probe's force over one decade below which the penalty has
   /// converged. It must exceed the drift of over-constrained Gauss points, +0.2 % per fourfold

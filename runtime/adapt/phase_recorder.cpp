@@ -50,7 +50,7 @@ void PhaseRecorder::step(double t, const double* y) {
     const std::size_t k = std::size_t(impact_.contact);
     if (system_.touch(k, y).gap > apart && system_.contacts()[k].min_gap(y) > apart) impact_over_ = true;
   }
-  // the farthest loaded point from the region's centre, in the slave's frame (seed 001's utilization
+  // the farthest loaded point from the region's centre, in the slave's frame ([R2]'s utilization
   // of the contact interval, measured as a length: contact radius over half the width)
   const SurfaceContact& contact = system_.contacts()[std::size_t(impact_.contact)];
   const Eigen::Quaterniond frame = contact.body().orientation(y);

@@ -1,7 +1,7 @@
-// The observer of one phase of an adaptive run (seed 001 Fig. 2): it records like a plain
-// run's Recorder and says when the phase is over: a coarse phase at the first touch of a
+// The observer of one phase of an adaptive run ([R2] Fig. 2, docs/references.md): it records like a
+// plain run's Recorder and says when the phase is over: a coarse phase at the first touch of a
 // contact with an adaptive body, an impact phase once its contact's surfaces are apart again,
-// or as soon as its load reaches beyond the refined region (seed 001: an edge element in
+// or as soon as its load reaches beyond the refined region ([R2]: an edge element in
 // contact makes the rest of the impact pointless). It measures the region's utilization.
 #pragma once
 #include "output/recorder.hpp"
@@ -35,7 +35,7 @@ public:
     /// contact closed.
     int window_contact_steps = 0;
     /// Stop at the first accepted step after a quasistatic solve failed (a step retried
-    /// smaller): seed 001's error that lowers the penalty.
+    /// smaller): [R2]'s error that lowers the penalty.
     bool stop_on_error = false;
   };
   /// An impact phase starts where its contact's surfaces touch: that touch is taken as found,

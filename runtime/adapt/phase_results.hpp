@@ -1,6 +1,7 @@
-// One run's results from its phases (seed 001: coarse phases between impacts, refined ones
-// during them). Each phase leaves a results folder of its own, as a plain run would; these
-// join them into the run's results.h5 and summary.json, so an adaptive run reads like any other.
+// One run's results from its phases ([R2] in docs/references.md: coarse phases between impacts,
+// refined ones during them). Each phase leaves a results folder of its own, as a plain run would;
+// these join them into the run's results.h5 and summary.json, so an adaptive run reads like any
+// other.
 #pragma once
 #include "output/run_provenance.hpp"
 

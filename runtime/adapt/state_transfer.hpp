@@ -1,6 +1,6 @@
 // Moving a run's state from one multibody system to another that models the same bodies
-// differently (seed 001 Sect. 4.4): a body changes between its coarse model and a model
-// refined around an impact. The frames keep their position, orientation and velocities; the
+// differently ([R2] Sect. 4.4, docs/references.md): a body changes between its coarse model and a
+// model refined around an impact. The frames keep their position, orientation and velocities; the
 // elastic coordinates map through the refined SID's /transfer.
 #pragma once
 #include "solve/multibody_system.hpp"

@@ -96,7 +96,7 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
     }
   }
   // the massless boundary carries no inertia: the floating-frame terms (quadratic in nq)
-  // then run over the modes alone (seed 003's beam: 40 of 283 coordinates)
+  // then run over the modes alone (the beam of [R3], docs/references.md: 40 of 283 coordinates)
   n_inertial_ = massless > 0 && inertia_only_in_leading(sid_, n - massless) ? n - massless : n;
   B_.setZero();  // rows beyond n_inertial_ stay zero
   if (rotates_ && !sid_.Oe.M1.empty()) {

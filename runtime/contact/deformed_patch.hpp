@@ -35,7 +35,8 @@ public:
   double upper(int direction) const { return patch_.knots[std::size_t(direction)](patch_.knots[std::size_t(direction)].size() - 1); }
   /// Moves the control net to X + Phi q (q: all nq elastic coordinates). A control point is
   /// moved when an evaluation first needs it: projections near a contact visit a few spans of
-  /// a patch that may have hundreds of control points (seed 003's beam face: 893).
+  /// a patch that may have hundreds of control points (the beam face of [R3] in docs/references.md:
+  /// 893).
   void deform(const Eigen::VectorXd& q);
   /// A sphere (body frame) that holds the deformed patch, which lies in the convex hull of its
   /// control net: the reference net's bounding sphere grown by a bound of the control points'

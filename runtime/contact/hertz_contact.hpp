@@ -1,5 +1,5 @@
-// Hertz's law between two rigid spheres: seed 001's reference model "Hertz" for impacts of
-// spheres whose flexibility is local to the contact. The spheres overlap by
+// Hertz's law between two rigid spheres: the reference model "Hertz" of [R2] (docs/references.md)
+// for impacts of spheres whose flexibility is local to the contact. The spheres overlap by
 // delta = r_a + r_b - |c_a - c_b| and push each other apart along the line of centres with
 // F = K delta^(3/2), K = 4/3 E* sqrt(R*), 1/E* = (1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b,
 // 1/R* = 1/r_a + 1/r_b (Johnson, Contact Mechanics, eq. 4.22-4.23); the stored energy is

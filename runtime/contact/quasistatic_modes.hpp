@@ -1,6 +1,6 @@
-// Quasistatic high-frequency modes (seed 001): instead of integrating the stiff high modes,
-// solve their static equilibrium K_h z = f(z) under the contact forces (and the rotation
-// loads of spinning bodies) at every evaluation, by Newton's method with the exact contact
+// Quasistatic high-frequency modes ([R2], docs/references.md): instead of integrating the stiff
+// high modes, solve their static equilibrium K_h z = f(z) under the contact forces (and the
+// rotation loads of spinning bodies) at every evaluation, by Newton's method with the exact contact
 // Jacobian. All bodies are solved together, so a contact between two flexible bodies couples
 // their modes. Each Newton step solves the contact problem with the points' gaps linearized
 // where it stands (ContactModel, active set included), so a step costs one pass over the

@@ -1,7 +1,7 @@
-// What the contacts contribute to the quasistatic sub-problem (seed 001): every candidate
-// contact point of the quasistatic modes z of all bodies (stacked; each body's block starts at
-// its quasistatic_offset()) with its gap linearized in z, g(z) ~ g + v^T (z - z0). A point
-// carries the normal pressure p(g) = max(0, lambda - c_p g) over its weight w (lambda = 0:
+// What the contacts contribute to the quasistatic sub-problem ([R2], docs/references.md): every
+// candidate contact point of the quasistatic modes z of all bodies (stacked; each body's block
+// starts at its quasistatic_offset()) with its gap linearized in z, g(z) ~ g + v^T (z - z0). A
+// point carries the normal pressure p(g) = max(0, lambda - c_p g) over its weight w (lambda = 0:
 // penalty contact), and its generalized force on z is p w (v + t), t the friction direction
 // per unit normal force. The Jacobian -df/dz of the pressed points is a sum of rank-one terms
 // c_p w (v + t) v^T, whose low rank keeps the Newton solve cheap with hundreds of modes; the

@@ -1,9 +1,9 @@
-// Gauss-point penalty contact (seed 000 eq. 22-25) of a flexible body's contact surface
-// (the slave) against a target: a fixed surface, a rigid body or another flexible body's
+// Gauss-point penalty contact ([R1] eq. 22-25, docs/references.md) of a flexible body's contact
+// surface (the slave) against a target: a fixed surface, a rigid body or another flexible body's
 // master patch. Each slave point that penetrates the target carries c_p |g| w along the
 // target's normal plus regularized Coulomb friction against the relative sliding velocity;
 // body targets receive the reaction. A bounding-sphere broad phase skips the whole surface
-// while it is clear of the target. Exact contact on a massless boundary (seed 003) is the
+// while it is clear of the target. Exact contact on a massless boundary ([R3]) is the
 // augmented Lagrangian: each point carries the pressure max(0, lambda - c_p g) with a
 // multiplier lambda that the static solve updates (Uzawa) until the active gaps close.
 #pragma once

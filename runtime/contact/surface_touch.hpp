@@ -1,5 +1,5 @@
-// Where and when two bodies first touch (seed 001 eq. 7): the closest approach of a contact's
-// exact slave surface, the NURBS of its master patch on the deformed control net, to the
+// Where and when two bodies first touch ([R2] eq. 7, docs/references.md): the closest approach of a
+// contact's exact slave surface, the NURBS of its master patch on the deformed control net, to the
 // target, minimizing the target's signed distance over the patch's parameters. Unlike the
 // contact's Gauss points, the exact surfaces touch at one point at one time: the impact's
 // time and its location in each body's parameter space (the root of this gap in time).

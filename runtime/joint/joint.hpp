@@ -1,13 +1,13 @@
-// One joint of the scene as constraint rows on the bodies' accelerations (seed 001): the two
-// attachments coincide (3 translational rows); a revolute joint keeps its axis aligned (2
-// rotational rows across the axis), a fixed joint the relative orientation (3 rows). Each
-// row is held at the acceleration level with Baumgarte stabilization, c'' + 2 a c' + a^2 c =
-// 0, so drift decays at the rate a instead of growing.
+// One joint of the scene as constraint rows on the bodies' accelerations ([R2],
+// docs/references.md): the two attachments coincide (3 translational rows); a revolute joint keeps
+// its axis aligned (2 rotational rows across the axis), a fixed joint the relative orientation (3
+// rows). Each row is held at the acceleration level with Baumgarte stabilization,
+// c'' + 2 a c' + a^2 c = 0, so drift decays at the rate a instead of growing.
 //
 // On a body with quasistatic modes the joint sees the integrated modes only: the quasistatic
 // ones are solved from the contacts each evaluation and carry no inertia, so a joint load on
 // them would turn the constraint rows into algebraic loops. They are the high modes and the
-// contact interval's constraint modes of an adaptive body (seed 001): local to the contact,
+// contact interval's constraint modes of an adaptive body ([R2]): local to the contact,
 // while the joint sits away from it. Their displacement at the node is left out.
 #pragma once
 #include "body/floating_body.hpp"

@@ -1,8 +1,8 @@
-// The Fourier spectrum of a contact force pulse (seed 003 reports it next to the pulse): the
-// magnitude |F(nu)| = |int f(t) exp(-2 pi i nu t) dt| of the force sampled at the output times
-// (uneven where contact events add samples), integrated exactly for the piecewise-linear
-// force through the samples, at nu = 0, 1/(4T), 2/(4T), ... up to the Nyquist frequency of
-// the output interval (T: the sampled span). |F(0)| is the impulse.
+// The Fourier spectrum of a contact force pulse ([R3] in docs/references.md reports it next to the
+// pulse): the magnitude |F(nu)| = |int f(t) exp(-2 pi i nu t) dt| of the force sampled at the
+// output times (uneven where contact events add samples), integrated exactly for the
+// piecewise-linear force through the samples, at nu = 0, 1/(4T), 2/(4T), ... up to the Nyquist
+// frequency of the output interval (T: the sampled span). |F(0)| is the impulse.
 #pragma once
 #include <Eigen/Dense>
 #include <vector>

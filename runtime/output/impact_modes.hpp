@@ -1,8 +1,8 @@
-// Seed 003's modal view of an impact on a flexible body. At the end of a contact's first
-// interval (t_E) it reports, for each integrated mode k of the target:
+// The modal view of an impact on a flexible body, after [R3] (docs/references.md). At the end of a
+// contact's first interval (t_E) it reports, for each integrated mode k of the target:
 //   E_k / E_0 with E_k = 1/2 (eta_dot_k^2 + omega_k^2 eta_k^2) and E_0 = 1/2 m v_S(t_S)^2;
 //   r_k = -(v_S(t_E) - phi_k(P) eta_dot_k(t_E)) / v_S(t_S), the modal coefficient of restitution;
-//   v_S the slave's frame velocity along the impact direction d (world; seed 003's target is at
+//   v_S the slave's frame velocity along the impact direction d (world; [R3]'s target is at
 //   rest before the impact), d the direction of the slave's approach relative to the target's
 //   frame at t_S, t_S the last step before the onset; P the target's contact point nearest the
 //   force centroid at the peak force, phi_k(P) the mode's displacement there along d with the

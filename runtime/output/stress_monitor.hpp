@@ -1,7 +1,7 @@
 // von Mises stress along a SID stress line (sigma = S q at each point), tracked over a run:
 // the values at every output sample (for results.h5) and the peak over all accepted steps,
-// with where and when it occurred. REFERENCE.md A compares the peak on the axis below the
-// contact with Hertz (0.530 GPa at a depth of 0.49 a).
+// with where and when it occurred. Sphere on sphere (A, docs/references.md) compares the peak on
+// the axis below the contact with Hertz (0.530 GPa at a depth of 0.49 a).
 #pragma once
 #include "body/floating_body.hpp"
 #include "scene/scene.hpp"

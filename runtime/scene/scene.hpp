@@ -47,34 +47,34 @@ struct BodySpec {
   std::string sid_file;         ///< flexible: absolute or relative to the scene file, resolved
   std::string model_file;       ///< optional: rebuild the SID from it when missing or stale
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
-  Eigen::Vector3d tait_bryan = Eigen::Vector3d::Zero();  ///< rad, x-y-z (seed 000 eq. 20)
+  Eigen::Vector3d tait_bryan = Eigen::Vector3d::Zero();  ///< rad, x-y-z ([R1] eq. 20, docs/references.md)
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();    ///< m/s, world frame
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< rad/s, body frame
   Eigen::VectorXd q0, qdot0;    ///< initial elastic state (empty: zero)
   std::vector<std::string> locked;  ///< extra locked DOFs: x y z rx ry rz
   /// How the high-frequency modes move: "dynamic" (integrated, damped by De) or
-  /// "quasistatic" (solved from the static sub-problem each evaluation; seed 001).
+  /// "quasistatic" (solved from the static sub-problem each evaluation; [R2]).
   std::string high_modes = "dynamic";
   double quasistatic_above_hz = -1;  ///< > 0: modes above this frequency are the high ones
   /// "rest": q0 (or zero); "steady": the integrated modes start in equilibrium with the
   /// initial spin (centrifugal deformation), so a spinning body does not start ringing;
   /// "static": in their static deflection under everything acting at the start, the frame
-  /// moved with it so that the joints hold (solve/static_start; seed 001 §6)
+  /// moved with it so that the joints hold (solve/static_start; [R2] Sect. 6)
   std::string elastic_start = "rest";
-  /// seed 001's adaptive impacts: the body runs on its model's coarse model between impacts
+  /// [R2]'s adaptive impacts: the body runs on its model's coarse model between impacts
   /// and on a model refined around each impact during it (needs `model_file`; no `sid_file`)
   bool adaptive = false;
 };
 
-/// [adaptive]: how the adaptive bodies' models are found and refined (seed 001 Sect. 4).
+/// [adaptive]: how the adaptive bodies' models are found and refined ([R2] Sect. 4).
 struct AdaptiveSettings {
   std::string cache;            ///< folder of the SIDs built for the run (default: .isosid-cache beside the scene)
   double interval_width = 0;    ///< m, the first impact's refined region; 0: from the impact's Hertz estimate
   /// the phases between impacts (coarse models, no contact): the scene's integrator and
-  /// max_step unless given (seed 001 takes an implicit method with larger steps there)
+  /// max_step unless given ([R2] takes an implicit method with larger steps there)
   IntegratorKind coarse_integrator = IntegratorKind::DormandPrince;
   double coarse_max_step = 0;   ///< s
-  /// seed 001 Sect. 4.1: each contact's first impact tries its penalty ten times stiffer until
+  /// [R2] Sect. 4.1: each contact's first impact tries its penalty ten times stiffer until
   /// the force no longer changes, and errors lower it (adapt/penalty_search); false: the
   /// contact's penalty (given or derived) as it is
   bool penalty_search = true;
@@ -110,7 +110,7 @@ struct ContactSpec {
   std::string penalty_source = "scene";
 };
 
-/// Hertz's law between two rigid spheres (contact/hertz_contact.hpp): seed 001's reference
+/// Hertz's law between two rigid spheres (contact/hertz_contact.hpp): [R2]'s reference
 /// for sphere impacts, with each sphere's material.
 struct HertzContactSpec {
   std::string name;
@@ -118,7 +118,7 @@ struct HertzContactSpec {
   std::array<double, 2> youngs_modulus{}, poisson_ratio{};  ///< Pa, 1: of body and target
 };
 
-/// A joint between a body and another body or the ground (seed 001): both attachments
+/// A joint between a body and another body or the ground ([R2]): both attachments
 /// coincide at the joint point; a revolute joint also keeps an axis aligned, a fixed joint the
 /// relative orientation.
 struct JointSpec {

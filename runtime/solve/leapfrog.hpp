@@ -1,7 +1,7 @@
-// Fixed-step leapfrog (Stoermer-Verlet, kick-drift-kick) for a MultibodySystem: seed 003's
-// semi-explicit scheme. Every step evaluates the right-hand side once, which solves the static
-// sub-problems (quasistatic modes, massless boundaries, joints) at the new positions; the
-// velocities then take half a kick on each side of the drift. For the elastic coordinates of
+// Fixed-step leapfrog (Stoermer-Verlet, kick-drift-kick) for a MultibodySystem: the semi-explicit
+// scheme of [R3] (docs/references.md). Every step evaluates the right-hand side once, which solves
+// the static sub-problems (quasistatic modes, massless boundaries, joints) at the new positions;
+// the velocities then take half a kick on each side of the drift. For the elastic coordinates of
 // a body that does not rotate this is the symplectic Stoermer-Verlet method: energy stays
 // bounded (no drift) for steps below 2 / omega_max. Velocity-dependent loads (gyroscopic,
 // Coriolis, damping, friction) are taken at the half-step velocity: explicit, first order in

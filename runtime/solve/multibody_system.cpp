@@ -106,7 +106,7 @@ bool moves_with_leading(const Eigen::MatrixXd& rows, Eigen::Index columns) {
 }  // namespace
 
 void MultibodySystem::require_boundary_covers(const SurfaceContact& c, const FloatingBody* target, const std::string& target_surface) {
-  // a massless boundary is the seed's contact model only where it carries the whole surface:
+  // a massless boundary is [R3]'s contact model only where it carries the whole surface:
   // points that also move with mass-carrying modes would hit with mass again
   auto check = [&](const FloatingBody& b, const format::ContactSurface& surface, const char* field) {
     const format::RefMod& r = b.sid().refmod;

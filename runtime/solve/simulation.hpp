@@ -48,7 +48,7 @@ public:
   /// `sids`: one per flexible body of the scene, in order. The scene is kept by value.
   /// Bodies that start interpenetrating are refused (InputError) unless the scene allows it.
   Simulation(Scene scene, std::vector<format::Sid> sids);
-  /// A later phase of a run (seed 001's phases on other models of the bodies): starts at time
+  /// A later phase of a run ([R2]'s phases on other models of the bodies): starts at time
   /// t0 in the state `start_state` makes for this scene's system, without a static start, and
   /// takes contacts that are closed there as they are. Its start reports no touches: where
   /// surfaces touch there, the phase before has seen it (MultibodySystem::touched/released

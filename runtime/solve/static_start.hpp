@@ -1,7 +1,7 @@
-// The static start of seed 001 §6: bodies with elastic_start = "static" begin in their static
-// deflection under everything acting at the initial state (gravity, joints, spin, contact), so
-// a mechanism released under gravity does not start ringing about it. Their integrated modes
-// move to where their accelerations vanish, and their frames with them so that every joint
+// The static start of [R2] Sect. 6 (docs/references.md): bodies with elastic_start = "static" begin
+// in their static deflection under everything acting at the initial state (gravity, joints, spin,
+// contact), so a mechanism released under gravity does not start ringing about it. Their integrated
+// modes move to where their accelerations vanish, and their frames with them so that every joint
 // holds (a clamped node stays where it was placed), and the frames of the bodies jointed to
 // them follow; the frames' remaining freedom (a pendulum's swing) is left as given.
 #pragma once

@@ -1,7 +1,7 @@
 // Time integration of a MultibodySystem. SUNDIALS ARKODE: explicit Dormand-Prince 5(4)
 // (ERKStep) or an implicit DIRK method with a dense Newton solver (ARKStep), both adaptive
 // with a maximum step, and with root finding on the contact gaps so that contact onset and
-// release are located. Or the fixed-step leapfrog of solve/leapfrog (seed 003).
+// release are located. Or the fixed-step leapfrog of solve/leapfrog ([R3] in docs/references.md).
 #pragma once
 #include "scene/scene.hpp"
 #include "solve/leapfrog.hpp"

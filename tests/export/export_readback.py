@@ -3,13 +3,13 @@
 term compared entry by entry with the SID (h5py), to 1e-12 of the term's largest entry.
 
 - sid-fem: parsed as the Modelica EMBS library's C reader does (vwaurich/EMBS_ModelicaLib,
-  ReadSID_C.h; shared/research/interchange-formats.md): the first two runs of digits of line
+  ReadSID_C.h; docs/references.md [R12]): the first two runs of digits of line
   1 are the node and mode counts; blocks by keyword; Taylor headers order/nrow/ncol/nq/nqn/
   structure; m0(row, col) and m1(row, q, col), 1-based; D exponents; missing entries are 0;
   J is 6 x 1 (xx yy zz xy xz yz).
 - mbsim-h5: MBSim's datasets at the root, whose root group must track link creation order;
   the SID terms rebuilt from its volume integrals with the formulas of Schwertassek &
-  Wallrapp as MBSim assembles them (shared/research/sid-and-ffrf.md section 1).
+  Wallrapp as MBSim assembles them (docs/references.md [R8]).
 
 usage: export_readback.py ISOSID_EXPORT ISOSID_PREP REPO_DIR
 Exports the golden SIDs (an axisymmetric Craig-Bampton sphere, a 3D beam) and checks that a

@@ -95,7 +95,7 @@ TEST_CASE("the tools survive corrupt SIDs that crashed libhdf5: exit 2, one line
   }
 #ifndef ISOSID_UNDER_ASAN  // AddressSanitizer leaves the probe without a memory limit
   // the largest resident set of any program above (and its probe): the 64 KB files must stay
-  // far below the 500 MB the issue allows (they take 7.7 GB and 1.8 GB unchecked)
+  // far below a 500 MB limit (they take 7.7 GB and 1.8 GB unchecked)
   rusage children{};
   getrusage(RUSAGE_CHILDREN, &children);
   CHECK(children.ru_maxrss < 500 * 1024);  // KiB

@@ -1,4 +1,4 @@
-// NURBS geometry: basis properties and the exactness of the primitives (REFERENCE.md G).
+// NURBS geometry: basis properties and the exactness of the primitives (case G, docs/references.md).
 #include "geometry/nurbs_patch.hpp"
 #include "geometry/primitives.hpp"
 
@@ -40,7 +40,7 @@ TEST_CASE("B-spline basis functions form a partition of unity and their derivati
 }
 
 TEST_CASE("the seed primitives represent circles exactly", "[geometry]") {
-  // REFERENCE.md G: radius error <= 1e-13 r (round-off of the rational evaluation)
+  // case G: radius error <= 1e-13 r (round-off of the rational evaluation)
   const double r = 0.01;
   std::mt19937 gen(5);
   std::uniform_real_distribution<double> u01(0, 1);

@@ -1,6 +1,6 @@
-// THB spaces (issue 6): the level rule of seed 001 Alg. 3; partition of unity, exact geometry,
-// reproduction of the coarse space and linear independence on 2D and 3D hierarchies; class-m
-// admissibility; frequencies between the coarse and the uniformly refined space (nested
+// THB spaces: the level rule of [R2] Alg. 3 (docs/references.md); partition of unity, exact
+// geometry, reproduction of the coarse space and linear independence on 2D and 3D hierarchies;
+// class-m admissibility; frequencies between the coarse and the uniformly refined space (nested
 // spaces, Rayleigh-Ritz); the hierarchical sphere's size against the graded one; coarse <->
 // fine transfer. Tolerances: 1e-12 for pointwise identities of exact arithmetic (round-off of
 // sums of O(10) products of O(1) numbers), 1e-10 for solves and quadrature-based quantities.
@@ -104,7 +104,7 @@ int levels_on_an_element(const prep::AnalysisSpace& s) {
 
 }  // namespace
 
-TEST_CASE("level factors follow seed 001 Alg. 3", "[thb]") {
+TEST_CASE("level factors follow [R2] Alg. 3", "[thb]") {
   const prep::LevelLimits seed{5, 10};
   CHECK(prep::level_factors(1, seed).empty());
   CHECK(prep::level_factors(4, seed) == std::vector<int>{2, 2});
@@ -113,7 +113,7 @@ TEST_CASE("level factors follow seed 001 Alg. 3", "[thb]") {
   CHECK(prep::level_factors(13, seed) == std::vector<int>{2, 7});
   // 2^6: six factors merged down to four levels, smallest first
   CHECK(prep::level_factors(64, seed) == std::vector<int>{8, 2, 2, 2});
-  // seed Fig. 6: three elements cannot be spread over two refined levels, but one level takes them
+  // [R2] Fig. 6: three elements cannot be spread over two refined levels, but one level takes them
   CHECK(prep::level_factors(3, {3, 10}) == std::vector<int>{3});
   for (int wanted : {17, 97, 294, 400, 1000, 14641}) {
     const auto f = prep::level_factors(wanted, seed);
@@ -222,7 +222,7 @@ TEST_CASE("coarse -> refined -> coarse returns the state, nodal and reduced, and
   const auto fine = prep::build_body(model("sphere_axisym_thb.model.toml"));
   const prep::PreparedBody coarse = prep::prepare(prep::coarse_model_spec(fine.spec), {.build_sid = false, .output = ""});
   const prep::NodalTransfer nodal = prep::nodal_transfer(coarse.body, fine);
-  // nodal: the local least squares of seed 001 Sect. 4.4 recovers any coarse field exactly
+  // nodal: the local least squares of [R2] Sect. 4.4 recovers any coarse field exactly
   const Eigen::MatrixXd round = Eigen::MatrixXd(nodal.fine_to_coarse * nodal.coarse_to_fine);
   CHECK((round - Eigen::MatrixXd::Identity(round.rows(), round.cols())).cwiseAbs().maxCoeff() < 1e-10);
   // reduced: the refined basis holds the coarse modes
@@ -242,7 +242,7 @@ TEST_CASE("coarse -> refined -> coarse returns the state, nodal and reduced, and
 
 TEST_CASE("a coarse state's energy reaches the refined model's integrated modes as the coarse mesh converges", "[thb]") {
   // The impact phase integrates the refined SID's low modes and solves the rest quasistatically
-  // (seed 001): a coarse state q_c moves in as (T q_c) restricted to the low modes, and the
+  // ([R2]): a coarse state q_c moves in as (T q_c) restricted to the low modes, and the
   // energy T q_c puts into the high ones is lost at the switch. That share is the coarse
   // mesh's error in its own modes; scene D asks a switch to keep the energy to 1e-6, so the
   // coarse model must resolve the modes it keeps. Measured for the sphere's 6 modes, worst

@@ -1,8 +1,9 @@
-// Massless-boundary reductions (seed 003). MacNeal's: the reduced model keeps the full model's
-// static flexibility at the boundary and its retained free-interface frequencies, and its
-// boundary carries no mass; a free body is reduced with inertia relief, checked against an
-// independent statically determinate support. The massless Craig-Bampton variant: with the
-// boundary held it is the fixed-interface modal model, statically exact, massless boundary.
+// Massless-boundary reductions ([R3], [R4] in docs/references.md). MacNeal's: the reduced model
+// keeps the full model's static flexibility at the boundary and its retained free-interface
+// frequencies, and its boundary carries no mass; a free body is reduced with inertia relief,
+// checked against an independent statically determinate support. The massless Craig-Bampton
+// variant: with the boundary held it is the fixed-interface modal model, statically exact, massless
+// boundary.
 #include "geometry/primitives.hpp"
 #include "reduce/craig_bampton.hpp"
 #include "reduce/macneal.hpp"

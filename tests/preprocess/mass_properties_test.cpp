@@ -1,4 +1,4 @@
-// Mass and inertia of the refined primitives against closed forms (REFERENCE.md G):
+// Mass and inertia of the refined primitives against closed forms (case G, docs/references.md):
 // mass = rho V (2 pi int r dA for axisymmetric) to 1e-10, inertia tensors of disk and ball.
 #include "geometry/primitives.hpp"
 #include "sid/body_integrals.hpp"
@@ -18,7 +18,7 @@ prep::ModelSpec model(const std::string& name) { return prep::read_model_file(st
 }  // namespace
 
 // The integrands are rational (NURBS weights), so (p+1)-point Gauss quadrature is not exact;
-// on the refined seed models the elements are small enough that its error stays below 1e-10.
+// on the refined validation models the elements are small enough that its error stays below 1e-10.
 TEST_CASE("seed models: mass equals rho times the exact volume", "[mass]") {
   const double r = 0.01;
   SECTION("sphere (axisymmetric)") {

@@ -1,5 +1,5 @@
 // Model files as users write them: every bad input is one line on stderr naming file and
-// field, exit status 2; the seed beam model is converged to 0.1 % in its first twelve modes.
+// field, exit status 2; the beam model of case F is converged to 0.1 % in its first twelve modes.
 #include "model/body_model.hpp"
 #include "reduce/body_reduction.hpp"
 #include "reduce/modal_analysis.hpp"
@@ -264,7 +264,7 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
 }
 
 TEST_CASE("a node where the mapping collapses gets its rotations from just inside", "[model]") {
-  // issue 14's reproducer: a rod with a spherical end and a node at the corner parameter [1, 1],
+  // a reproducer: a rod with a spherical end and a node at the corner parameter [1, 1],
   // where the parametrization collapses; it was refused ("/nodes/top/psi: non-finite" on the
   // output SID). The rotation rows come from 1e-7 of the range inside: finite, and within 1e-4
   // of those taken 1e-5 inside (a smooth field)

@@ -1,6 +1,6 @@
 // Patch test on distorted patches: boundary values of a linear displacement field give that
-// field exactly inside, with constant strain (REFERENCE.md G). Tolerance 1e-10 relative: the
-// solve is exact up to round-off amplified by the condition of K.
+// field exactly inside, with constant strain (case G, docs/references.md). Tolerance 1e-10
+// relative: the solve is exact up to round-off amplified by the condition of K.
 // With non-uniform weights the integrands are rational and the (p+1)-point Gauss rule is not
 // exact, so the discrete divergence theorem holds only up to quadrature error; the rational
 // cases therefore integrate with 6 extra points (measured: 1e-7 at +2, 1e-8 at +4, < 1e-10

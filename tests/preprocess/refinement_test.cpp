@@ -1,4 +1,5 @@
-// Knot insertion and order elevation leave geometry and fields unchanged (REFERENCE.md G).
+// Knot insertion and order elevation leave geometry and fields unchanged (case G,
+// docs/references.md).
 #include "geometry/primitives.hpp"
 #include "refine/degree_elevation.hpp"
 #include "refine/knot_insertion.hpp"
@@ -57,6 +58,6 @@ TEST_CASE("knot insertion and order elevation leave the geometry and a field unc
     const Eigen::VectorXd a = coarse.point(xi), b = fine.point(xi);
     worst = std::max(worst, (a - b).cwiseAbs().maxCoeff() / a.cwiseAbs().maxCoeff());
   }
-  // REFERENCE.md G: <= 1e-12 relative (round-off of the homogeneous maps and the banded solve)
+  // case G: <= 1e-12 relative (round-off of the homogeneous maps and the banded solve)
   CHECK(worst <= 1e-12);
 }

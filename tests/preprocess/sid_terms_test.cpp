@@ -104,7 +104,7 @@ TEST_CASE("Me = I, Ke = diag(omega^2), De Rayleigh, and the Buckens conditions i
   const Eigen::VectorXd w2 = (2 * M_PI * s.refmod.frequencies_hz).array().square();
   CHECK((s.Ke.M0 - MatrixXd(w2.asDiagonal())).cwiseAbs().maxCoeff() < 1e-10 * w2.maxCoeff());
   CHECK((s.De.M0 - s.damping.alpha1 * s.Me.M0 - s.damping.alpha2 * s.Ke.M0).norm() < 1e-12 * s.De.M0.norm());
-  // seed 000 eq. 26-27 with kappa = 1e-3 over the normal modes' band
+  // [R1] eq. 26-27 (docs/references.md) with kappa = 1e-3 over the normal modes' band
   const double f1 = s.refmod.frequencies_hz(0), f2 = s.refmod.frequencies_hz(nq - 1);
   CHECK(s.damping.alpha2 == Approx(1e-3 / (M_PI * (f1 + f2))).epsilon(1e-12));
   CHECK(s.damping.alpha1 == Approx(4 * M_PI * M_PI * f1 * f2 * s.damping.alpha2).epsilon(1e-12));

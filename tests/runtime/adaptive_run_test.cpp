@@ -1,5 +1,5 @@
-// The adaptive loop of seed 001 (Fig. 2, Alg. 2) through isosid-run: coarse phases between
-// impacts, refined models built at each touch and cached, state transfers both ways, the
+// The adaptive loop of [R2] (Fig. 2, Alg. 2; docs/references.md) through isosid-run: coarse phases
+// between impacts, refined models built at each touch and cached, state transfers both ways, the
 // contact interval's width adapted from its utilization.
 #include "isosid/format/hdf5_file.hpp"
 #include "scene_runner.hpp"
@@ -43,7 +43,7 @@ TEST_CASE("adaptive: a sphere's impact on its refined model, between coarse phas
   CHECK(log[0]["end_s"].get<double>() == Approx(21e-6).epsilon(1e-6));
   CHECK(log[1]["kind"] == "impact");
   CHECK(log[2]["kind"] == "coarse");
-  // seed 001 Alg. 2's target: the Hertz estimate sizes the first width for 70 %
+  // [R2] Alg. 2's target: the Hertz estimate sizes the first width for 70 %
   CHECK(log[1]["utilization"].get<double>() > 0.5);
   CHECK(log[1]["utilization"].get<double>() < 0.9);
   // scene D asks each switch to keep the energy to 1e-6 (measured 9e-9 and 8e-9: the sphere
@@ -140,7 +140,7 @@ TEST_CASE("adaptive: a cached refined SID whose transfer fits other coarse modes
   CHECK_THAT(r.err, Contains("transfers from other coarse modes"));
 }
 
-TEST_CASE("adaptive: a first width far too wide or too narrow is tried again until the contact uses the region (seed 001 Alg. 2)",
+TEST_CASE("adaptive: a first width far too wide or too narrow is tried again until the contact uses the region ([R2] Alg. 2)",
           "[runtime][adaptive]") {
   const test::ScratchDir dir("adaptive_width");
   std::vector<double> peaks;
@@ -163,7 +163,7 @@ TEST_CASE("adaptive: a first width far too wide or too narrow is tried again unt
   CHECK(peaks[0] == Approx(peaks[1]).epsilon(1e-9));
 }
 
-TEST_CASE("adaptive: a penalty far too soft is raised by decades until the force stops changing (seed 001 Fig. 3)",
+TEST_CASE("adaptive: a penalty far too soft is raised by decades until the force stops changing ([R2] Fig. 3)",
           "[runtime][adaptive]") {
   const test::ScratchDir dir("adaptive_penalty_up");
   test::copy_model_file(dir, "sphere_axisym_thb.model.toml");
@@ -199,7 +199,7 @@ TEST_CASE("adaptive: a penalty far too soft is raised by decades until the force
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-6);
 }
 
-TEST_CASE("adaptive: an error during the impact lowers the penalty one step and the run goes on from there (seed 001 Fig. 3)",
+TEST_CASE("adaptive: an error during the impact lowers the penalty one step and the run goes on from there ([R2] Fig. 3)",
           "[runtime][adaptive]") {
   // 1e4 times scene A's penalty makes the impact need up to ~100 steps per output interval;
   // max_steps = 80 turns that into errors until the penalty is low enough
@@ -225,7 +225,7 @@ TEST_CASE("adaptive: an error during the impact lowers the penalty one step and 
   CHECK(s["adaptive"]["penalty_searches"].size() == 0);
   CHECK(s["adaptive"]["penalties_n_m3"]["impact"] == parts.back()["penalty_n_m3"]);
   // the impact itself is unharmed: Hertz as scene A; each lowering lets the penetration grow,
-  // which the energy shows (seed 001 Fig. 9: jumps at each decrease), here 5e-7 in all
+  // which the energy shows ([R2] Fig. 9: jumps at each decrease), here 5e-7 in all
   CHECK(test::rel_error(s, "peak_force_n") < 0.01);
   CHECK(test::rel_error(s, "contact_time_s") < 0.01);
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-5);
@@ -286,7 +286,7 @@ TEST_CASE("adaptive: bad adaptive input is refused with exit 2 and one line", "[
   refused(scene + "[adaptive]\ninterval_width = 1e-12\n", "adaptive.interval_width: 1e-12 m cannot hold contact 'impact'");
 }
 
-TEST_CASE("adaptive: scene D, the wave through the rod between two sphere impacts (REFERENCE.md D, seed 001 example I)",
+TEST_CASE("adaptive: scene D, the wave through the rod between two sphere impacts (case D, [R2] Sect. 5)",
           "[runtime][adaptive][scene-d]") {
   const test::ScratchDir dir("adaptive_scene_d");
   for (const char* f : {"wave_sphere.model.toml", "wave_rod.model.toml"}) test::copy_model_file(dir, f);
@@ -315,7 +315,7 @@ TEST_CASE("adaptive: scene D, the wave through the rod between two sphere impact
   CHECK(test::rel_error(s, "peak_force_n") < 0.02);
   CHECK(test::rel_error(s, "contact_time_s") < 0.02);
   CHECK(test::rel_error(s, "rebound_velocity_m_s") < 0.01);
-  // energy 1/2 m v0^2: seed 001 "well below 1 %", issue 17 0.05 % (measured 2.8e-8); each
+  // energy 1/2 m v0^2: [R2] "well below 1 %", here 0.05 % (measured 2.8e-8); each
   // switch 1e-6 (measured 2.8e-10: the coarse models resolve the modes they keep)
   CHECK(s["energy"]["initial_j"].get<double>() == Approx(0.5 * 7850.0 * 4.0 / 3.0 * M_PI * 1e-6 * 0.01).epsilon(1e-4));
   CHECK(s["energy"]["max_rel_error"].get<double>() < 5e-4);
@@ -323,7 +323,7 @@ TEST_CASE("adaptive: scene D, the wave through the rod between two sphere impact
 
   // the wave reaches the far end l/c after it left the near end: the free far end moves at
   // twice the incident velocity F/(rho c A); half the pulse's height is reached l/c apart
-  // within 0.5 % (issue 17; measured +0.07 %)
+  // within 0.5 % (measured +0.07 %)
   format::h5::Reader results(dir.path("out-s.scene.toml/results.h5"));
   const Eigen::VectorXd t = results.vector("/time");
   const Eigen::MatrixXd force = results.matrix("/contacts/left/force");

@@ -14,14 +14,15 @@ using nlohmann::json;
 
 namespace {
 
-// REFERENCE.md A's aluminium sphere
+// the aluminium sphere of case A (sphere on sphere, docs/references.md)
 constexpr double kE = 7.28e10, kNu = 0.33, kRho = 2789, kRadius = 0.01;
 const double kMass = kRho * 4.0 / 3.0 * M_PI * std::pow(kRadius, 3);
 
 struct Hertz {
   double peak_force, contact_time;
 };
-/// Hertz (REFERENCE.md header) for the elastic sphere on a rigid body of curvature radius r2.
+/// Hertz (docs/references.md, "Hertz's impact formulas") for the elastic sphere on a rigid body of
+/// curvature radius r2.
 Hertz hertz_on_rigid(double r2, double m_star, double v) {
   const double E_star = kE / (1 - kNu * kNu), r_star = kRadius * r2 / (kRadius + r2);
   const double delta = std::pow(15 * m_star * v * v / (16 * E_star * std::sqrt(r_star)), 0.4);
@@ -130,7 +131,7 @@ std::string replace_all(std::string text, const std::string& from, const std::st
   return text;
 }
 
-/// The default disk model with the seed's grading (1 mm at the bottom, growing by 1.5) instead
+/// The default disk model with [R1]'s grading (1 mm at the bottom, growing by 1.5) instead
 /// of elements sized for scene C's contact: an off-centre hit then still falls within the fine
 /// elements and the Craig-Bampton interface around the bottom, which a rebuild for a smaller
 /// contact would shrink to 1.6 mm either side.

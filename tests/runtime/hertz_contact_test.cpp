@@ -1,6 +1,6 @@
-// Hertz's law between rigid spheres (runtime/contact/hertz_contact, seed 001's reference model
-// "Hertz"): a head-on impact of two free spheres against the closed-form solution and bad
-// input; and the static start of a rigid ball hanging from a flexible rod (scene E's
+// Hertz's law between rigid spheres (runtime/contact/hertz_contact, [R2]'s reference model "Hertz",
+// docs/references.md): a head-on impact of two free spheres against the closed-form solution and
+// bad input; and the static start of a rigid ball hanging from a flexible rod (scene E's
 // pendulum), whose frame follows the rod's sag.
 #include "scene_runner.hpp"
 
@@ -84,9 +84,9 @@ TEST_CASE("hertz contact: two rigid spheres meet head-on as Hertz's solution say
 
 TEST_CASE("hertz contact: the peak between coarse steps is that of the deepest overlap", "[runtime][hertz]") {
   // Scene E's Hertz variant takes about 20 steps in an impact, and the largest force at the
-  // steps fell 0.3 % short of the peak, a sixth of issue 17's 2 %. Here dopri5 at rtol 1e-9
-  // (max_step 4 us) takes about 0.4 us near the peak of a 67 us contact: the largest force at
-  // the steps missed by 7e-5 before the interpolation (1.5 (pi h / 2T)^2 / 2 = 7e-5 for
+  // steps fell 0.3 % short of the peak, a sixth of the 2 % tolerance on peak forces. Here dopri5 at
+  // rtol 1e-9 (max_step 4 us) takes about 0.4 us near the peak of a 67 us contact: the largest
+  // force at the steps missed by 7e-5 before the interpolation (1.5 (pi h / 2T)^2 / 2 = 7e-5 for
   // h = 0.41 us). The cubic through the two steps around the deepest overlap errs by
   // h^4 |g''''| / 384, about 0.5 (h / T)^4 = 7e-10 of the overlap; the integration's own
   // error dominates (the peak lands 2e-8 from Hertz's), well inside 1e-6.

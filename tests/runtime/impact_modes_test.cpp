@@ -1,4 +1,4 @@
-// Seed 003's modal view of an impact (output/impact_modes): the sphere of seed 003 drops
+// The modal view of an impact of [R3] (output/impact_modes; docs/references.md): its sphere drops
 // centrically on a short free-free steel beam, both MacNeal models. The report must close the
 // energy balance, keep each mode's energy after the release, excite only the symmetric (odd)
 // bending modes of a centric impact, and label the bending modes in the impact direction; a

@@ -1,6 +1,6 @@
-// Massless boundaries (seed 003) through isosid-prep and isosid-run: the exact bouncing bar of
-// REFERENCE.md H, whose contact lives on the massless boundary coordinates, with penalty and
-// exact contact; the leapfrog's energy over a million steps; scenes that ask for the
+// Massless boundaries ([R3], [R4] in docs/references.md) through isosid-prep and isosid-run: the
+// exact bouncing bar (H), whose contact lives on the massless boundary coordinates, with penalty
+// and exact contact; the leapfrog's energy over a million steps; scenes that ask for the
 // impossible.
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"

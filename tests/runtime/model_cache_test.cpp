@@ -1,5 +1,5 @@
-// The adaptive loop's SID cache (seed 001 Sect. 4): fine models refined where an impact
-// happens, built once by isosid-prep and read back on a repeated request.
+// The adaptive loop's SID cache ([R2] Sect. 4, docs/references.md): fine models refined where an
+// impact happens, built once by isosid-prep and read back on a repeated request.
 #include "adapt/model_cache.hpp"
 #include "scene/prep_process.hpp"
 #include "isosid/format/error.hpp"

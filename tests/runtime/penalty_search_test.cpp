@@ -1,5 +1,5 @@
-// Seed 001 Fig. 3's penalty trial as a decision rule (adapt/penalty_search): the steps of
-// eq. 8's c_p = m 10^e, and which probe ends the quick increase and why. The runs that use
+// [R2] Fig. 3's penalty trial (docs/references.md) as a decision rule (adapt/penalty_search): the
+// steps of eq. 8's c_p = m 10^e, and which probe ends the quick increase and why. The runs that use
 // it are in adaptive_run_test.cpp.
 #include "adapt/penalty_search.hpp"
 
@@ -7,12 +7,12 @@
 
 using namespace isosid::run;
 
-TEST_CASE("penalty factor: quick increase by decades, slow decrease by the leading digit (seed 001 eq. 8)", "[runtime][adaptive]") {
+TEST_CASE("penalty factor: quick increase by decades, slow decrease by the leading digit ([R2] eq. 8)", "[runtime][adaptive]") {
   // exact in binary to the last bit is not the point: one unit of the leading digit off, to round-off
   CHECK(PenaltyFactor(5e18).raised().value() == Approx(5e19).epsilon(1e-15));
   CHECK(PenaltyFactor(5e18).lowered().value() == Approx(4e18).epsilon(1e-15));
   CHECK(PenaltyFactor(2e18).lowered().value() == Approx(1e18).epsilon(1e-15));
-  CHECK(PenaltyFactor(1e18).lowered().value() == Approx(9e17).epsilon(1e-15));   // seed: 1e19 down to 9e18
+  CHECK(PenaltyFactor(1e18).lowered().value() == Approx(9e17).epsilon(1e-15));   // [R2]: 1e19 down to 9e18
   CHECK(PenaltyFactor(3.93e17).lowered().value() == Approx(2.93e17).epsilon(1e-15));
   CHECK(PenaltyFactor(1.5e17).lowered().value() == Approx(1.4e17).epsilon(1e-15));
   CHECK(PenaltyFactor(1e-3).lowered().value() == Approx(9e-4).epsilon(1e-15));  // powers of ten whose log10 rounds down

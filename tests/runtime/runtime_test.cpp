@@ -461,12 +461,12 @@ TEST_CASE("scene A: sphere on sphere (Hertz) with the Craig-Bampton sphere", "[r
   CHECK(s["contacts"][0]["edge_reached_s"].is_null());  // the contact stays inside its cap
   CHECK(s["contacts"][0]["interface_left_s"].is_null());  // and inside the sphere's interface
   CHECK(s["energy"]["max_rel_error"].get<double>() < 1e-5);
-  // von Mises on the axis (seed eq. 34): Hertz peak 0.530 GPa (measured -1.0 %) at 0.49 a
-  // below the surface (measured within one 10 um sample of the stress line)
+  // von Mises on the axis ([R1] eq. 34, docs/references.md): Hertz peak 0.530 GPa (measured -1.0 %)
+  // at 0.49 a below the surface (measured within one 10 um sample of the stress line)
   CHECK(rel_error(s, "peak_von_mises_pa") < 0.03);
   CHECK(std::abs(s["reference"]["peak_von_mises_depth_m"]["value"].get<double>() - 82.3e-6) <= 10e-6);
   // the Hertz estimate from the SID (material, mass, curvature of the master patch at the
-  // nearest point) and the initial speed: REFERENCE.md A's closed form, 51.70 N, 83.1 us and
+  // nearest point) and the initial speed: case A's closed form, 51.70 N, 83.1 us and
   // a = 0.168 mm, to the 4 digits it is given with
   const json& hertz = s["contacts"][0]["hertz_estimate"];
   CHECK(hertz["peak_force_n"].get<double>() == Approx(51.70).epsilon(1e-3));
@@ -485,7 +485,7 @@ TEST_CASE("a sphere sized from its contact radius is rebuilt for the scene's imp
                                     "velocity = [0.0, -0.1, 0.0]", "velocity = [0.0, -0.05, 0.0]");
   const json slow = run_scene(dir, scene, 0);
   const json& hertz = slow["contacts"][0]["hertz_estimate"];
-  // Hertz scales a as v^(2/5): 0.168 mm x 0.5^0.4 (REFERENCE.md A's radius, to its 3 digits)
+  // Hertz scales a as v^(2/5): 0.168 mm x 0.5^0.4 (case A's radius, to its 3 digits)
   CHECK(hertz["contact_radius_m"].get<double>() == Approx(0.168e-3 * std::pow(0.5, 0.4)).epsilon(3e-3));
   CHECK(hertz["elements_per_radius"].get<double>() == Approx(8).epsilon(0.01));
   // the slower impact lasts 95.5 us, past the scene's end: flagged, and no rebound is reported
@@ -510,7 +510,7 @@ TEST_CASE("a sphere sized from its contact radius is rebuilt for the scene's imp
 }
 
 TEST_CASE("keys dotted 40 000 deep are refused by both programs in one line", "[runtime][bad-input]") {
-  // toml++ recursed on them until the stack overflowed (issue 14's reproducer); the text is
+  // toml++ recursed on them until the stack overflowed; the text is
   // checked for nesting before it is parsed
   const test::ScratchDir dir("deep-toml");
   std::string keys;
@@ -765,7 +765,7 @@ TEST_CASE("scene C: rotating disk with friction (momentum balance)", "[runtime][
   CHECK(hertz["contact_half_width_m"].get<double>() == Approx(std::sqrt(4 * P * 0.1 / (M_PI * E_star))).epsilon(0.1));
   // the model's elements are b/8 there ([contact_resolution]): no warning, no rebuild
   CHECK(s["warnings"].empty());
-  // so the normal rebound keeps the impact speed within 0.3 % whatever the spin (with the seed's
+  // so the normal rebound keeps the impact speed within 0.3 % whatever the spin (with [R1]'s
   // 1 mm elements it was 0.4-1.7 % off and spin-dependent even without friction); the rim slides
   // throughout, so the rigid-body momentum balance holds as at 2 pi rad/s. Measured: -0.18 %
   // at 2 pi, 20 and 60 rad/s; spin 0, where the rim sticks (-0.25 %, 76 s of CPU under

@@ -1,5 +1,5 @@
-// Lumped-mass SID terms straight from the body-integral definitions of
-// shared/research/sid-and-ffrf.md (MBSim's fbt_lma), used as an independent reference.
+// Lumped-mass SID terms straight from the body-integral definitions of the SID (docs/references.md
+// [R8]; MBSim's fbt_lma), used as an independent reference.
 #include "support/lumped_sid.hpp"
 
 #include "isosid/format/skew.hpp"

@@ -1,5 +1,5 @@
-// The six volume integrals the SID terms are built from (MBSim's names; shared/research
-// sid-and-ffrf.md section 0), recovered from a SID's terms: what an exporter to a tool that
+// The six volume integrals the SID terms are built from (MBSim's names; the SID of
+// docs/references.md [R8]), recovered from a SID's terms: what an exporter to a tool that
 // assembles its own terms (MBSim's flexible FFR body) needs. Exact for SIDs whose terms come
 // from a consistent mass (isosid-prep's): the symmetric parts are in Oe, the antisymmetric
 // ones in Cr (check_exportable compares the recovered trace with Me before MBSim export).

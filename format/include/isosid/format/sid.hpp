@@ -42,7 +42,8 @@ struct RefMod {
   int n_massless() const { return massless_boundary() ? n_high() : 0; }
 };
 
-/// Rayleigh damping De = alpha1 Me + alpha2 Ke from (kappa, f1, f2) (seed 000 eq. 26-28).
+/// Rayleigh damping De = alpha1 Me + alpha2 Ke from (kappa, f1, f2) ([R1] eq. 26-28,
+/// docs/references.md).
 struct Damping {
   double kappa = 0, f1_hz = 0, f2_hz = 0;
   double alpha1 = 0;  ///< 1/s, mass-proportional
@@ -146,7 +147,7 @@ struct Sid {
   RefMod refmod;
   Damping damping;
 
-  // Classic SID body terms (Wallrapp; see shared/research/sid-and-ffrf.md).
+  // Classic SID body terms (Wallrapp; docs/references.md [R8]).
   Taylor mdCM;    ///< 3x1, o1: first moment of mass, kg m
   Taylor J;       ///< 3x3, o1: inertia tensor about the frame origin, kg m^2
   Taylor Ct;      ///< nq x 3, o1

@@ -1,4 +1,4 @@
-// A SID in the formats other multibody tools read (issue 18):
+// A SID in the formats other multibody tools read (docs/references.md [R12]):
 //  - the classic ASCII SID (".SID_FEM", Wallrapp's standard input data) as the open Modelica
 //    EMBS library reads it: Taylor blocks with 1-based m0(row, col) and m1(row, q, col)
 //    entries, Fortran D exponents, J as 6 x 1 (xx yy zz xy xz yz), nodes numbered 1, 2, ...

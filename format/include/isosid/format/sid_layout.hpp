@@ -118,7 +118,7 @@ inline constexpr Item long_axis{"/refmod/long_axis", {}, Kind::Float64, vector_o
 
 namespace damping {
 inline constexpr Item group{"/damping", {}, Kind::Group, kScalar, "", Presence::Required,
-                            "Rayleigh damping De = α1 Me + α2 Ke from (κ, f1, f2) (seed 000 eq. 26–28); all >= 0"};
+                            "Rayleigh damping De = α1 Me + α2 Ke from (κ, f1, f2) ([R1] eq. 26–28); all >= 0"};
 inline constexpr Item kappa{"/damping/kappa", {}, Kind::Float64, kScalar, "1", Presence::Required, "damping ratio κ"};
 inline constexpr Item f1_hz{"/damping/f1_hz", {}, Kind::Float64, kScalar, "Hz", Presence::Required, "lower band frequency"};
 inline constexpr Item f2_hz{"/damping/f2_hz", {}, Kind::Float64, kScalar, "Hz", Presence::Required, "upper band frequency"};
