@@ -5,11 +5,14 @@
 
 namespace isosid::run {
 
+bool is_expected(const std::vector<std::string>& expected_kinds, const std::string& kind) {
+  return std::find(expected_kinds.begin(), expected_kinds.end(), kind) != expected_kinds.end();
+}
+
 void add_warning(nlohmann::json& summary, const RunWarning& warning, const std::vector<std::string>& expected_kinds) {
   for (const char* key : {"warnings", "expected_warnings"})
     if (!summary.contains(key)) summary[key] = nlohmann::json::array();
-  const bool expected = std::find(expected_kinds.begin(), expected_kinds.end(), warning.kind) != expected_kinds.end();
-  nlohmann::json& list = summary[expected ? "expected_warnings" : "warnings"];
+  nlohmann::json& list = summary[is_expected(expected_kinds, warning.kind) ? "expected_warnings" : "warnings"];
   if (std::find(list.begin(), list.end(), warning.text) == list.end()) list.push_back(warning.text);
 }
 

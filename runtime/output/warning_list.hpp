@@ -10,6 +10,9 @@
 
 namespace isosid::run {
 
+/// Whether the scene's expected kinds name `kind`.
+bool is_expected(const std::vector<std::string>& expected_kinds, const std::string& kind);
+
 /// Adds one warning to the summary's list it belongs to (both lists are created if missing).
 void add_warning(nlohmann::json& summary, const RunWarning& warning, const std::vector<std::string>& expected_kinds);
 

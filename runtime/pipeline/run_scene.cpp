@@ -6,11 +6,11 @@
 #include "output/paraview_series.hpp"
 #include "output/recorder.hpp"
 #include "output/run_report.hpp"
+#include "output/warning_list.hpp"
 #include "scene/sid_provider.hpp"
 #include "solve/contact_resolution.hpp"
 #include "solve/run_checks.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -47,8 +47,7 @@ private:
 
 /// Before the run: contacts the Hertz estimate sees still closed at end_time, unless expected.
 void announce_predictions(const Simulation& simulation) {
-  const std::vector<std::string>& expected = simulation.scene().output.expected_warnings;
-  if (std::find(expected.begin(), expected.end(), "closed_at_end") != expected.end()) return;
+  if (is_expected(simulation.scene().output.expected_warnings, "closed_at_end")) return;
   for (const std::string& w : closed_at_end_predictions(simulation.system(), simulation.time(), simulation.scene().simulation.end_time))
     std::cerr << "isosid-run: warning: " << w << "\n";
 }
