@@ -93,8 +93,12 @@ void Simulation::start(SimulationObserver& observer) {
   observer.sample(t_, state().data());
   std::vector<double> gap(system_.contacts().size());
   system_.gaps(state().data(), gap.data());
+  closed_.assign(gap.size(), 0);
   for (std::size_t k = 0; k < gap.size(); ++k)
-    if (gap[k] < 0) observer.contact_event(int(k), true, t_);  // starts in contact
+    if (gap[k] < 0) {
+      observer.contact_event(int(k), true, t_);  // starts in contact
+      closed_[k] = 1;
+    }
   if (continued_) return;  // the phase before saw its touches; the caller sets their state
   for (std::size_t k = 0; k < gap.size(); ++k) {
     const Touch& touch = system_.touch(k, state().data());
@@ -123,6 +127,7 @@ bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
       try {
         events = integrator_.advance(tout, t_);
       } catch (const StepInterrupt&) {
+        report_gap_changes_at_interrupt(observer);
         observer.sample(t_, state().data());  // the results end at the step it stopped at
         break;
       }
@@ -139,6 +144,7 @@ bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
         }
         if (!e.touch) {
           observer.contact_event(e.contact, e.closing, e.time);
+          closed_[k] = e.closing;
           if (!e.closing) system_.released(k);
         } else if (e.closing) {
           observer.touch(e.contact, e.time, system_.touch(k, state().data()));
@@ -160,6 +166,18 @@ bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
   observer_ = nullptr;
   collapse_.reset();
   return t_ >= end * (1 - 1e-12);
+}
+
+void Simulation::report_gap_changes_at_interrupt(SimulationObserver& observer) {
+  std::vector<double> gap(system_.contacts().size());
+  system_.gaps(state().data(), gap.data());
+  for (std::size_t k = 0; k < gap.size(); ++k) {
+    const bool closed = gap[k] < 0;
+    if (closed == bool(closed_[k])) continue;
+    observer.contact_event(int(k), closed, t_);  // within the last step: its end is the best time known
+    closed_[k] = closed;
+    if (!closed) system_.released(k);
+  }
 }
 
 RunOutcome Simulation::run(SimulationObserver& observer) {

@@ -84,6 +84,9 @@ private:
   void report_steps();
   /// InputError naming the contact, the bodies and the depth if any contact starts closed.
   void refuse_initial_penetration() const;
+  /// Tells the observer about the contacts whose gap changed sign within the step an interrupt
+  /// stopped at: that step's root search never ran, so its events would be lost.
+  void report_gap_changes_at_interrupt(SimulationObserver& observer);
 
   Scene scene_;
   MultibodySystem system_;
@@ -93,6 +96,7 @@ private:
   SimulationObserver* observer_ = nullptr;  ///< receives the accepted steps of advance_to
   std::optional<StepCollapse> collapse_;    ///< watches the accepted steps of advance_to (not the leapfrog's fixed ones)
   bool continued_ = false;  ///< a later phase of a run
+  std::vector<char> closed_;  ///< each contact as the observer last heard of it (closed or open)
 };
 
 }  // namespace isosid::run

@@ -292,3 +292,39 @@ TEST_CASE("impact detection: a spinning ball's closest approach crosses the seam
   patch.evaluate(touch.slave_parameter, p);
   CHECK((p.C - R * Eigen::Vector3d(std::cos(340 * deg), 0, std::sin(340 * deg))).norm() < 1e-6 * R);  // the spin's round-off in angle
 }
+
+TEST_CASE("impact detection: an interrupt in the step where a contact closes still reports the closing", "[runtime][unit][signals]") {
+  // the observer stops the run at the first accepted step that ends with a closed gap: the
+  // integrator's root search for that step never runs, so the run itself must compare the
+  // gaps it stopped at with what it last reported
+  const test::ScratchDir dir("touch_interrupt");
+  std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 1e-4\noutput_interval = 1e-4\n"
+                                          << "[[flexible_body]]\nname = \"sphere\"\nsid = \"" << ISOSID_GOLDEN_DIR
+                                          << "/sphere_small.sid.h5\"\nposition = [0.0, 0.0100001, 0.0]\n"
+                                          << "velocity = [0.0, -0.1, 0.0]\nhigh_modes = \"quasistatic\"\n[[fixed_plane]]\nname = \"ground\"\n"
+                                          << "[[contact]]\nname = \"c\"\nbody = \"sphere\"\nsurface = \"contact\"\ntarget = \"ground\"\n"
+                                          << "penalty = 5e17\n";
+  const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
+  run::Simulation simulation(scene, {format::read_sid(scene.bodies[0].sid_file)});
+  struct Observer : TouchObserver {
+    const run::MultibodySystem* system = nullptr;
+    bool gap_closed = false;
+    std::vector<std::pair<bool, double>> events;
+    void step(double, const double* y) override {
+      double gap = 0;
+      system->gaps(y, &gap);
+      gap_closed = gap_closed || gap < 0;
+    }
+    bool interrupt_requested() const override { return gap_closed; }
+    void contact_event(int, bool closing, double t) override { events.emplace_back(closing, t); }
+  } observer;
+  observer.system = &simulation.system();
+  const run::RunOutcome outcome = simulation.run(observer);
+  REQUIRE(outcome.status == "interrupted");
+  REQUIRE(observer.events.size() == 1);
+  CHECK(observer.events[0].first);                        // closing
+  CHECK(observer.events[0].second == simulation.time());  // at the end of the step it was found in
+  // 0.1 um closed at 0.1 m/s: the gap closes at 1 us, and the step that found it ends soon after
+  CHECK(simulation.time() >= 1e-6 * (1 - 1e-9));
+  CHECK(simulation.time() < 1e-5);
+}
