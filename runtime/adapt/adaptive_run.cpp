@@ -392,6 +392,9 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
         throw format::InputError(scene_.file, "adaptive.interval_width", "needed: contact '" + contact + "' has no Hertz estimate at its touch");
       width[std::size_t(k)] = snapped_width(estimated_width);
     }
+    // Alg. 2 widens at most to the whole contact surface: the preprocessor refuses wider
+    const double widest = widest_interval(scene_, coarse_sids, scene_.contacts[std::size_t(k)]);
+    width[std::size_t(k)] = std::min(width[std::size_t(k)], widest);
     const double sample_interval = impact_output_interval(scene_, estimate);
     std::optional<PenaltyFactor> penalty = learned_penalty[std::size_t(k)];  // set by the first try if not learned
     std::string penalty_source = "penalty search: learned at an earlier impact";
@@ -478,10 +481,12 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       if (run.lowered) penalty_source = "penalty search: lowered after an error";
       IntervalDecision d = decide_interval(run.utilization, run.beyond, w);
       if (!run.over) d = {true, w, "the run ended during the impact"};  // it keeps what it has
-      const bool accepted_now = d.acceptable || attempt == kMaxTries;
+      const bool spans_surface = !d.acceptable && d.next_width > w && w >= widest;
+      if (spans_surface) d.reason += ", and the region spans its whole surface already";
+      const bool accepted_now = d.acceptable || attempt == kMaxTries || spans_surface;
       if (accepted_now && !d.acceptable)  // the last try ran the whole impact, beyond its region or not
         add_warning(run.parts.back().summary,
-                    {"adaptive_fit", "contact '" + contact + "': the refined region did not fit after " + std::to_string(kMaxTries) +
+                    {"adaptive_fit", "contact '" + contact + "': the refined region did not fit after " + std::to_string(attempt) +
                                          " tries (utilization " + common::number_text(100 * run.utilization) + " %, " + d.reason +
                                          "): forces beyond it are not modelled"},
                     scene_.output.expected_warnings);
@@ -496,7 +501,7 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
         e.update({{"decision", d.reason}, {"accepted", accepted_now}, {"next_width_m", d.next_width}});
         log.push_back(e);
       }
-      width[std::size_t(k)] = snapped_width(d.next_width);  // the next try starts from it
+      width[std::size_t(k)] = std::min(snapped_width(d.next_width), widest);  // the next try starts from it
       if (accepted_now) {
         // the next impact starts from the width asked for next, relative to this one's estimate
         // (none: from the width itself)

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace isosid::run {
 
@@ -22,23 +23,37 @@ double surface_extent(const format::Sid& sid, const std::string& surface) {
   return 0;
 }
 
+/// Calls f(body, surface, extent) for each surface of an adaptive body that contact c refines.
+template <typename F>
+void for_each_refined_surface(const Scene& scene, const std::vector<format::Sid>& coarse_sids, const ContactSpec& c, F f) {
+  for (const auto& [body, surface] : {std::pair{c.body, c.surface}, std::pair{c.target, c.target_surface}}) {
+    const BodySpec* b = scene.body(body);
+    if (!b || !b->adaptive || surface.empty()) continue;
+    // the SIDs are the flexible bodies', in order
+    const auto index = std::count_if(scene.bodies.data(), b, [](const BodySpec& o) { return !o.rigid; });
+    const double extent = surface_extent(coarse_sids[std::size_t(index)], surface);
+    if (extent > 0) f(body, surface, extent);
+  }
+}
+
 }  // namespace
+
+double widest_interval(const Scene& scene, const std::vector<format::Sid>& coarse_sids, const ContactSpec& c) {
+  double widest = std::numeric_limits<double>::infinity();
+  for_each_refined_surface(scene, coarse_sids, c, [&](const std::string&, const std::string&, double extent) { widest = std::min(widest, extent); });
+  return widest;
+}
 
 void check_interval_width_fits(const Scene& scene, const std::vector<format::Sid>& coarse_sids) {
   const double width = scene.adaptive.interval_width;
   if (!(width > 0)) return;  // from each impact's Hertz estimate
   for (const ContactSpec& c : scene.contacts)
-    for (const auto& [body, surface] : {std::pair{c.body, c.surface}, std::pair{c.target, c.target_surface}}) {
-      const BodySpec* b = scene.body(body);
-      if (!b || !b->adaptive || surface.empty()) continue;
-      // the SIDs are the flexible bodies', in order
-      const auto index = std::count_if(scene.bodies.data(), b, [](const BodySpec& o) { return !o.rigid; });
-      const double extent = surface_extent(coarse_sids[std::size_t(index)], surface);
-      if (extent > 0 && width > extent)
+    for_each_refined_surface(scene, coarse_sids, c, [&](const std::string& body, const std::string& surface, double extent) {
+      if (width > extent)
         throw format::InputError(scene.file, "adaptive.interval_width",
                                  common::number_text(width) + " m is wider than contact surface '" + surface + "' of '" + body + "' (" +
                                      common::number_text(extent) + " m across): the refined region is centred on a touch of it");
-    }
+    });
 }
 
 void check_interval_width_reaches(const Scene& scene, const std::string& contact, double estimated_width, int tries,
