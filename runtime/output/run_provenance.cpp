@@ -11,7 +11,7 @@
 namespace isosid::run {
 
 RunProvenance run_provenance(const Scene& scene) {
-  RunProvenance p{common::version_line("isosid-run"), common::command_line(), common::utc_now(), {}};
+  RunProvenance p{common::version_line("isosid-run"), common::command_line(), common::utc_now(), {}, scene.overrides};
   auto add = [&p](const std::string& role, const std::string& path) {
     std::error_code ec;
     if (path.empty() || !std::filesystem::is_regular_file(path, ec)) return;
@@ -32,7 +32,8 @@ nlohmann::json to_json(const RunProvenance& provenance) {
   return {{"program_version", provenance.program_version},
           {"command_line", provenance.command_line},
           {"started_utc", provenance.started_utc},
-          {"inputs", inputs}};
+          {"inputs", inputs},
+          {"scene_overrides", provenance.scene_overrides}};
 }
 
 void write_provenance(format::h5::Writer& w, const RunProvenance& provenance) {
@@ -49,6 +50,7 @@ void write_provenance(format::h5::Writer& w, const RunProvenance& provenance) {
   w.strings("/provenance/input_roles", roles);
   w.strings("/provenance/input_paths", paths);
   w.strings("/provenance/input_sha256", hashes);
+  if (!provenance.scene_overrides.empty()) w.strings("/provenance/scene_overrides", provenance.scene_overrides);
 }
 
 }  // namespace isosid::run

@@ -26,6 +26,7 @@ struct RunProvenance {
   std::string command_line;     ///< as the shell would take it back
   std::string started_utc;
   std::vector<InputRecord> inputs;
+  std::vector<std::string> scene_overrides;  ///< "key = value" set over the scene file, in order
 };
 
 /// The provenance of a run of `scene` starting now: the scene file and each body's model and SID

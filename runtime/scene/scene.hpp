@@ -1,6 +1,8 @@
 // A scene: what isosid-run simulates (bodies from SIDs, fixed surfaces, contacts, gravity,
 // monitors, integrator settings) and the reference values the results are compared with.
 #pragma once
+#include "isosid/common/toml_override.hpp"
+
 #include <Eigen/Dense>
 #include <array>
 #include <map>
@@ -158,6 +160,9 @@ struct OutputSettings {
 
 struct Scene {
   std::string file;
+  /// Values set over the file's ("key = value", common/toml_override.hpp), in order; recorded
+  /// in the run's provenance beside the file's hash.
+  std::vector<std::string> overrides;
   SimulationSettings simulation;
   OutputSettings output;
   AdaptiveSettings adaptive;
@@ -178,8 +183,9 @@ struct Scene {
   bool reference_from_hertz = false;
 };
 
-/// Reads and validates a scene file; paths are resolved relative to it.
-Scene read_scene_file(const std::string& path);
+/// Reads and validates a scene file, with `overrides` set over it by dotted key; paths are
+/// resolved relative to the file.
+Scene read_scene_file(const std::string& path, const std::vector<common::TomlOverride>& overrides = {});
 
 std::string to_string(Dimension d);
 

@@ -252,13 +252,15 @@ const ShapeSpec* Scene::fixed_surface(const std::string& name) const {
   return nullptr;
 }
 
-Scene read_scene_file(const std::string& path) {
-  const toml::table root = common::parse_toml_file(path);
+Scene read_scene_file(const std::string& path, const std::vector<common::TomlOverride>& overrides) {
+  toml::table root = common::parse_toml_file(path);
+  common::apply_overrides(root, overrides, path);
   const TomlView top(root, path);
   top.allow_only({"simulation", "flexible_body", "rigid_body", "fixed_plane", "fixed_sphere", "fixed_cylinder", "contact",
                   "hertz_contact", "joint", "monitor", "reference", "output", "adaptive"});
   Scene scene;
   scene.file = path;
+  for (const common::TomlOverride& o : overrides) scene.overrides.push_back(o.text());
   scene.simulation = read_simulation(top.table("simulation"));
   if (auto o = top.optional_table("output")) {
     o->allow_only({"paraview", "paraview_interval", "expected_warnings"});

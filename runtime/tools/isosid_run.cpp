@@ -62,7 +62,9 @@ int main(int argc, char** argv) {
     CLI::App app{"Simulates impacts of reduced flexible bodies (SIDs) described by a scene file.", "isosid-run"};
     std::string scene_file, out_dir;
     bool as_json = false, quiet = false, paraview_flag = false;
+    std::vector<std::string> settings;
     app.add_option("scene", scene_file, "scene file (*.scene.toml)")->required();
+    app.add_option("--set", settings, "KEY=VALUE: a value over the scene file's, by dotted key (flexible_body.0.velocity=[0,-0.2,0])");
     app.add_option("-o,--output", out_dir, "results folder (default: out/<scene name>)");
     app.add_flag("--json", as_json, "print summary.json to stdout");
     app.add_flag("-q,--quiet", quiet, "no progress on stderr");
@@ -70,7 +72,7 @@ int main(int argc, char** argv) {
     if (auto status = common::parse_command_line(app, argc, argv)) return *status;
     for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, request_stop);  // stop at a step, keep results
 
-    run::Scene scene = run::read_scene_file(scene_file);
+    run::Scene scene = run::read_scene_file(scene_file, common::parse_overrides(settings, "--set"));
     if (paraview_flag) scene.output.paraview = true;
     if (out_dir.empty()) out_dir = default_output(scene_file);
     run::RunFolder folder(out_dir, scene);  // before any work: a results folder this run may write, and only this run

@@ -48,4 +48,17 @@ TEST_CASE("provenance: the SID, summary.json and results.h5 name the version, th
   CHECK(results.strings("/provenance/input_roles") == std::vector<std::string>{"scene", "sid sphere"});
   CHECK(results.strings("/provenance/input_paths") == std::vector<std::string>{scene, sid});
   CHECK(results.strings("/provenance/input_sha256") == std::vector<std::string>{p["inputs"][0]["sha256"], p["inputs"][1]["sha256"]});
+  CHECK(p["scene_overrides"].empty());
+  CHECK_FALSE(results.exists("/provenance/scene_overrides"));
+
+  // values set over the scene file are run and recorded beside its unchanged hash
+  const std::string faster = dir.path("faster");
+  const auto set = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + scene + " -o " + faster +
+                                     " --set 'flexible_body.0.velocity=[0.0, -0.2, 0.0]' --set simulation.end_time=4e-6");
+  REQUIRE(set.exit_status == 0);
+  const nlohmann::json s = nlohmann::json::parse(std::ifstream(faster + "/summary.json"));
+  CHECK(s["provenance"]["scene_overrides"] == nlohmann::json({"flexible_body.0.velocity = [0.0, -0.2, 0.0]", "simulation.end_time = 4e-6"}));
+  CHECK(s["provenance"]["inputs"][0] == p["inputs"][0]);
+  CHECK(s["end_time_s"].get<double>() == 4e-6);
+  CHECK(format::h5::Reader(faster + "/results.h5").strings("/provenance/scene_overrides").size() == 2);
 }

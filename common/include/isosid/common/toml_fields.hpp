@@ -2,6 +2,7 @@
 // number finite and of the right sign, and every problem is an InputError naming the file
 // and the dotted field, e.g. "sphere.model.toml: material.poisson_ratio: must be < 0.5".
 #pragma once
+#include "isosid/common/toml_override.hpp"
 #include "isosid/format/error.hpp"
 
 #include <Eigen/Dense>
@@ -15,6 +16,12 @@ namespace isosid::common {
 
 /// Parses a TOML file; syntax errors become InputError with line and column.
 toml::table parse_toml_file(const std::string& path);
+
+/// Sets each override in `root` (parsed from `file`), replacing a value or adding a key to an
+/// existing table; the reader of the file then checks the result as if it had been written
+/// there. A key that leads through a missing table or a missing array entry, or a value that
+/// is not TOML, throws InputError naming `file` and the key.
+void apply_overrides(toml::table& root, const std::vector<TomlOverride>& overrides, const std::string& file);
 
 class TomlView {
 public:
