@@ -29,11 +29,14 @@ TEST_CASE("provenance: the SID, summary.json and results.h5 name the version, th
   CHECK(made.provenance.model_sha256 == common::sha256_file(model));
 
   const std::string scene = dir.path("s.scene.toml");
-  std::ofstream(scene) << test::replace(test::golden_impact_scene(sid), "end_time = 100e-6", "end_time = 5e-6");
+  std::ofstream(scene) << test::replace(test::golden_impact_scene(sid), "end_time = 100e-6", "end_time = 5e-6")
+                         << "[reference]\npeak_force_n = 1.0\n";
   const std::string out = dir.path("out of run");  // an argument the command line must quote
   const auto run = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + scene + " -o '" + out + "'");
   REQUIRE(run.exit_status == 0);
-  const nlohmann::json p = nlohmann::json::parse(std::ifstream(out + "/summary.json"))["provenance"];
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(out + "/summary.json"));
+  CHECK(summary["reference"].contains("peak_force_n"));
+  const nlohmann::json& p = summary["provenance"];
   CHECK_THAT(p["program_version"].get<std::string>(), StartsWith(std::string("isosid-run ") + ISOSID_VERSION));
   CHECK(p["command_line"] == std::string(ISOSID_RUN_EXE) + " -q " + scene + " -o '" + out + "'");
   CHECK(p["started_utc"].get<std::string>().size() == 20);  // 2026-11-28T05:10:00Z
@@ -60,5 +63,6 @@ TEST_CASE("provenance: the SID, summary.json and results.h5 name the version, th
   CHECK(s["provenance"]["scene_overrides"] == nlohmann::json({"flexible_body.0.velocity = [0.0, -0.2, 0.0]", "simulation.end_time = 4e-6"}));
   CHECK(s["provenance"]["inputs"][0] == p["inputs"][0]);
   CHECK(s["end_time_s"].get<double>() == 4e-6);
+  CHECK(s["reference"].empty());  // the file's reference values are the file's scene's
   CHECK(format::h5::Reader(faster + "/results.h5").strings("/provenance/scene_overrides").size() == 2);
 }
