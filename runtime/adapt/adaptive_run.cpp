@@ -43,13 +43,8 @@ using nlohmann::json;
 /// phase going), and its ParaView frames: one every few samples.
 constexpr double kSamplesPerImpact = 100, kMaxSamplesPerOutput = 1000, kSamplesPerFrame = 4;
 
-/// [R2] Sect. 4.2 (docs/references.md): the contact interval is used best at 70 % (the first
-/// impact's width makes the Hertz contact diameter 70 % of it).
-constexpr double kTargetUtilization = 0.7, kMinUtilization = 0.5, kMaxUtilization = 0.9;
 /// Tries of one impact before the last one is taken as it is.
 constexpr int kMaxTries = 4;
-/// Alg. 2 widens a width by at most this factor per try (and narrows it to half at most).
-constexpr double kMaxWidening = 1.5;
 /// Errors in one impact run before the next ends the run: the penalty is then down by two
 /// decades and more ([R2]'s slow decrease has no limit).
 constexpr int kMaxPenaltyLowerings = 20;
@@ -146,38 +141,6 @@ std::vector<Refinement> refinements(const Scene& scene, const MultibodySystem& s
   add(c.body, c.surface, touch.slave_parameter);
   if (!c.target_surface.empty()) add(c.target, c.target_surface, touch.target_parameter);
   return out;
-}
-
-/// [R2] Alg. 2: whether an impact's refined region fits its contact, and the width for the
-/// next try or the next impact of that contact. Over 1: the load reached beyond the region
-/// (widen by half); over kMaxUtilization the load came within a tenth of its edge, where the
-/// edge elements of [R2] are (widen toward the target); under kMinUtilization the region wastes
-/// its elements (narrow toward the target); in between the model is acceptable and the width
-/// still moves toward the target, by at most half.
-struct IntervalDecision {
-  bool acceptable = false;
-  double next_width = 0;
-  std::string reason;
-};
-
-IntervalDecision decide_interval(double utilization, bool beyond, double width) {
-  IntervalDecision d;
-  const double toward_target = width * std::clamp(utilization / kTargetUtilization, 0.5, kMaxWidening);
-  if (beyond) {
-    d.next_width = kMaxWidening * width;
-    d.reason = "load beyond the refined region";
-  } else if (utilization > kMaxUtilization) {
-    d.next_width = toward_target;
-    d.reason = "region too narrow";
-  } else if (utilization < kMinUtilization) {
-    d.next_width = toward_target;
-    d.reason = "region too wide";
-  } else {
-    d.acceptable = true;
-    d.next_width = toward_target;
-    d.reason = "acceptable";
-  }
-  return d;
 }
 
 }  // namespace

@@ -38,6 +38,30 @@ void for_each_refined_surface(const Scene& scene, const std::vector<format::Sid>
 
 }  // namespace
 
+IntervalDecision decide_interval(double utilization, bool beyond, double width) {
+  IntervalDecision d;
+  const double toward_target = width * std::clamp(utilization / kTargetUtilization, 0.5, kMaxWidening);
+  if (beyond) {
+    d.next_width = kMaxWidening * width;
+    d.reason = "load beyond the refined region";
+  } else if (utilization == 0) {
+    d.acceptable = true;
+    d.next_width = width;
+    d.reason = "nothing loaded (the surfaces grazed)";
+  } else if (utilization > kMaxUtilization) {
+    d.next_width = toward_target;
+    d.reason = "region too narrow";
+  } else if (utilization < kMinUtilization) {
+    d.next_width = toward_target;
+    d.reason = "region too wide";
+  } else {
+    d.acceptable = true;
+    d.next_width = toward_target;
+    d.reason = "acceptable";
+  }
+  return d;
+}
+
 double widest_interval(const Scene& scene, const std::vector<format::Sid>& coarse_sids, const ContactSpec& c) {
   double widest = std::numeric_limits<double>::infinity();
   for_each_refined_surface(scene, coarse_sids, c, [&](const std::string&, const std::string&, double extent) { widest = std::min(widest, extent); });

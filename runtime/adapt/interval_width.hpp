@@ -1,13 +1,35 @@
-// The first impact's refined width of an adaptive run ([adaptive] interval_width) against what
-// it can do: the region is centred on the touch of a contact surface, and [R2] Alg. 2
-// (docs/references.md) widens it by at most half per try.
+// The width of an adaptive run's refined region: [R2] Alg. 2's decision after each try
+// (docs/references.md), and the checks of [adaptive] interval_width against what the tries can
+// do (the region is centred on the touch of a contact surface and widens by at most half per try).
 #pragma once
 #include "isosid/format/sid.hpp"
 #include "scene/scene.hpp"
 
+#include <string>
 #include <vector>
 
 namespace isosid::run {
+
+/// [R2] Sect. 4.2: the contact interval is used best at 70 % (the first impact's width makes the
+/// Hertz contact diameter 70 % of it); 50-90 % is acceptable.
+constexpr double kTargetUtilization = 0.7, kMinUtilization = 0.5, kMaxUtilization = 0.9;
+/// Alg. 2 widens a width by at most this factor per try (and narrows it to half at most).
+constexpr double kMaxWidening = 1.5;
+
+/// [R2] Alg. 2: whether an impact's refined region fits its contact, and the width for the
+/// next try or the next impact of that contact. `utilization` is the farthest loaded point's
+/// distance from the region's centre over half its width (0: nothing was loaded). Over 1 the
+/// load reached beyond the region (widen by half); over kMaxUtilization it came within a tenth
+/// of its edge, where the edge elements of [R2] are (widen toward the target); under
+/// kMinUtilization the region wastes its elements (narrow toward the target); in between the
+/// model is acceptable and the width still moves toward the target, by at most half. A touch
+/// that loaded nothing (the surfaces grazed) says nothing about the width: acceptable, kept.
+struct IntervalDecision {
+  bool acceptable = false;
+  double next_width = 0;
+  std::string reason;
+};
+IntervalDecision decide_interval(double utilization, bool beyond, double width);
 
 /// Refuses (InputError naming adaptive.interval_width) a width larger than the contact
 /// surface of an adaptive body it refines (its master patch's control net across): such a

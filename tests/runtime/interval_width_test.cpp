@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
 
 using namespace isosid;
 
@@ -35,4 +36,27 @@ TEST_CASE("adaptive: Alg. 2 widens a region at most to the contact surfaces it r
   CHECK(run::widest_interval(scene, {sid, smaller}, c) == 0.5 * across);
   scene.bodies[0].adaptive = scene.bodies[1].adaptive = false;
   CHECK(std::isinf(run::widest_interval(scene, {sid, smaller}, c)));
+}
+
+TEST_CASE("adaptive: Alg. 2's decision after a try, in each band of the utilization", "[runtime][adaptive][unit]") {
+  const double w = 1e-3;
+  const auto beyond = run::decide_interval(1.3, true, w);
+  CHECK_FALSE(beyond.acceptable);
+  CHECK(beyond.next_width == Approx(1.5 * w));  // widened by half, whatever the measured reach
+  const auto narrow = run::decide_interval(0.95, false, w);
+  CHECK_FALSE(narrow.acceptable);
+  CHECK(narrow.next_width == Approx(w * 0.95 / 0.7));
+  const auto wide = run::decide_interval(0.2, false, w);
+  CHECK_FALSE(wide.acceptable);
+  CHECK(wide.next_width == Approx(0.5 * w));  // narrowed to half at most
+  const auto fits = run::decide_interval(0.6, false, w);
+  CHECK(fits.acceptable);
+  CHECK(fits.next_width == Approx(w * 0.6 / 0.7));  // the next impact moves toward 70 %
+  // a touch that loaded nothing (a graze, as the double pendulums' balls brushing at 0.98 s)
+  // is no evidence of a too wide region: narrowing it four times left the next, real impact
+  // with a sixteenth of its width
+  const auto graze = run::decide_interval(0.0, false, w);
+  CHECK(graze.acceptable);
+  CHECK(graze.next_width == w);
+  CHECK(graze.reason == "nothing loaded (the surfaces grazed)");
 }
