@@ -84,7 +84,7 @@ TEST_CASE("adaptive: an impact is sampled finely however sparse the run's output
   // the run samples every 50 us, under the impact's 83 us (scene E samples 1e-4 s, its impacts
   // last 65 us: before, their results held the touch and the release, and no force between)
   const std::string scene = test::replace(test::model_text("sphere_hertz_adaptive.scene.toml"), "output_interval = 0.5e-6", "output_interval = 50e-6");
-  const nlohmann::json s = test::run_scene(dir, scene + "[output]\nparaview = true\n");
+  const nlohmann::json s = test::run_scene(dir, test::replace(scene, "[output]\n", "[output]\nparaview = true\n"));
   const auto impacts = phases_of(s, "impact");
   REQUIRE(impacts.size() == 1);
   // a hundredth of the impact's Hertz contact time (83.1 us; the estimate at the touch)
@@ -273,7 +273,7 @@ TEST_CASE("adaptive: bad adaptive input is refused with exit 2 and one line", "[
   refused(test::replace(scene, "model = \"sphere_axisym_thb.model.toml\"", "model = \"sphere_axisym.model.toml\""),
           "--coarse: the model has no [refinement.hierarchical]");
   CHECK_FALSE(std::filesystem::exists(dir.path("out-bad/summary.json")));
-  refused(scene + "[output]\nparaview = true\n", "has no viewing mesh: add [visual] to its model file");
+  refused(test::replace(scene, "[output]\n", "[output]\nparaview = true\n"), "has no viewing mesh: add [visual] to its model file");
   refused(scene + "[adaptive]\nimpact_output_interval = 1e-6\n", "exceeds simulation.output_interval");
   refused(scene + "[adaptive]\nimpact_output_interval = 1e-12\n", "exceeds the limit of 1e7 samples");
   refused(scene + "[adaptive]\ncoarse_integrator = \"leapfrog\"\n", "do not mix between phases");
