@@ -6,14 +6,39 @@
 #include "isosid/format/sid_io.hpp"
 #include "scene/prep_process.hpp"
 
+#include <sys/file.h>
+
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 namespace isosid::run {
 namespace fs = std::filesystem;
 
 namespace {
+/// Holds `<sid>.lock` beside a SID that may be (re)built while it is checked, built and read:
+/// two runs sharing a model (a study's ranks, two isosid-run started together) take turns, so
+/// that neither reads the other's half-decided SID nor builds it a second time.
+class SidLock {
+public:
+  explicit SidLock(const std::string& sid_file) {
+    fd_ = ::open((sid_file + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ >= 0) ::flock(fd_, LOCK_EX);  // a folder we cannot write to: no lock, and no build there either
+  }
+  ~SidLock() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  SidLock(const SidLock&) = delete;
+  SidLock& operator=(const SidLock&) = delete;
+
+private:
+  int fd_ = -1;
+};
+
 /// A Craig-Bampton SID from before isosid-prep marked the contact points its interface covers
 /// (/contact/<name>/in_interface): without them a contact beyond the interface goes unreported.
 bool lacks_interface_coverage(const format::Sid& sid) {
@@ -49,7 +74,9 @@ std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
     if (b.rigid) continue;  // rigid bodies have no SID
     const std::size_t index = sids.size();  // flexible_body[index] of the scene
     std::error_code ec;
+    std::optional<SidLock> lock;  // while this body's SID is checked, rebuilt and read
     if (!b.model_file.empty() && !b.adaptive) {  // an adaptive body's SIDs come from the run's cache, built for their request
+      lock.emplace(b.sid_file);
       const bool stale = !fs::exists(b.sid_file, ec) || fs::last_write_time(b.sid_file, ec) < fs::last_write_time(b.model_file, ec);
       if (stale) run_prep(b.model_file, b.sid_file, {}, quiet, "");
     }
@@ -67,6 +94,7 @@ std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
 }
 
 format::Sid rebuild_sid(const Scene& scene, const BodySpec& body, double contact_radius, bool quiet) {
+  const SidLock lock(body.sid_file);
   char radius[32];
   std::snprintf(radius, sizeof radius, "%.17g", contact_radius);
   run_prep(body.model_file, body.sid_file, {"--contact-radius", radius}, quiet, std::string(" for a contact radius of ") + radius);

@@ -785,3 +785,20 @@ TEST_CASE("scene C: rotating disk with friction (momentum balance)", "[runtime][
     CHECK(spun["contacts"][0]["interface_left_s"].is_null());
   }
 }
+
+TEST_CASE("runtime: two runs started together on a model whose SID is missing build it once", "[runtime][sid]") {
+  // the SID is checked, built and read under a lock beside it: the second run waits for the
+  // first's build and reads it (without the lock both built it, one renaming over the other)
+  const test::ScratchDir dir("sid_race");
+  std::filesystem::copy_file(std::string(ISOSID_GOLDEN_DIR) + "/sphere_small.model.toml", dir.path("sphere.model.toml"));
+  const std::string scene = test::golden_impact_scene("sphere.sid.h5");
+  std::ofstream(dir.path("a.scene.toml")) << test::replace(scene, "sid = \"sphere.sid.h5\"", "sid = \"sphere.sid.h5\"\nmodel = \"sphere.model.toml\"");
+  const std::string run = std::string("ISOSID_PREP=") + ISOSID_PREP_EXE + " " + ISOSID_RUN_EXE + " " + dir.path("a.scene.toml");
+  const auto both = test::run_program("bash -c '" + run + " -o " + dir.path("one") + " & " + run + " -o " + dir.path("two") + " & wait'");
+  INFO(both.err);
+  std::size_t builds = 0;
+  for (std::size_t at = both.err.find("isosid-run: building"); at != std::string::npos; at = both.err.find("isosid-run: building", at + 1)) ++builds;
+  CHECK(builds == 1);
+  for (const char* out : {"one", "two"})
+    CHECK(json::parse(std::ifstream(dir.path(std::string(out) + "/summary.json")))["status"] == "completed");
+}
