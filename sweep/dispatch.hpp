@@ -1,0 +1,47 @@
+// Running a study's cases on the ranks of an MPI job (mpirun -np N isosid-sweep ...), or in one
+// process without mpirun. Rank 0 hands the cases out one at a time as ranks ask for work
+// (dynamic balancing: cases differ in cost) and runs cases itself, answering requests at every
+// step of its own runs; each rank writes its cases' results and rows (a shared file system),
+// rank 0 the table.
+#pragma once
+#include "study_file.hpp"
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace isosid::sweep {
+
+/// This process's place in the job. MPI is started only under a launcher (mpirun sets
+/// OMPI_COMM_WORLD_SIZE, Slurm's srun PMI_SIZE): a plain start is rank 0 of 1.
+class Ranks {
+public:
+  Ranks(int& argc, char**& argv);
+  ~Ranks();
+  Ranks(const Ranks&) = delete;
+  Ranks& operator=(const Ranks&) = delete;
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  /// Ends the whole job (every rank) with `status` after a failure on one rank.
+  [[noreturn]] void abort(int status) const;
+
+private:
+  int rank_ = 0, size_ = 1;
+  bool mpi_ = false;
+};
+
+struct CaseWork {
+  const Study& study;
+  const std::vector<Case>& cases;
+  std::string dir;                       ///< the study's results folder
+  std::vector<std::string> collect;
+  std::function<bool()> stop_requested;  ///< a signal: the running cases stop, no new case starts
+};
+
+/// Runs the cases numbered in `todo` (rank 0's list; the other ranks' is ignored) over all
+/// ranks. On rank 0, `on_row` receives every case's row as it is written (its own and the
+/// other ranks'); it returns once every rank has stopped.
+void run_cases(const Ranks& ranks, const CaseWork& work, const std::vector<int>& todo, const std::function<void(const nlohmann::json&)>& on_row);
+
+}  // namespace isosid::sweep

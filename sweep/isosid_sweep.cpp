@@ -1,0 +1,194 @@
+// isosid-sweep: a study of many impacts, one base scene run for every case of its parameters,
+// in-process through the library's pipeline, on the ranks of an MPI job or in one process,
+// into one table (study.csv, study.h5). A stopped study resumes where it stopped.
+#include "case_run.hpp"
+#include "dispatch.hpp"
+#include "isosid/common/cli_guard.hpp"
+#include "isosid/common/cli_parse.hpp"
+#include "isosid/common/progress_line.hpp"
+#include "isosid/format/error.hpp"
+#include "study_table.hpp"
+
+#include <sys/file.h>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <optional>
+
+namespace {
+using namespace isosid;
+namespace fs = std::filesystem;
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+void request_stop(int signal) { g_stop_signal = signal; }
+
+/// Set once every rank has read the study: a failure after it may leave other ranks waiting
+/// for this one, so it ends the whole job.
+bool g_study_read = false;
+
+/// out/<study name> for study files named <name>.study.toml.
+std::string default_output(const std::string& study_file) {
+  const std::string name = fs::path(study_file).filename().string();
+  return (fs::path("out") / name.substr(0, name.find('.'))).string();
+}
+
+/// Holds the study folder against a second study run into it (not against this job's ranks).
+class FolderLock {
+public:
+  explicit FolderLock(const std::string& dir) {
+    fs::create_directories(dir);
+    fd_ = ::open((fs::path(dir) / ".isosid-sweep.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0 || ::flock(fd_, LOCK_EX | LOCK_NB) != 0)
+      throw format::InputError(dir, "", "another isosid-sweep is running into this folder");
+  }
+  ~FolderLock() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+
+private:
+  int fd_ = -1;
+};
+
+/// Rank 0's record of the study: every case's row, the table rewritten as rows arrive, and
+/// the progress line.
+class StudyRecord {
+public:
+  StudyRecord(const sweep::Study& study, const std::vector<sweep::Case>& cases, std::string dir, std::vector<std::string> collect, bool quiet)
+      : study_(study), total_(cases.size()), dir_(std::move(dir)), collect_(std::move(collect)), quiet_(quiet) {}
+  void add(const nlohmann::json& row, bool run_now) {
+    rows_[row["case"].get<int>()] = row;
+    if (run_now) ++run_now_;
+    write();
+    if (quiet_ || !run_now) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double fraction = double(rows_.size()) / double(total_);
+    char text[160];
+    std::snprintf(text, sizeof text, "%zu/%zu cases (%d failed, %d bad input)", rows_.size(), total_, count("failed"), count("bad input"));
+    const std::string left = common::ProgressLine::time_left(fraction, elapsed);
+    line_.show(left.empty() ? text : std::string(text) + ", " + left);
+  }
+  void finish() { line_.finish(); }
+  std::size_t rows() const { return rows_.size(); }
+  std::size_t total() const { return total_; }
+  int count(const char* status) const {
+    int n = 0;
+    for (const auto& [index, row] : rows_) n += row["status"] == status;
+    return n;
+  }
+  int run_now() const { return run_now_; }
+
+private:
+  void write() {
+    std::vector<nlohmann::json> rows;
+    for (const auto& [index, row] : rows_) rows.push_back(row);
+    sweep::write_table(dir_, study_, collect_, rows);
+  }
+  const sweep::Study& study_;
+  std::size_t total_;
+  std::string dir_;
+  std::vector<std::string> collect_;
+  bool quiet_;
+  std::map<int, nlohmann::json> rows_;
+  int run_now_ = 0;
+  common::ProgressLine line_{"isosid-sweep"};
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+int run_study(const sweep::Ranks& ranks, const std::string& study_file, std::string out_dir, int only_case, bool quiet) {
+  const sweep::Study study = sweep::read_study_file(study_file);
+  const std::vector<sweep::Case> cases = sweep::plan_cases(study);
+  const std::vector<std::string> collect = study.collect.empty() ? sweep::default_collect(study) : study.collect;
+  if (out_dir.empty()) out_dir = default_output(study_file);
+  if (only_case >= int(cases.size()))
+    throw format::InputError("--case", "", std::to_string(only_case) + " is beyond the study's " + std::to_string(cases.size()) + " cases (from 0)");
+  if (only_case >= 0 && ranks.size() > 1) throw format::InputError("--case", "", "runs one case in one process: not under mpirun");
+  g_study_read = true;
+  const sweep::CaseWork work{study, cases, out_dir, collect, [] { return g_stop_signal != 0; }};
+
+  if (only_case >= 0) {  // one case of a job array: its folder and row, no table
+    fs::create_directories(out_dir);
+    const sweep::Case& c = cases[std::size_t(only_case)];
+    const std::string problem = sweep::case_input_problem(study, c);
+    const nlohmann::json row = problem.empty() ? sweep::run_case(study, c, sweep::case_folder(out_dir, only_case), collect, work.stop_requested)
+                                               : sweep::refused_case(c, problem);
+    if (row["status"] == "interrupted") return 128 + int(g_stop_signal);
+    sweep::write_row(out_dir, row);
+    if (!quiet) std::fprintf(stderr, "isosid-sweep: case %d %s%s\n", only_case, row["status"].get<std::string>().c_str(),
+                             row["message"].get<std::string>().empty() ? "" : (": " + row["message"].get<std::string>()).c_str());
+    return row["exit_class"].get<int>();
+  }
+
+  std::optional<FolderLock> lock;
+  std::optional<StudyRecord> record;
+  std::vector<int> todo;
+  if (ranks.rank() == 0) {
+    lock.emplace(out_dir);
+    record.emplace(study, cases, out_dir, collect, quiet);
+    // every case checked before any runs: one refused is recorded as bad input, the rest go on
+    for (const sweep::Case& c : cases) {
+      if (const auto row = sweep::read_row(out_dir, c.index)) {
+        record->add(*row, false);  // done by an earlier start of the study: never run twice
+        continue;
+      }
+      if (const std::string problem = sweep::case_input_problem(study, c); !problem.empty()) {
+        const nlohmann::json row = sweep::refused_case(c, problem);
+        sweep::write_row(out_dir, row);
+        record->add(row, false);
+        continue;
+      }
+      todo.push_back(c.index);
+    }
+    if (!quiet)
+      std::fprintf(stderr, "isosid-sweep: %zu cases, %zu to run on %d rank%s (%zu done before, %d refused)\n", cases.size(), todo.size(),
+                   ranks.size(), ranks.size() > 1 ? "s" : "", record->rows() - std::size_t(record->count("bad input")), record->count("bad input"));
+  }
+  sweep::run_cases(ranks, work, todo, [&](const nlohmann::json& row) { record->add(row, true); });
+  if (ranks.rank() != 0) return 0;
+  record->finish();
+  const std::string table = (fs::path(out_dir) / "study.csv").string();
+  if (!quiet)
+    std::fprintf(stderr, "isosid-sweep: %zu of %zu cases recorded (%d completed, %d failed, %d bad input) -> %s\n", record->rows(), record->total(),
+                 record->count("completed"), record->count("failed"), record->count("bad input"), table.c_str());
+  if (g_stop_signal) {
+    std::fprintf(stderr, "isosid-sweep: interrupted by %s; the same command resumes the study\n", strsignal(g_stop_signal));
+    return 128 + int(g_stop_signal);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  sweep::Ranks ranks(argc, argv);
+  const int status = common::run_guarded("isosid-sweep", [&]() -> int {
+    // every rank reads the same study file: only rank 0 reports what is wrong with it
+    try {
+    CLI::App app{"Runs a study: one scene for every case of its parameters, into one table (study.csv, study.h5).", "isosid-sweep"};
+    std::string study_file, out_dir;
+    int only_case = -1;
+    bool quiet = false;
+    app.add_option("study", study_file, "study file (*.study.toml)")->required();
+    app.add_option("-o,--output", out_dir, "study folder (default: out/<study name>)");
+    app.add_option("--case", only_case, "run only case I (from 0), e.g. one task of a Slurm job array; no table")->check(CLI::NonNegativeNumber);
+    app.add_flag("-q,--quiet", quiet, "no progress on stderr");
+    if (auto status = common::parse_command_line(app, argc, argv)) return *status;
+    for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, request_stop);  // the running cases stop at a step
+    return run_study(ranks, study_file, out_dir, only_case, quiet);
+    } catch (const format::InputError&) {
+      if (ranks.rank() != 0 && !g_study_read) return common::kExitBadInput;
+      throw;
+    }
+  });
+  if (status != 0 && status < 128 && ranks.size() > 1 && g_study_read) ranks.abort(status);  // others may wait for this rank
+  return status;
+}

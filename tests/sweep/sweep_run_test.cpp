@@ -1,0 +1,151 @@
+// isosid-sweep as a user runs it, on the small golden sphere dropped at several speeds: one
+// table of every case (a refused case recorded, the rest run), a study that resumes after
+// kill -9 without running any case twice, a job-array case, and an MPI job equal to one process.
+#include "support/impact_scene.hpp"
+#include "support/run_program.hpp"
+#include "support/scene_text.hpp"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+using namespace isosid;
+using Catch::Matchers::Contains;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The golden sphere's impact beside a study of `speeds` (m/s, TOML list text) and two penalties.
+void write_study(const test::ScratchDir& dir, const std::string& speeds, const std::string& extra = "") {
+  std::ofstream(dir.path("s.scene.toml")) << test::golden_impact_scene(std::string(ISOSID_GOLDEN_DIR) + "/sphere_small.sid.h5");
+  std::ofstream(dir.path("speeds.study.toml"))
+      << "scene = \"s.scene.toml\"\ncollect = [\"contacts.impact.peak_force_n\", \"contacts.impact.duration_s\"]\n" << extra
+      << "[[parameter]]\nkey = \"flexible_body.0.velocity.1\"\nvalues = " << speeds << "\n"
+      << "[[parameter]]\nkey = \"contact.0.penalty\"\nvalues = [2e17, 5e17]\n";
+}
+
+test::ProgramResult sweep(const test::ScratchDir& dir, const std::string& args) {
+  return test::run_program(std::string(ISOSID_SWEEP_EXE) + " -q " + dir.path("speeds.study.toml") + " " + args);
+}
+
+std::string text_of(const std::string& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The table without its timing and provenance columns (which differ between runs).
+std::string results_of(const std::string& csv) {
+  std::istringstream in(text_of(csv));
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::size_t comma = 0;
+    for (int i = 0; i < 7 && comma != std::string::npos; ++i) comma = line.find(',', comma + 1);  // case .. duration
+    out += line.substr(0, comma) + "\n";
+  }
+  return out;
+}
+
+nlohmann::json row(const test::ScratchDir& dir, const std::string& out, int index) {
+  char name[16];
+  std::snprintf(name, sizeof name, "%06d", index);
+  return nlohmann::json::parse(std::ifstream(dir.path(out + "/cases/" + name + "/row.json")));
+}
+
+}  // namespace
+
+TEST_CASE("sweep: every case in one table; a case with a bad value is recorded and the rest run", "[sweep]") {
+  const test::ScratchDir dir("sweep_table");
+  write_study(dir, "[-0.05, -0.1, \"fast\", -0.2]");
+  const test::ProgramResult r = sweep(dir, "-o " + dir.path("out"));
+  INFO(r.err);
+  REQUIRE(r.exit_status == 0);
+  const std::string csv = text_of(dir.path("out/study.csv"));
+  CHECK_THAT(csv, Contains("case,status,exit_class,message,flexible_body.0.velocity.1,contact.0.penalty,contacts.impact.peak_force_n"));
+  for (int i = 0; i < 8; ++i) {
+    const nlohmann::json r = row(dir, "out", i);
+    INFO("case " << i);
+    if (i / 2 == 2) {  // "fast": refused before any case ran, with the command line's class and message
+      CHECK(r["status"] == "bad input");
+      CHECK(r["exit_class"] == 2);
+      CHECK(r["message"] == dir.path("s.scene.toml") + ": flexible_body[0].velocity[1]: must be a number");
+      CHECK_FALSE(fs::exists(dir.path("out/cases/00000" + std::to_string(i) + "/results.h5")));
+      continue;
+    }
+    CHECK(r["status"] == "completed");
+    CHECK(r["settings"]["flexible_body.0.velocity.1"] == std::vector<std::string>{"-0.05", "-0.1", "", "-0.2"}[std::size_t(i / 2)]);
+    CHECK(fs::exists(dir.path("out/cases/00000" + std::to_string(i) + "/results.h5")));
+  }
+  // each case as isosid-run with the same values set, to the last digit
+  const double f05 = row(dir, "out", 1)["collected"]["contacts.impact.peak_force_n"], f2 = row(dir, "out", 7)["collected"]["contacts.impact.peak_force_n"];
+  CHECK(f2 > 3 * f05);
+  const auto cli = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + dir.path("cli") +
+                                     " --set flexible_body.0.velocity.1=-0.2 --set contact.0.penalty=5e17");
+  REQUIRE(cli.exit_status == 0);
+  const nlohmann::json s = nlohmann::json::parse(std::ifstream(dir.path("cli/summary.json")));
+  CHECK(s["contacts"][0]["peak_force_n"] == f2);
+  CHECK(fs::exists(dir.path("out/study.h5")));
+}
+
+TEST_CASE("sweep: a study file that cannot make a study exits 2 with one line and runs nothing", "[sweep]") {
+  const test::ScratchDir dir("sweep_bad");
+  write_study(dir, "[-0.1]", "sampling = \"random\"\n");
+  const test::ProgramResult r = sweep(dir, "-o " + dir.path("out"));
+  CHECK(r.exit_status == 2);
+  CHECK_THAT(r.err, Contains("speeds.study.toml: sampling: must be \"grid\", \"zip\" or \"latin_hypercube\""));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(fs::exists(dir.path("out")));
+}
+
+TEST_CASE("sweep: a study killed halfway resumes, runs no case twice, and its table equals an uninterrupted one's", "[sweep]") {
+  const test::ScratchDir dir("sweep_resume");
+  write_study(dir, "[-0.02, -0.03, -0.04, -0.05, -0.06, -0.07, -0.08, -0.09, -0.1, -0.11]");
+  REQUIRE(sweep(dir, "-o " + dir.path("whole")).exit_status == 0);
+  // kill -9 once three cases have their rows
+  const std::string out = dir.path("killed");
+  const auto killed = test::run_program("bash -c '" + std::string(ISOSID_SWEEP_EXE) + " -q " + dir.path("speeds.study.toml") + " -o " + out +
+                                        " & pid=$!; until [ $(ls " + out + "/cases/*/row.json 2>/dev/null | wc -l) -ge 3 ]; do sleep 0.01; done; "
+                                        "kill -9 $pid; wait $pid'");
+  CHECK(killed.exit_status == 128 + 9);
+  std::vector<std::pair<std::string, fs::file_time_type>> before;
+  for (const auto& e : fs::directory_iterator(out + "/cases"))
+    if (fs::exists(e.path() / "row.json")) before.emplace_back(e.path().string(), fs::last_write_time(e.path() / "results.h5"));
+  REQUIRE(before.size() >= 3);
+  REQUIRE(before.size() < 20);
+  const test::ProgramResult resumed = test::run_program(std::string(ISOSID_SWEEP_EXE) + " " + dir.path("speeds.study.toml") + " -o " + out);
+  INFO(resumed.err);
+  REQUIRE(resumed.exit_status == 0);
+  CHECK_THAT(resumed.err, Contains("20 cases, " + std::to_string(20 - before.size()) + " to run"));
+  for (const auto& [folder, written] : before) CHECK(fs::last_write_time(folder + "/results.h5") == written);  // not run again
+  CHECK(results_of(out + "/study.csv") == results_of(dir.path("whole/study.csv")));
+}
+
+TEST_CASE("sweep: one case of a job array, then the study around it", "[sweep]") {
+  const test::ScratchDir dir("sweep_case");
+  write_study(dir, "[-0.05, -0.1]");
+  REQUIRE(sweep(dir, "-o " + dir.path("out") + " --case 3").exit_status == 0);
+  CHECK(row(dir, "out", 3)["status"] == "completed");
+  CHECK_FALSE(fs::exists(dir.path("out/study.csv")));
+  CHECK(sweep(dir, "-o " + dir.path("out") + " --case 4").exit_status == 2);
+  const test::ProgramResult rest = test::run_program(std::string(ISOSID_SWEEP_EXE) + " " + dir.path("speeds.study.toml") + " -o " + dir.path("out"));
+  REQUIRE(rest.exit_status == 0);
+  CHECK_THAT(rest.err, Contains("4 cases, 3 to run"));
+}
+
+#ifdef ISOSID_MPIRUN
+TEST_CASE("sweep: mpirun -np 2 gives the table of one process", "[sweep][mpi]") {
+  const test::ScratchDir dir("sweep_mpi");
+  write_study(dir, "[-0.03, -0.05, -0.07, -0.1, -0.15]");
+  REQUIRE(sweep(dir, "-o " + dir.path("one")).exit_status == 0);
+  // OpenMPI refuses root unless told (CI runs as root)
+  const test::ProgramResult r = test::run_program("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " + std::string(ISOSID_MPIRUN) +
+                                                  " -np 2 " + ISOSID_SWEEP_EXE + " " + dir.path("speeds.study.toml") + " -o " + dir.path("two"));
+  INFO(r.err);
+  REQUIRE(r.exit_status == 0);
+  CHECK_THAT(r.err, Contains("10 cases, 10 to run on 2 ranks"));
+  CHECK(results_of(dir.path("two/study.csv")) == results_of(dir.path("one/study.csv")));
+}
+#endif
