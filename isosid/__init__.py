@@ -32,6 +32,7 @@ from ._isosid import ComputationError, InputError  # noqa: E402
 from ._isosid import version as _version  # noqa: E402
 from .results import Result, read_results  # noqa: E402
 from .runs import run, toml_value  # noqa: E402
+from .studies import Study, read_study  # noqa: E402
 
 __version__ = _version().split()[1]
-__all__ = ["run", "read_results", "Result", "InputError", "ComputationError", "toml_value"]
+__all__ = ["run", "read_results", "read_study", "Result", "Study", "InputError", "ComputationError", "toml_value"]

@@ -17,6 +17,7 @@ import isosid
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MODELS = os.path.join(ROOT, "models")
 RUN = os.environ.get("ISOSID_RUN", os.path.join(ROOT, "build", "runtime", "isosid-run"))
+SWEEP = os.environ.get("ISOSID_SWEEP", os.path.join(ROOT, "build", "sweep", "isosid-sweep"))
 FASTER = [0.0, -0.2, 0.0]
 
 
@@ -141,6 +142,21 @@ def test_results_as_a_table(scene_a, tmp_path):
     assert again.contacts["impact"].peak_force_n == r.contacts["impact"].peak_force_n
     with pytest.raises(AttributeError, match="no figure or series 'nope'"):
         r.contacts["impact"].nope
+
+
+def test_a_studys_table_and_cases(scene_a, tmp_path):
+    (tmp_path / "s.study.toml").write_text(
+        'scene = "sphere_hertz.scene.toml"\ncollect = ["contacts.impact.peak_force_n"]\n'
+        '[[parameter]]\nkey = "flexible_body.0.velocity.1"\nvalues = [-0.1, -0.2, "x"]\n')
+    done = subprocess.run([SWEEP, "-q", str(tmp_path / "s.study.toml"), "-o", str(tmp_path / "study")], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    study = isosid.read_study(tmp_path / "study")
+    assert [r["status"] for r in study.rows] == ["completed", "completed", "bad input"]
+    assert study.rows[2]["exit_class"] == 2
+    df = study.to_dataframe()
+    assert df.loc[1, "flexible_body.0.velocity.1"] == "-0.2"  # text: the column also holds "x"
+    assert df.loc[1, "contacts.impact.peak_force_n"] == study.case(1).contacts["impact"].peak_force_n
+    assert np.isnan(df.loc[2, "contacts.impact.peak_force_n"])  # a refused case collected nothing
 
 
 def test_python_values_written_as_toml():
