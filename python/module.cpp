@@ -12,6 +12,7 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,14 @@ namespace {
 /// KeyboardInterrupt), keeping that exception to raise after the results are written.
 class PythonSignals {
 public:
+  PythonSignals() = default;
+  PythonSignals(const PythonSignals&) = delete;
+  PythonSignals& operator=(const PythonSignals&) = delete;
+  ~PythonSignals() {  // destroyed with the interpreter held (after the run's release of it)
+    Py_XDECREF(type_);
+    Py_XDECREF(value_);
+    Py_XDECREF(trace_);
+  }
   bool stop_requested() {
     if (raised_) return true;
     const auto now = std::chrono::steady_clock::now();
@@ -42,7 +51,7 @@ public:
   void raise_pending() {
     if (!raised_) return;
     raised_ = false;
-    PyErr_Restore(type_, value_, trace_);
+    PyErr_Restore(std::exchange(type_, nullptr), std::exchange(value_, nullptr), std::exchange(trace_, nullptr));
     throw py::error_already_set();
   }
 
@@ -61,10 +70,16 @@ py::dict run_scene(const std::string& scene_file, const std::string& output, con
   run::Scene scene = run::read_scene_file(scene_file, overrides);
   PythonSignals signals;
   run::RunResult result;
-  {
+  try {
     py::gil_scoped_release release;
+    // runs from several Python threads take turns: libhdf5 (Debian's, serial) is not thread-safe
+    static std::mutex one_run_at_a_time;
+    const std::lock_guard<std::mutex> turn(one_run_at_a_time);
     run::RunFolder folder(output, scene);
     result = run::run_scene(std::move(scene), folder, {!progress, [&signals] { return signals.stop_requested(); }});
+  } catch (...) {
+    signals.raise_pending();  // a Ctrl-C during the run wins over a failure it caused
+    throw;
   }
   signals.raise_pending();
   py::dict out;

@@ -40,8 +40,10 @@ struct CaseWork {
 };
 
 /// Runs the cases numbered in `todo` (rank 0's list; the other ranks' is ignored) over all
-/// ranks. On rank 0, `on_row` receives every case's row as it is written (its own and the
-/// other ranks'); it returns once every rank has stopped.
+/// ranks. On rank 0, `on_row` receives every case's row: its own as each ends, the other ranks'
+/// (sent with their next request) between its cases and after its last; it returns once every
+/// rank has stopped. A rank a signal reached stops taking cases, and a case it interrupted goes
+/// back to the queue.
 void run_cases(const Ranks& ranks, const CaseWork& work, const std::vector<int>& todo, const std::function<void(const nlohmann::json&)>& on_row);
 
 }  // namespace isosid::sweep

@@ -6,6 +6,7 @@
 #include "isosid/common/cli_guard.hpp"
 #include "isosid/common/cli_parse.hpp"
 #include "isosid/common/progress_line.hpp"
+#include "isosid/common/toml_override.hpp"
 #include "isosid/format/error.hpp"
 #include "study_table.hpp"
 
@@ -59,17 +60,18 @@ private:
   int fd_ = -1;
 };
 
-/// Rank 0's record of the study: every case's row, the table rewritten as rows arrive, and
-/// the progress line.
+/// Rank 0's record of the study: every case's row, the table rewritten as rows arrive (at most
+/// every two seconds, and at the end: rewriting it is linear in the rows), and the progress line.
 class StudyRecord {
 public:
   StudyRecord(const sweep::Study& study, const std::vector<sweep::Case>& cases, std::string dir, std::vector<std::string> collect, bool quiet)
       : study_(study), total_(cases.size()), dir_(std::move(dir)), collect_(std::move(collect)), quiet_(quiet) {}
   void add(const nlohmann::json& row, bool run_now) {
     rows_[row["case"].get<int>()] = row;
-    if (run_now) ++run_now_;
-    write();
-    if (quiet_ || !run_now) return;
+    dirty_ = true;
+    if (!run_now) return;
+    if (std::chrono::steady_clock::now() - written_ > std::chrono::seconds(2)) write();
+    if (quiet_) return;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     const double fraction = double(rows_.size()) / double(total_);
     char text[160];
@@ -77,7 +79,11 @@ public:
     const std::string left = common::ProgressLine::time_left(fraction, elapsed);
     line_.show(left.empty() ? text : std::string(text) + ", " + left);
   }
-  void finish() { line_.finish(); }
+  /// Writes the table if rows arrived since it was last written, and ends the progress line.
+  void finish() {
+    if (dirty_) write();
+    line_.finish();
+  }
   std::size_t rows() const { return rows_.size(); }
   std::size_t total() const { return total_; }
   int count(const char* status) const {
@@ -85,13 +91,22 @@ public:
     for (const auto& [index, row] : rows_) n += row["status"] == status;
     return n;
   }
-  int run_now() const { return run_now_; }
+  /// The first few cases without a row, as "3, 17, 20 ...".
+  std::string missing() const {
+    std::string out;
+    int shown = 0;
+    for (std::size_t i = 0; i < total_ && shown < 5; ++i)
+      if (!rows_.count(int(i))) out += (shown++ ? ", " : "") + std::to_string(i);
+    return out + (total_ - rows_.size() > 5 ? " ..." : "");
+  }
 
 private:
   void write() {
     std::vector<nlohmann::json> rows;
     for (const auto& [index, row] : rows_) rows.push_back(row);
-    sweep::write_table(dir_, study_, collect_, rows);
+    if (!rows.empty()) sweep::write_table(dir_, study_, collect_, rows);
+    dirty_ = false;
+    written_ = std::chrono::steady_clock::now();
   }
   const sweep::Study& study_;
   std::size_t total_;
@@ -99,10 +114,20 @@ private:
   std::vector<std::string> collect_;
   bool quiet_;
   std::map<int, nlohmann::json> rows_;
-  int run_now_ = 0;
+  bool dirty_ = false;
   common::ProgressLine line_{"isosid-sweep"};
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), written_{};
 };
+
+/// A row found in the study folder, checked against the case the study file plans now: a
+/// folder holds one study, and a row made with other values must not pass for this one's.
+void check_row_matches(const nlohmann::json& row, const sweep::Case& c, const std::string& dir) {
+  for (const common::TomlOverride& s : c.settings)
+    if (row["settings"].value(s.key, std::string()) != s.value)
+      throw format::InputError(dir, "cases", "case " + std::to_string(c.index) + " there was run with " + s.key + " = " +
+                                                 row["settings"].value(s.key, std::string("(unset)")) + ", the study file now says " + s.value +
+                                                 ": a study folder holds one study (give another -o)");
+}
 
 int run_study(const sweep::Ranks& ranks, const std::string& study_file, std::string out_dir, int only_case, bool quiet) {
   const sweep::Study study = sweep::read_study_file(study_file);
@@ -118,6 +143,11 @@ int run_study(const sweep::Ranks& ranks, const std::string& study_file, std::str
   if (only_case >= 0) {  // one case of a job array: its folder and row, no table
     fs::create_directories(out_dir);
     const sweep::Case& c = cases[std::size_t(only_case)];
+    if (const auto done = sweep::read_row(out_dir, only_case)) {
+      check_row_matches(*done, c, out_dir);
+      if (!quiet) std::fprintf(stderr, "isosid-sweep: case %d is done (its row.json); nothing to run\n", only_case);
+      return 0;
+    }
     const std::string problem = sweep::case_input_problem(study, c);
     const nlohmann::json row = problem.empty() ? sweep::run_case(study, c, sweep::case_folder(out_dir, only_case), collect, work.stop_requested)
                                                : sweep::refused_case(c, problem);
@@ -137,6 +167,7 @@ int run_study(const sweep::Ranks& ranks, const std::string& study_file, std::str
     // every case checked before any runs: one refused is recorded as bad input, the rest go on
     for (const sweep::Case& c : cases) {
       if (const auto row = sweep::read_row(out_dir, c.index)) {
+        check_row_matches(*row, c, out_dir);
         record->add(*row, false);  // done by an earlier start of the study: never run twice
         continue;
       }
@@ -163,6 +194,9 @@ int run_study(const sweep::Ranks& ranks, const std::string& study_file, std::str
     std::fprintf(stderr, "isosid-sweep: interrupted by %s; the same command resumes the study\n", strsignal(g_stop_signal));
     return 128 + int(g_stop_signal);
   }
+  if (record->rows() < record->total())  // a rank stopped early (a signal of its own): never a silent gap
+    throw format::ComputationError(std::to_string(record->total() - record->rows()) + " cases have no row (" + record->missing() +
+                                   "): a rank stopped before running them; the same command runs them");
   return 0;
 }
 

@@ -125,18 +125,21 @@ std::vector<Case> plan_cases(const Study& study) {
   std::vector<Case> cases;
   const std::size_t np = study.parameters.size();
   if (study.sampling == Sampling::LatinHypercube) {
-    // one point in each of `samples` equal strata per parameter, strata paired by seeded shuffles
+    // one point in each of `samples` equal strata per parameter, strata paired by seeded
+    // shuffles. The engine's raw numbers are the same everywhere (std::mt19937_64 is specified
+    // to the bit); the standard library's distributions and shuffle are not, so both are here.
     std::mt19937_64 random(study.seed);
-    std::uniform_real_distribution<double> within(0.0, 1.0);
+    const auto unit = [&random] { return double(random() >> 11) * 0x1.0p-53; };  // [0, 1)
     const int n = study.samples;
     std::vector<std::vector<std::string>> columns(np);
     for (std::size_t j = 0; j < np; ++j) {
       const Parameter& p = study.parameters[j];
       std::vector<int> strata(std::size_t(n), 0);
       std::iota(strata.begin(), strata.end(), 0);
-      std::shuffle(strata.begin(), strata.end(), random);
+      for (std::size_t i = strata.size(); i > 1; --i)  // Fisher-Yates
+        std::swap(strata[i - 1], strata[std::size_t(unit() * double(i))]);
       for (int i = 0; i < n; ++i) {
-        const double f = (strata[std::size_t(i)] + within(random)) / n;
+        const double f = (strata[std::size_t(i)] + unit()) / n;
         const double v = p.log_scale ? std::exp(std::log(p.lo) + f * (std::log(p.hi) - std::log(p.lo))) : p.lo + f * (p.hi - p.lo);
         columns[j].push_back(exact_text(v));
       }

@@ -468,7 +468,8 @@ AdaptiveRun::Result AdaptiveRun::run(const std::function<bool()>& stop_requested
       if (accepted_now) {
         // the next impact starts from the width asked for next, relative to this one's estimate
         // (none: from the width itself)
-        width_per_estimate[std::size_t(k)] = estimated_width > 0 ? d.next_width / estimated_width : 0.0;
+        // (a graze teaches nothing: its estimate, from a glancing speed, would scale the next)
+        if (d.learned) width_per_estimate[std::size_t(k)] = estimated_width > 0 ? d.next_width / estimated_width : 0.0;
         impact_over = run.over;
         accepted = std::move(run);
         break;

@@ -48,6 +48,7 @@ IntervalDecision decide_interval(double utilization, bool beyond, double width) 
     d.acceptable = true;
     d.next_width = width;
     d.reason = "nothing loaded (the surfaces grazed)";
+    d.learned = false;
   } else if (utilization > kMaxUtilization) {
     d.next_width = toward_target;
     d.reason = "region too narrow";

@@ -28,6 +28,7 @@ struct IntervalDecision {
   bool acceptable = false;
   double next_width = 0;
   std::string reason;
+  bool learned = true;  ///< false for a graze: the next impact's width is not learned from it
 };
 IntervalDecision decide_interval(double utilization, bool beyond, double width);
 

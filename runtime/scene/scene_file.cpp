@@ -494,10 +494,19 @@ Scene read_scene_file(const std::string& path, const std::vector<common::TomlOve
       scene.reference["final_velocity_z_m_s"] = v.z();
     }
     // the file's values belong to the file's scene: a run with other values set over it compares
-    // only what it sets under reference (the Hertz source follows the run by itself)
-    const bool sets_reference = std::any_of(overrides.begin(), overrides.end(),
-                                            [](const common::TomlOverride& o) { return o.key.rfind("reference.", 0) == 0; });
-    if (!overrides.empty() && !sets_reference) scene.reference.clear();
+    // only the reference values it sets itself (the Hertz source follows the run by itself)
+    if (!overrides.empty()) {
+      std::set<std::string> set_keys;
+      bool whole_table = false;
+      for (const common::TomlOverride& o : overrides) {
+        whole_table = whole_table || o.key == "reference";
+        if (o.key.rfind("reference.", 0) == 0) set_keys.insert(o.key.substr(10, o.key.find('.', 10) - 10));
+      }
+      for (auto it = scene.reference.begin(); !whole_table && it != scene.reference.end();) {
+        const bool velocity_part = it->first.rfind("final_velocity_", 0) == 0 && it->first != "final_angular_velocity_rad_s";
+        it = set_keys.count(velocity_part ? "final_velocity_m_s" : it->first) ? std::next(it) : scene.reference.erase(it);
+      }
+    }
   }
   scene.adaptive.coarse_integrator = scene.simulation.integrator;  // unless [adaptive] says otherwise
   scene.adaptive.coarse_max_step = scene.simulation.max_step;

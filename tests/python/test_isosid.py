@@ -7,6 +7,7 @@ import shutil
 import signal
 import subprocess
 import threading
+import time
 
 import h5py
 import numpy as np
@@ -115,17 +116,28 @@ def test_a_failed_computation_raises_computation_error_with_its_results(scene_a,
 
 
 def test_ctrl_c_stops_the_run_at_a_step_and_keeps_its_results(scene_a, tmp_path):
-    assert cli(scene_a, tmp_path / "sid").returncode == 0  # the SID built, so that the signal lands in the run
-    # a run of several seconds (steps of at most 10 ns), interrupted after 0.5 s
+    assert cli(scene_a, tmp_path / "sid").returncode == 0  # the SID built beforehand
+    # a run of several seconds (steps of at most 10 ns); Ctrl-C once it is under way (its
+    # summary.json says "running"), not while it still reads its inputs
     settings = {"simulation.max_step": 1e-8, "simulation.end_time": 2e-3}
-    timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
-    timer.start()
+    out = tmp_path / "py"
+
+    def interrupt_once_running():
+        for _ in range(3000):
+            if (out / "summary.json").exists():
+                time.sleep(0.2)
+                os.kill(os.getpid(), signal.SIGINT)
+                return
+            time.sleep(0.01)
+
+    watcher = threading.Thread(target=interrupt_once_running)
+    watcher.start()
     try:
         with pytest.raises(KeyboardInterrupt):
-            isosid.run(scene_a, output=tmp_path / "py", set=settings, progress=False)
+            isosid.run(scene_a, output=out, set=settings, progress=False)
     finally:
-        timer.cancel()
-    r = isosid.read_results(tmp_path / "py")
+        watcher.join()
+    r = isosid.read_results(out)
     assert r.status == "interrupted"
     assert 0 < r.time[-1] < 2e-3
 

@@ -59,4 +59,6 @@ TEST_CASE("adaptive: Alg. 2's decision after a try, in each band of the utilizat
   CHECK(graze.acceptable);
   CHECK(graze.next_width == w);
   CHECK(graze.reason == "nothing loaded (the surfaces grazed)");
+  CHECK_FALSE(graze.learned);  // and the next impact's width is not scaled from its glancing estimate
+  CHECK(fits.learned);
 }

@@ -30,7 +30,7 @@ TEST_CASE("provenance: the SID, summary.json and results.h5 name the version, th
 
   const std::string scene = dir.path("s.scene.toml");
   std::ofstream(scene) << test::replace(test::golden_impact_scene(sid), "end_time = 100e-6", "end_time = 5e-6")
-                         << "[reference]\npeak_force_n = 1.0\n";
+                         << "[reference]\npeak_force_n = 1.0\ncontact_time_s = 1e-5\n";
   const std::string out = dir.path("out of run");  // an argument the command line must quote
   const auto run = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + scene + " -o '" + out + "'");
   REQUIRE(run.exit_status == 0);
@@ -65,4 +65,11 @@ TEST_CASE("provenance: the SID, summary.json and results.h5 name the version, th
   CHECK(s["end_time_s"].get<double>() == 4e-6);
   CHECK(s["reference"].empty());  // the file's reference values are the file's scene's
   CHECK(format::h5::Reader(faster + "/results.h5").strings("/provenance/scene_overrides").size() == 2);
+  // a reference value set with the run's values is compared, the file's others are not
+  const auto own = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + scene + " -o " + dir.path("own") +
+                                     " --set simulation.end_time=4e-6 --set reference.peak_force_n=2.0");
+  REQUIRE(own.exit_status == 0);
+  const nlohmann::json o = nlohmann::json::parse(std::ifstream(dir.path("own/summary.json")))["reference"];
+  CHECK(o["peak_force_n"]["reference"] == 2.0);
+  CHECK_FALSE(o.contains("contact_time_s"));
 }

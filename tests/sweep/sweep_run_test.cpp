@@ -115,7 +115,7 @@ TEST_CASE("sweep: a study killed halfway resumes, runs no case twice, and its ta
   // kill -9 once three cases have their rows
   const std::string out = dir.path("killed");
   const auto killed = test::run_program("bash -c '" + std::string(ISOSID_SWEEP_EXE) + " -q " + dir.path("speeds.study.toml") + " -o " + out +
-                                        " & pid=$!; until [ $(ls " + out + "/cases/*/row.json 2>/dev/null | wc -l) -ge 3 ]; do sleep 0.01; done; "
+                                        " & pid=$!; for i in $(seq 3000); do [ $(ls " + out + "/cases/*/row.json 2>/dev/null | wc -l) -ge 3 ] && break; sleep 0.01; done; "
                                         "kill -9 $pid; wait $pid'");
   CHECK(killed.exit_status == 128 + 9);
   std::vector<std::pair<std::string, fs::file_time_type>> before;
@@ -141,6 +141,15 @@ TEST_CASE("sweep: one case of a job array, then the study around it", "[sweep]")
   const test::ProgramResult rest = test::run_program(std::string(ISOSID_SWEEP_EXE) + " " + dir.path("speeds.study.toml") + " -o " + dir.path("out"));
   REQUIRE(rest.exit_status == 0);
   CHECK_THAT(rest.err, Contains("4 cases, 3 to run"));
+  const test::ProgramResult again = test::run_program(std::string(ISOSID_SWEEP_EXE) + " " + dir.path("speeds.study.toml") + " -o " +
+                                                      dir.path("out") + " --case 3");
+  CHECK(again.exit_status == 0);
+  CHECK_THAT(again.err, Contains("case 3 is done"));
+  // a study file changed under its folder: its old rows must not pass for the new cases
+  write_study(dir, "[-0.05, -0.12]");
+  const test::ProgramResult changed = sweep(dir, "-o " + dir.path("out"));
+  CHECK(changed.exit_status == 2);
+  CHECK_THAT(changed.err, Contains("case 2 there was run with flexible_body.0.velocity.1 = -0.1, the study file now says -0.12"));
 }
 
 #ifdef ISOSID_MPIRUN
