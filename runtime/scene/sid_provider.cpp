@@ -2,6 +2,7 @@
 #include "scene/sid_provider.hpp"
 
 #include "isosid/common/sha256.hpp"
+#include "isosid/common/version.hpp"
 #include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene/prep_process.hpp"
@@ -21,13 +22,18 @@ namespace fs = std::filesystem;
 
 namespace {
 /// Holds `<sid>.lock` beside a SID that may be (re)built while it is checked, built and read:
-/// two runs sharing a model (a study's ranks, two isosid-run started together) take turns, so
-/// that neither reads the other's half-decided SID nor builds it a second time.
+/// runs sharing a model (a study's ranks, two isosid-run started together) read it side by side
+/// (a shared lock) and build it one at a time (exclusive), so that none reads another's
+/// half-decided SID or builds it a second time.
 class SidLock {
 public:
-  explicit SidLock(const std::string& sid_file) {
+  SidLock(const std::string& sid_file, bool exclusive) {
     fd_ = ::open((sid_file + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ >= 0) ::flock(fd_, LOCK_EX);  // a folder we cannot write to: no lock, and no build there either
+    if (fd_ >= 0) ::flock(fd_, exclusive ? LOCK_EX : LOCK_SH);  // a folder we cannot write to: no lock, and no build there either
+  }
+  /// From shared to exclusive, to build: not atomic, so what decided the build must be checked again.
+  void make_exclusive() {
+    if (fd_ >= 0) ::flock(fd_, LOCK_EX);
   }
   ~SidLock() {
     if (fd_ >= 0) ::close(fd_);
@@ -75,17 +81,27 @@ std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
     const std::size_t index = sids.size();  // flexible_body[index] of the scene
     std::error_code ec;
     std::optional<SidLock> lock;  // while this body's SID is checked, rebuilt and read
-    if (!b.model_file.empty() && !b.adaptive) {  // an adaptive body's SIDs come from the run's cache, built for their request
-      lock.emplace(b.sid_file);
-      const bool stale = !fs::exists(b.sid_file, ec) || fs::last_write_time(b.sid_file, ec) < fs::last_write_time(b.model_file, ec);
-      if (stale) run_prep(b.model_file, b.sid_file, {}, quiet, "");
+    const bool from_model = !b.model_file.empty() && !b.adaptive;  // an adaptive body's SIDs come from the run's cache
+    const auto stale = [&] {
+      return !fs::exists(b.sid_file, ec) || fs::last_write_time(b.sid_file, ec) < fs::last_write_time(b.model_file, ec);
+    };
+    if (from_model) {
+      lock.emplace(b.sid_file, false);
+      if (stale()) {
+        lock->make_exclusive();
+        if (stale()) run_prep(b.model_file, b.sid_file, {}, quiet, "");
+      }
     }
     sids.push_back(format::read_sid(b.sid_file, sid_read_options(scene)));
-    if (!b.model_file.empty() && !b.adaptive && !built_from_model(sids.back(), b, scene, index)) {
+    // (a run that finds it built from another model version or without its interface points
+    // rebuilds it under the exclusive lock and reads its own build)
+    if (from_model && !built_from_model(sids.back(), b, scene, index)) {
+      lock->make_exclusive();
       run_prep(b.model_file, b.sid_file, {}, quiet, " (the SID there was built from another version of the model)");
       sids.back() = format::read_sid(b.sid_file, sid_read_options(scene));
     }
-    if (!b.model_file.empty() && !b.adaptive && lacks_interface_coverage(sids.back())) {
+    if (from_model && lacks_interface_coverage(sids.back())) {
+      lock->make_exclusive();
       run_prep(b.model_file, b.sid_file, {}, quiet, " (the SID there does not record which contact points its interface covers)");
       sids.back() = format::read_sid(b.sid_file, sid_read_options(scene));
     }
@@ -93,12 +109,20 @@ std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
   return sids;
 }
 
-format::Sid rebuild_sid(const Scene& scene, const BodySpec& body, double contact_radius, bool quiet) {
-  const SidLock lock(body.sid_file);
+SizedSid sized_sid(const Scene& scene, const BodySpec& body, double contact_radius, bool quiet) {
   char radius[32];
   std::snprintf(radius, sizeof radius, "%.17g", contact_radius);
-  run_prep(body.model_file, body.sid_file, {"--contact-radius", radius}, quiet, std::string(" for a contact radius of ") + radius);
-  return format::read_sid(body.sid_file, sid_read_options(scene));
+  const std::string key = common::sha256_hex(common::sha256_file(body.model_file) + "\n" + radius + "\n" + common::version_line("isosid-prep"));
+  const fs::path sid(body.sid_file);
+  const fs::path cache = sid.parent_path() / ".isosid-cache";
+  std::string stem = sid.filename().string();
+  stem = stem.substr(0, stem.find('.'));
+  const std::string file = (cache / (stem + "-" + key.substr(0, 16) + ".sid.h5")).string();
+  std::error_code ec;
+  fs::create_directories(cache, ec);
+  const SidLock lock(file, true);
+  if (!fs::exists(file, ec)) run_prep(body.model_file, file, {"--contact-radius", radius}, quiet, std::string(" for a contact radius of ") + radius);
+  return {format::read_sid(file, sid_read_options(scene)), file};
 }
 
 }  // namespace isosid::run

@@ -16,8 +16,17 @@ format::ReadOptions sid_read_options(const Scene& scene);
 /// The SIDs of the scene's flexible bodies, in order; stale or missing ones are rebuilt first.
 std::vector<format::Sid> load_sids(const Scene& scene, bool quiet);
 
-/// Rebuilds a body's SID from its model file for an expected contact radius (m; the model's
-/// [contact_resolution]) and reads what the scene needs of it.
-format::Sid rebuild_sid(const Scene& scene, const BodySpec& body, double contact_radius, bool quiet);
+/// A body's SID built from its model file for an expected contact radius (m; the model's
+/// [contact_resolution]), and the file it was read from.
+struct SizedSid {
+  format::Sid sid;
+  std::string file;
+};
+
+/// The SID of `body`'s model sized for `contact_radius`, from a cache beside the scene's SID
+/// (`.isosid-cache/<SID name>-<key>.sid.h5`, the key a hash of the model's content, the radius
+/// and the program version): built once by whichever run asks first (under a lock), read by
+/// every later one. The SID the scene names is left as it is.
+SizedSid sized_sid(const Scene& scene, const BodySpec& body, double contact_radius, bool quiet);
 
 }  // namespace isosid::run

@@ -9,7 +9,7 @@
 
 namespace isosid::run {
 
-std::vector<std::string> fit_contact_resolution(const Scene& scene, std::vector<format::Sid>& sids, bool quiet) {
+std::vector<std::string> fit_contact_resolution(Scene& scene, std::vector<format::Sid>& sids, bool quiet) {
   // the finest estimated contact radius of each body over its contacts
   std::map<std::string, double> wanted;
   {
@@ -24,7 +24,7 @@ std::vector<std::string> fit_contact_resolution(const Scene& scene, std::vector<
   }
   std::vector<std::string> rebuilt;
   std::size_t next_sid = 0;
-  for (const BodySpec& body : scene.bodies) {
+  for (BodySpec& body : scene.bodies) {
     if (body.rigid) continue;
     format::Sid& sid = sids[next_sid++];
     const auto radius = wanted.find(body.name);
@@ -32,7 +32,9 @@ std::vector<std::string> fit_contact_resolution(const Scene& scene, std::vector<
     const double built_for = sid.discretization->contact_radius;
     // round-off of the estimate (its mass and curvatures come from the SID) must not rebuild
     if (radius->second >= (1 - 1e-6) * built_for && radius->second <= 1.25 * built_for) continue;
-    sid = rebuild_sid(scene, body, radius->second, quiet);
+    SizedSid sized = sized_sid(scene, body, radius->second, quiet);
+    sid = std::move(sized.sid);
+    body.sid_file = sized.file;
     rebuilt.push_back(body.name);
   }
   return rebuilt;

@@ -1,8 +1,9 @@
 // Contact elements that fit the scene's impacts: a body whose model sizes its contact
-// elements from an expected contact radius ([contact_resolution], smallest = "contact") is
-// rebuilt for the Hertz estimate of this scene (impact_estimate) when its SID was made for a
-// larger radius (too coarse) or for one over 25 % smaller (needlessly fine). The rebuilt SID
-// records the radius, so the next run of the scene reuses it.
+// elements from an expected contact radius ([contact_resolution], smallest = "contact") runs on
+// a SID built for the Hertz estimate of this scene (impact_estimate) when the scene's SID was
+// made for a larger radius (too coarse) or for one over 25 % smaller (needlessly fine). That SID
+// comes from a cache beside the scene's (sid_provider's sized_sid): built once per radius, the
+// scene's own SID untouched, so runs and a study's cases at other speeds never rebuild in place.
 #pragma once
 #include "isosid/format/sid.hpp"
 #include "scene/scene.hpp"
@@ -12,8 +13,9 @@
 
 namespace isosid::run {
 
-/// Rebuilds (through isosid-prep) the SIDs of `scene`'s flexible bodies, in `sids`, whose
-/// contact elements do not fit the estimated impacts; returns the names of the bodies rebuilt.
-std::vector<std::string> fit_contact_resolution(const Scene& scene, std::vector<format::Sid>& sids, bool quiet);
+/// Replaces, in `sids`, the SIDs of `scene`'s flexible bodies whose contact elements do not fit
+/// the estimated impacts by SIDs sized for them, and points those bodies' sid_file at them (the
+/// run's provenance then names the SID it ran on); returns the names of the bodies refitted.
+std::vector<std::string> fit_contact_resolution(Scene& scene, std::vector<format::Sid>& sids, bool quiet);
 
 }  // namespace isosid::run

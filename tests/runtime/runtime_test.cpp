@@ -476,8 +476,8 @@ TEST_CASE("scene A: sphere on sphere (Hertz) with the Craig-Bampton sphere", "[r
 
 TEST_CASE("a sphere sized from its contact radius is rebuilt for the scene's impact; a contact still closed at the end is flagged", "[runtime][contact]") {
   // scene A at half the speed: Hertz gives a = 0.127 mm instead of the model's 0.168 mm, so
-  // isosid-run rebuilds the SID with elements of a/8 (the SID records the radius it was sized
-  // for) and a second run reuses it
+  // isosid-run runs on a SID built with elements of a/8 (the SID records the radius it was sized
+  // for), kept in a cache beside the scene's own SID, which stays as it is; a second run reuses it
   const test::ScratchDir dir("contact-fit");
   test::copy_model_file(dir, "sphere_axisym.model.toml");
   std::ifstream in(std::string(ISOSID_MODELS_DIR) + "/sphere_hertz.scene.toml");
@@ -494,15 +494,22 @@ TEST_CASE("a sphere sized from its contact radius is rebuilt for the scene's imp
   CHECK(slow["warnings"][0].get<std::string>().find("'impact' is still closed at the end of the run") != std::string::npos);
   CHECK(slow["contacts"][0]["closed_at_end"].get<bool>());
   CHECK(slow["reference"]["rebound_velocity_m_s"]["value"].is_null());
-  const format::Sid sid = format::read_sid(dir.path("sphere_axisym.sid.h5"));
+  // the SID the run used, as its provenance says (inputs: scene, model, SID)
+  const json& ran_on = slow["provenance"]["inputs"][2];
+  REQUIRE(ran_on["role"] == "sid sphere");
+  const std::string used = ran_on["path"];
+  CHECK(used.find("/.isosid-cache/sphere_axisym-") != std::string::npos);
+  const format::Sid sid = format::read_sid(used);
   REQUIRE(sid.discretization);
-  // the summary's estimate comes from the rebuilt SID, whose mass and curvature differ from the
+  // the summary's estimate comes from the refitted SID, whose mass and curvature differ from the
   // first one's in the last digits (measured 1e-10)
   CHECK(sid.discretization->contact_radius == Approx(hertz["contact_radius_m"].get<double>()).epsilon(1e-8));
-  const auto built = std::filesystem::last_write_time(dir.path("sphere_axisym.sid.h5"));
-  // run on past the release: the same SID serves, nothing to warn about, the rebound is there
+  CHECK(format::read_sid(dir.path("sphere_axisym.sid.h5")).discretization->contact_radius == Approx(0.168e-3).epsilon(1e-6));  // untouched
+  const auto built = std::filesystem::last_write_time(used);
+  // run on past the release: the same cached SID serves, nothing to warn about, the rebound is there
   const json whole = run_scene(dir, replace(scene, "end_time = 95e-6", "end_time = 110e-6"), 0);
-  CHECK(std::filesystem::last_write_time(dir.path("sphere_axisym.sid.h5")) == built);
+  CHECK(whole["provenance"]["inputs"][2]["path"] == used);
+  CHECK(std::filesystem::last_write_time(used) == built);
   CHECK(whole["warnings"].empty());
   CHECK_FALSE(whole["contacts"][0]["closed_at_end"].get<bool>());
   CHECK(whole["reference"]["rebound_velocity_m_s"]["value"].get<double>() == Approx(0.05).epsilon(1e-3));

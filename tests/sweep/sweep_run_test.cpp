@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 using namespace isosid;
@@ -164,5 +165,34 @@ TEST_CASE("sweep: mpirun -np 2 gives the table of one process", "[sweep][mpi]") 
   REQUIRE(r.exit_status == 0);
   CHECK_THAT(r.err, Contains("10 cases, 10 to run on 2 ranks"));
   CHECK(results_of(dir.path("two/study.csv")) == results_of(dir.path("one/study.csv")));
+}
+
+TEST_CASE("sweep: cases on 2 ranks build each distinct SID once", "[sweep][mpi]") {
+  // scene A's sphere sizes its contact elements from each impact's contact radius: 0.05 and
+  // 0.2 m/s need SIDs other than the scene's (made for 0.1 m/s), each wanted by three cases
+  const test::ScratchDir dir("sweep_sids");
+  for (const char* f : {"sphere_hertz.scene.toml", "sphere_axisym.model.toml"})
+    std::filesystem::copy_file(std::string(ISOSID_MODELS_DIR) + "/" + f, dir.path(f));
+  std::ofstream(dir.path("speeds.study.toml")) << "scene = \"sphere_hertz.scene.toml\"\n"
+                                               << "[[parameter]]\nkey = \"flexible_body.0.velocity.1\"\nvalues = [-0.05, -0.2]\n"
+                                               << "[[parameter]]\nkey = \"simulation.end_time\"\nvalues = [120e-6]\n"
+                                               << "[[parameter]]\nkey = \"contact.0.penalty\"\nvalues = [5e18, 2e18, 1e18]\n";
+  const test::ProgramResult r = test::run_program("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ISOSID_PREP=" +
+                                                  std::string(ISOSID_PREP_EXE) + " " + ISOSID_MPIRUN + " -np 2 " + ISOSID_SWEEP_EXE + " " +
+                                                  dir.path("speeds.study.toml") + " -o " + dir.path("out"));
+  INFO(r.err);
+  REQUIRE(r.exit_status == 0);
+  CHECK_THAT(r.err, Contains("6 completed"));
+  std::vector<std::string> built;
+  for (const auto& e : fs::directory_iterator(dir.path(".isosid-cache")))
+    if (e.path().extension() == ".h5") built.push_back(e.path().filename().string());
+  CHECK(built.size() == 2);  // one per speed: the lock lets the first case build, the others read it
+  std::set<std::string> used;
+  for (int i = 0; i < 6; ++i) {
+    const nlohmann::json r = row(dir, "out", i);  // (a temporary's member would dangle in the loop)
+    for (const auto& input : r["inputs"])
+      if (input["role"] == "sid sphere") used.insert(input["path"].get<std::string>());
+  }
+  CHECK(used.size() == 2);
 }
 #endif
