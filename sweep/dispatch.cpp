@@ -6,9 +6,12 @@
 
 #include <mpi.h>
 
+#include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <deque>
+#include <mutex>
 #include <thread>
 
 namespace isosid::sweep {
@@ -26,67 +29,94 @@ nlohmann::json report(int index, const nlohmann::json& row, bool stopping) {
   return {{"case", index}, {"outcome", "row"}, {"row", row}, {"stopping", stopping}};
 }
 
-/// Rank 0's side: the queue of cases, the other ranks' reports, and their rows, handed to the
-/// caller between rank 0's own cases (never from inside a step, where an error would leave a
-/// rank waiting for its answer).
+/// Rank 0's side: the queue of cases and the other ranks' reports, answered by a thread of
+/// its own (every millisecond, sleeping between), so that a rank never waits while rank 0 reads
+/// a SID or writes results; their rows go to rank 0's main thread between its own cases.
 class Dispatcher {
 public:
   Dispatcher(const Ranks& ranks, const CaseWork& work, const std::vector<int>& todo)
-      : work_(work), queue_(todo.begin(), todo.end()), running_(ranks.size() - 1) {}
+      : work_(work), queue_(todo.begin(), todo.end()), running_(ranks.size() - 1) {
+    if (running_ > 0) thread_ = std::thread([this] { answer(); });
+  }
+  ~Dispatcher() {  // after drain(), or on an error of rank 0 (the job is then aborted)
+    quit_ = true;
+    if (thread_.joinable()) thread_.join();
+  }
+  Dispatcher(const Dispatcher&) = delete;
+  Dispatcher& operator=(const Dispatcher&) = delete;
 
   /// The next case for rank 0 itself, or -1.
   int next() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return next_locked();
+  }
+
+  /// The rows the other ranks reported since the last call.
+  std::vector<nlohmann::json> take_rows() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return std::exchange(rows_, {});
+  }
+
+  /// After rank 0's last case: waits for the other ranks, handing their rows on as they come.
+  void drain(const std::function<void(const nlohmann::json&)>& on_row) {
+    for (;;) {
+      for (const nlohmann::json& row : take_rows()) on_row(row);
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (running_ == 0) break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    if (thread_.joinable()) thread_.join();
+    for (const nlohmann::json& row : take_rows()) on_row(row);
+  }
+
+private:
+  int next_locked() {
     if (work_.stop_requested() || queue_.empty()) return -1;
     const int c = queue_.front();
     queue_.pop_front();
     return c;
   }
-  void put_back(int index) { queue_.push_front(index); }
 
-  /// Answers the reports that have arrived, at most every millisecond (called at rank 0's
-  /// steps: a probe costs microseconds, a step of a small run about as much).
-  void serve() {
-    const auto now = std::chrono::steady_clock::now();
-    if (now - last_serve_ < std::chrono::milliseconds(1)) return;
-    last_serve_ = now;
-    for (;;) {
+  /// The thread: answers each report with the next case (or -1: stop) until every other rank
+  /// has been told to stop. The only caller of MPI while it runs (MPI_THREAD_SERIALIZED).
+  void answer() {
+    while (!quit_) {
       int waiting = 0;
       MPI_Status status;
       MPI_Iprobe(MPI_ANY_SOURCE, kReport, MPI_COMM_WORLD, &waiting, &status);
-      if (!waiting) return;
+      if (!waiting) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        continue;
+      }
       int size = 0;
       MPI_Get_count(&status, MPI_CHAR, &size);
       std::string text(std::size_t(size), '\0');
       MPI_Recv(text.data(), size, MPI_CHAR, status.MPI_SOURCE, kReport, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       const nlohmann::json r = nlohmann::json::parse(text);
-      if (r["outcome"] == "row") rows_.push_back(r["row"]);
-      if (r["outcome"] == "interrupted") put_back(r["case"].get<int>());
-      const int assigned = r["stopping"].get<bool>() ? -1 : next();
-      if (assigned < 0) --running_;
+      int assigned = -1;
+      bool done = false;
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (r["outcome"] == "row") rows_.push_back(r["row"]);
+        if (r["outcome"] == "interrupted") queue_.push_front(r["case"].get<int>());
+        assigned = r["stopping"].get<bool>() ? -1 : next_locked();
+        if (assigned < 0) --running_;
+        done = running_ == 0;
+      }
       MPI_Send(&assigned, 1, MPI_INT, status.MPI_SOURCE, kAssign, MPI_COMM_WORLD);
+      if (done) return;
     }
   }
 
-  /// The rows the other ranks reported since the last call.
-  std::vector<nlohmann::json> take_rows() { return std::exchange(rows_, {}); }
-
-  /// After rank 0's last case: answers until every other rank has been told to stop (without
-  /// spinning a core: the others are computing), handing their rows on as they come.
-  void drain(const std::function<void(const nlohmann::json&)>& on_row) {
-    while (running_ > 0) {
-      last_serve_ = {};
-      serve();
-      for (const nlohmann::json& row : take_rows()) on_row(row);
-      if (running_ > 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-  }
-
-private:
   const CaseWork& work_;
+  std::mutex mutex_;  ///< guards the queue, the rows and the count
   std::deque<int> queue_;
   std::vector<nlohmann::json> rows_;
   int running_;  ///< other ranks not yet told to stop
-  std::chrono::steady_clock::time_point last_serve_{};
+  std::atomic<bool> quit_{false};
+  std::thread thread_;
 };
 
 /// Runs case `index` on this rank and writes its row, unless a signal interrupted it.
@@ -101,8 +131,13 @@ nlohmann::json run_one(const CaseWork& work, int index, const std::function<bool
 
 Ranks::Ranks(int& argc, char**& argv) {
   if (!std::getenv("OMPI_COMM_WORLD_SIZE") && !std::getenv("PMI_SIZE")) return;
-  MPI_Init(&argc, &argv);
+  int provided = 0;  // rank 0's dispatcher thread calls MPI while its main thread runs cases
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided);
   mpi_ = true;
+  if (provided < MPI_THREAD_SERIALIZED) {
+    std::fprintf(stderr, "isosid-sweep: this MPI library cannot be called from a second thread (MPI_THREAD_SERIALIZED)\n");
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
@@ -120,12 +155,8 @@ void run_cases(const Ranks& ranks, const CaseWork& work, const std::vector<int>&
   if (ranks.rank() == 0) {
     Dispatcher dispatcher(ranks, work, todo);
     const bool others = ranks.size() > 1;
-    const std::function<bool()> at_step = [&] {
-      if (others) dispatcher.serve();
-      return work.stop_requested();
-    };
     for (int c = dispatcher.next(); c >= 0; c = dispatcher.next()) {
-      const nlohmann::json row = run_one(work, c, at_step);
+      const nlohmann::json row = run_one(work, c, work.stop_requested);
       if (row["status"] != "interrupted") on_row(row);
       for (const nlohmann::json& r : dispatcher.take_rows()) on_row(r);
     }

@@ -1,8 +1,7 @@
 // Running a study's cases on the ranks of an MPI job (mpirun -np N isosid-sweep ...), or in one
 // process without mpirun. Rank 0 hands the cases out one at a time as ranks ask for work
-// (dynamic balancing: cases differ in cost) and runs cases itself, answering requests at every
-// step of its own runs; each rank writes its cases' results and rows (a shared file system),
-// rank 0 the table.
+// (dynamic balancing: cases differ in cost) from a thread of its own, and runs cases itself;
+// each rank writes its cases' results and rows (a shared file system), rank 0 the table.
 #pragma once
 #include "study_file.hpp"
 
