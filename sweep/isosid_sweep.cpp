@@ -200,26 +200,30 @@ int run_study(const sweep::Ranks& ranks, const std::string& study_file, std::str
   return 0;
 }
 
+/// The command line: every rank parses it and reads the same study file.
+int run_command(const sweep::Ranks& ranks, int argc, char** argv) {
+  CLI::App app{"Runs a study: one scene for every case of its parameters, into one table (study.csv, study.h5).", "isosid-sweep"};
+  std::string study_file, out_dir;
+  int only_case = -1;
+  bool quiet = false;
+  app.add_option("study", study_file, "study file (*.study.toml)")->required();
+  app.add_option("-o,--output", out_dir, "study folder (default: out/<study name>)");
+  app.add_option("--case", only_case, "run only case I (from 0), e.g. one task of a Slurm job array; no table")->check(CLI::NonNegativeNumber);
+  app.add_flag("-q,--quiet", quiet, "no progress on stderr");
+  if (auto status = common::parse_command_line(app, argc, argv)) return *status;
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, request_stop);  // the running cases stop at a step
+  return run_study(ranks, study_file, out_dir, only_case, quiet);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   sweep::Ranks ranks(argc, argv);
   const int status = common::run_guarded("isosid-sweep", [&]() -> int {
-    // every rank reads the same study file: only rank 0 reports what is wrong with it
     try {
-    CLI::App app{"Runs a study: one scene for every case of its parameters, into one table (study.csv, study.h5).", "isosid-sweep"};
-    std::string study_file, out_dir;
-    int only_case = -1;
-    bool quiet = false;
-    app.add_option("study", study_file, "study file (*.study.toml)")->required();
-    app.add_option("-o,--output", out_dir, "study folder (default: out/<study name>)");
-    app.add_option("--case", only_case, "run only case I (from 0), e.g. one task of a Slurm job array; no table")->check(CLI::NonNegativeNumber);
-    app.add_flag("-q,--quiet", quiet, "no progress on stderr");
-    if (auto status = common::parse_command_line(app, argc, argv)) return *status;
-    for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, request_stop);  // the running cases stop at a step
-    return run_study(ranks, study_file, out_dir, only_case, quiet);
+      return run_command(ranks, argc, argv);
     } catch (const format::InputError&) {
-      if (ranks.rank() != 0 && !g_study_read) return common::kExitBadInput;
+      if (ranks.rank() != 0 && !g_study_read) return common::kExitBadInput;  // one line, from rank 0, for a bad study file
       throw;
     }
   });
