@@ -10,6 +10,8 @@
 #include "solve/multibody_system.hpp"
 #include "solve/simulation.hpp"
 #include "support/flexible_sphere_pair.hpp"
+#include "support/impact_scene.hpp"
+#include "support/scene_text.hpp"
 #include "support/run_program.hpp"
 
 #include <catch2/catch.hpp>
@@ -298,12 +300,10 @@ TEST_CASE("impact detection: an interrupt in the step where a contact closes sti
   // integrator's root search for that step never runs, so the run itself must compare the
   // gaps it stopped at with what it last reported
   const test::ScratchDir dir("touch_interrupt");
-  std::ofstream(dir.path("s.scene.toml")) << "[simulation]\ndimension = \"axisymmetric\"\nend_time = 1e-4\noutput_interval = 1e-4\n"
-                                          << "[[flexible_body]]\nname = \"sphere\"\nsid = \"" << ISOSID_GOLDEN_DIR
-                                          << "/sphere_small.sid.h5\"\nposition = [0.0, 0.0100001, 0.0]\n"
-                                          << "velocity = [0.0, -0.1, 0.0]\nhigh_modes = \"quasistatic\"\n[[fixed_plane]]\nname = \"ground\"\n"
-                                          << "[[contact]]\nname = \"c\"\nbody = \"sphere\"\nsurface = \"contact\"\ntarget = \"ground\"\n"
-                                          << "penalty = 5e17\n";
+  // the golden sphere's impact with one output interval for the whole run: only the step's
+  // interrupt can end it early
+  std::ofstream(dir.path("s.scene.toml")) << test::replace(test::golden_impact_scene(std::string(ISOSID_GOLDEN_DIR) + "/sphere_small.sid.h5"),
+                                                           "output_interval = 1e-6", "output_interval = 1e-4");
   const run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
   run::Simulation simulation(scene, {format::read_sid(scene.bodies[0].sid_file)});
   struct Observer : TouchObserver {
