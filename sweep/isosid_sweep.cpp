@@ -5,15 +5,11 @@
 #include "dispatch.hpp"
 #include "isosid/common/cli_guard.hpp"
 #include "isosid/common/cli_parse.hpp"
+#include "isosid/common/file_lock.hpp"
 #include "isosid/common/progress_line.hpp"
 #include "isosid/common/toml_override.hpp"
 #include "isosid/format/error.hpp"
 #include "study_table.hpp"
-
-#include <sys/file.h>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <csignal>
@@ -40,25 +36,6 @@ std::string default_output(const std::string& study_file) {
   const std::string name = fs::path(study_file).filename().string();
   return (fs::path("out") / name.substr(0, name.find('.'))).string();
 }
-
-/// Holds the study folder against a second study run into it (not against this job's ranks).
-class FolderLock {
-public:
-  explicit FolderLock(const std::string& dir) {
-    fs::create_directories(dir);
-    fd_ = ::open((fs::path(dir) / ".isosid-sweep.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0 || ::flock(fd_, LOCK_EX | LOCK_NB) != 0)
-      throw format::InputError(dir, "", "another isosid-sweep is running into this folder");
-  }
-  ~FolderLock() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  FolderLock(const FolderLock&) = delete;
-  FolderLock& operator=(const FolderLock&) = delete;
-
-private:
-  int fd_ = -1;
-};
 
 /// Rank 0's record of the study: every case's row, the table rewritten as rows arrive (at most
 /// every two seconds, and at the end: rewriting it is linear in the rows), and the progress line.
@@ -158,11 +135,13 @@ int run_study(const sweep::Ranks& ranks, const std::string& study_file, std::str
     return row["exit_class"].get<int>();
   }
 
-  std::optional<FolderLock> lock;
+  std::optional<common::FileLock> lock;  // the study folder's, against a second study into it (not this job's ranks)
   std::optional<StudyRecord> record;
   std::vector<int> todo;
   if (ranks.rank() == 0) {
-    lock.emplace(out_dir);
+    fs::create_directories(out_dir);
+    lock.emplace((fs::path(out_dir) / ".isosid-sweep.lock").string(), common::FileLock::Mode::ExclusiveOrNone);
+    if (!lock->held()) throw format::InputError(out_dir, "", "another isosid-sweep is running into this folder");
     record.emplace(study, cases, out_dir, collect, quiet);
     // every case checked before any runs: one refused is recorded as bad input, the rest go on
     for (const sweep::Case& c : cases) {

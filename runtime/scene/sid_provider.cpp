@@ -1,16 +1,12 @@
 // SID loading and rebuilding; see sid_provider.hpp.
 #include "scene/sid_provider.hpp"
 
+#include "isosid/common/file_lock.hpp"
 #include "isosid/common/sha256.hpp"
 #include "isosid/common/version.hpp"
 #include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene/prep_process.hpp"
-
-#include <sys/file.h>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -21,30 +17,6 @@ namespace isosid::run {
 namespace fs = std::filesystem;
 
 namespace {
-/// Holds `<sid>.lock` beside a SID that may be (re)built while it is checked, built and read:
-/// runs sharing a model (a study's ranks, two isosid-run started together) read it side by side
-/// (a shared lock) and build it one at a time (exclusive), so that none reads another's
-/// half-decided SID or builds it a second time.
-class SidLock {
-public:
-  SidLock(const std::string& sid_file, bool exclusive) {
-    fd_ = ::open((sid_file + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ >= 0) ::flock(fd_, exclusive ? LOCK_EX : LOCK_SH);  // a folder we cannot write to: no lock, and no build there either
-  }
-  /// From shared to exclusive, to build: not atomic, so what decided the build must be checked again.
-  void make_exclusive() {
-    if (fd_ >= 0) ::flock(fd_, LOCK_EX);
-  }
-  ~SidLock() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  SidLock(const SidLock&) = delete;
-  SidLock& operator=(const SidLock&) = delete;
-
-private:
-  int fd_ = -1;
-};
-
 /// A Craig-Bampton SID from before isosid-prep marked the contact points its interface covers
 /// (/contact/<name>/in_interface): without them a contact beyond the interface goes unreported.
 bool lacks_interface_coverage(const format::Sid& sid) {
@@ -80,13 +52,17 @@ std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
     if (b.rigid) continue;  // rigid bodies have no SID
     const std::size_t index = sids.size();  // flexible_body[index] of the scene
     std::error_code ec;
-    std::optional<SidLock> lock;  // while this body's SID is checked, rebuilt and read
+    // `<sid>.lock` while this body's SID is checked, rebuilt and read: runs sharing a model (a
+    // study's ranks, two isosid-run started together) read it side by side (shared) and build
+    // it one at a time (exclusive), so that none reads another's half-decided SID or builds it
+    // a second time
+    std::optional<common::FileLock> lock;
     const bool from_model = !b.model_file.empty() && !b.adaptive;  // an adaptive body's SIDs come from the run's cache
     const auto stale = [&] {
       return !fs::exists(b.sid_file, ec) || fs::last_write_time(b.sid_file, ec) < fs::last_write_time(b.model_file, ec);
     };
     if (from_model) {
-      lock.emplace(b.sid_file, false);
+      lock.emplace(b.sid_file + ".lock", common::FileLock::Mode::Shared);
       if (stale()) {
         lock->make_exclusive();
         if (stale()) run_prep(b.model_file, b.sid_file, {}, quiet, "");
@@ -120,7 +96,7 @@ SizedSid sized_sid(const Scene& scene, const BodySpec& body, double contact_radi
   const std::string file = (cache / (stem + "-" + key.substr(0, 16) + ".sid.h5")).string();
   std::error_code ec;
   fs::create_directories(cache, ec);
-  const SidLock lock(file, true);
+  const common::FileLock lock(file + ".lock", common::FileLock::Mode::Exclusive);
   if (!fs::exists(file, ec)) run_prep(body.model_file, file, {"--contact-radius", radius}, quiet, std::string(" for a contact radius of ") + radius);
   return {format::read_sid(file, sid_read_options(scene)), file};
 }
