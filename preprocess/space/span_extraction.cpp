@@ -20,7 +20,11 @@ std::vector<SpanExtraction> span_extractions(const KnotVector& U, int p) {
       const double t = 0.5 * (1 - std::cos(M_PI * (k + 0.5) / (p + 1)));
       bernstein(p, t, values.data(), ders.data());
       Bmat.row(k) = values.transpose();
-      Nmat.row(k) = basis_row(U, p, lo + t * (hi - lo)).segment(span - p, p + 1).transpose();
+      // the span's p + 1 functions only: a whole basis row per point made this quadratic in the
+      // knots, which the hierarchical spaces' fine levels call it with
+      double N[format::kMaxDegree + 1];
+      basis_functions(U, p, span, lo + t * (hi - lo), N);
+      for (int j = 0; j <= p; ++j) Nmat(k, j) = N[j];
     }
     out.push_back({lo, hi, span - p, Eigen::PartialPivLU<Eigen::MatrixXd>(Bmat).solve(Nmat).transpose()});
   }
