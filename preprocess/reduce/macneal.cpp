@@ -8,40 +8,53 @@
 #include "reduce/sparse_products.hpp"
 
 #include <Eigen/Cholesky>
-#include <cmath>
+#include <Eigen/QR>
+#include <algorithm>
 
 namespace isosid::prep {
 
-Eigen::MatrixXd elastic_static_response(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                                        const Eigen::MatrixXd& rigid, const Eigen::MatrixXd& loads, double lambda_scale) {
-  if (rigid.cols() == 0) return SparseCholesky(K).solve(loads);
-  // P = I - M R (R^T M R)^-1 R^T removes the loads' rigid-body resultants; the response is
-  // kept free of rigid content by the projection the reduction bases use (remove_rigid_content)
-  const Eigen::MatrixXd MR = M * rigid;
+namespace {
+
+/// Columns solved together: the solves' BLAS-3 blocks stay efficient, and the loads and
+/// solutions in flight stay a few n x kBlock matrices beside the result.
+constexpr Eigen::Index kBlock = 256;
+
+/// A free body's stiffness made definite without changing its response to balanced loads: a
+/// spring on each of nr DOFs where the rigid fields are most independent (QR with column pivoting
+/// of R^T picks them). A balanced load's solutions are u* + R c; exactly one of them vanishes on
+/// those DOFs (R is invertible there), so the springs carry nothing and that one solves the
+/// sprung system too: one factorization and one solve, whatever the springs' stiffness (K's mean
+/// diagonal keeps the factor's pivots of one scale).
+Eigen::SparseMatrix<double> supported(const Eigen::SparseMatrix<double>& K, const Eigen::MatrixXd& rigid) {
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(rigid.transpose());
+  if (qr.rank() < rigid.cols()) throw format::ComputationError("the body's rigid-body fields are not independent");
+  const double spring = K.diagonal().mean();
+  Eigen::SparseMatrix<double> sprung = K;
+  for (Eigen::Index k = 0; k < rigid.cols(); ++k) {
+    const Eigen::Index dof = qr.colsPermutation().indices()(k);
+    sprung.coeffRef(dof, dof) += spring;
+  }
+  return sprung;
+}
+
+}  // namespace
+
+Eigen::MatrixXd elastic_unit_load_response(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                                           const Eigen::MatrixXd& rigid, const std::vector<int>& dofs) {
+  const Eigen::Index n = K.rows(), nb = Eigen::Index(dofs.size()), nr = rigid.cols();
+  const SparseCholesky factor(nr > 0 ? supported(K, rigid) : K);
+  // P = I - M R (R^T M R)^-1 R^T removes the loads' rigid-body resultants (inertia relief)
+  const Eigen::MatrixXd MR = nr > 0 ? sparse_times(M, rigid) : Eigen::MatrixXd(n, 0);
   const Eigen::LDLT<Eigen::MatrixXd> gram(rigid.transpose() * MR);
-  auto balance = [&](const Eigen::MatrixXd& f) -> Eigen::MatrixXd { return f - MR * gram.solve(rigid.transpose() * f); };
-  auto elastic = [&](Eigen::MatrixXd u) {
-    remove_rigid_content(u, M, rigid);
-    return u;
-  };
-  // K is singular on the rigid fields: solve with the shifted K + s M, which differs from K
-  // only by s M; the iteration u += (K + s M)^-1 (L - K u) contracts by s / (s + omega_1^2) on
-  // the elastic subspace (s = 1e-3 of the eigenvalue scale: about 1e-3 per pass)
-  const double s = 1e-3 * lambda_scale;
-  const Eigen::SparseMatrix<double> shifted = K + s * M;
-  const SparseCholesky factor(shifted);
-  const Eigen::MatrixXd L = balance(loads);
-  Eigen::MatrixXd u = elastic(factor.solve(L));
-  // each pass is a solve with every load column (tens of GFlop for a fine 3D body): stop at
-  // round-off, or when a pass no longer gains (the correction stagnates at the solves' noise)
-  double previous = INFINITY;
-  for (int pass = 0; pass < 20; ++pass) {
-    const Eigen::MatrixXd r = L - K * u;
-    const Eigen::MatrixXd du = elastic(factor.solve(balance(r)));
-    u += du;
-    const double change = du.norm();
-    if (change <= 1e-14 * u.norm() || change > 0.5 * previous) break;
-    previous = change;
+  Eigen::MatrixXd u(n, nb);
+  for (Eigen::Index first = 0; first < nb; first += kBlock) {
+    const Eigen::Index width = std::min(kBlock, nb - first);
+    Eigen::MatrixXd loads = Eigen::MatrixXd::Zero(n, width);
+    for (Eigen::Index k = 0; k < width; ++k) loads(dofs[std::size_t(first + k)], k) = 1.0;
+    if (nr > 0) loads.noalias() -= MR * gram.solve(rigid.transpose() * loads);
+    Eigen::MatrixXd block = factor.solve(loads);
+    remove_rigid_content(block, M, rigid);  // the one solution without rigid content (R^T M u = 0)
+    u.middleCols(first, width) = block;
   }
   return u;
 }
@@ -59,28 +72,45 @@ MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, co
   remove_rigid_content(Phi, M, rigid);
   const Eigen::VectorXd omega2 = orthonormalize(Phi, K, M);
   if (Phi.cols() != n_modes) throw format::ComputationError("the retained modes are not independent of the rigid-body motions");
-  Eigen::MatrixXd Eb = Eigen::MatrixXd::Zero(n, nb);
-  for (Eigen::Index k = 0; k < nb; ++k) Eb(boundary_dofs[std::size_t(k)], k) = 1.0;
-  const Eigen::MatrixXd Phi_b = Eb.transpose() * Phi;
-  // residual flexibility: the static response to unit boundary loads less the retained modes' share
-  const Eigen::MatrixXd F = elastic_static_response(K, M, rigid, Eb, lambda_scale);
-  const Eigen::MatrixXd dF = F - Phi * omega2.cwiseInverse().asDiagonal() * Phi_b.transpose();
-  Eigen::MatrixXd dF_bb = Eb.transpose() * dF;
+  Eigen::MatrixXd Phi_b(nb, n_modes);
+  for (Eigen::Index k = 0; k < nb; ++k) Phi_b.row(k) = Phi.row(boundary_dofs[std::size_t(k)]);
+
+  MasslessBoundaryModel out;
+  out.boundary_dofs = boundary_dofs;
+  out.T.resize(n, nb + n_modes);
+  // residual flexibility dF: the static response to unit boundary loads less the retained
+  // modes' share, formed in place of the attachment modes it becomes
+  auto attachment = out.T.leftCols(nb);
+  attachment = elastic_unit_load_response(K, M, rigid, boundary_dofs);
+  attachment.noalias() -= Phi * (omega2.cwiseInverse().asDiagonal() * Phi_b.transpose());
+  Eigen::MatrixXd dF_bb(nb, nb);
+  for (Eigen::Index k = 0; k < nb; ++k) dF_bb.row(k) = attachment.row(boundary_dofs[std::size_t(k)]);
   dF_bb = 0.5 * (dF_bb + dF_bb.transpose());
   const Eigen::LLT<Eigen::MatrixXd> residual(dF_bb);
   if (residual.info() != Eigen::Success)
     throw format::ComputationError("the boundary's residual flexibility is not positive definite (boundary DOFs that "
                                    "the retained modes already describe, or constrained ones)");
-  // attachment modes scaled to unit boundary displacements; modes with zero boundary displacement
-  MasslessBoundaryModel out;
-  out.boundary_dofs = boundary_dofs;
-  out.T.resize(n, nb + n_modes);
-  out.T.leftCols(nb) = residual.solve(dF.transpose()).transpose();  // dF dK_bb
-  out.T.rightCols(n_modes) = Phi - out.T.leftCols(nb) * Phi_b;
+  // attachment modes scaled to unit boundary displacements, dF dF_bb^-1 = dF U^-1 L^-1 in place
+  residual.matrixU().solveInPlace<Eigen::OnTheRight>(attachment);
+  residual.matrixL().solveInPlace<Eigen::OnTheRight>(attachment);
+  // modes with zero boundary displacement
+  out.T.rightCols(n_modes) = Phi;
+  out.T.rightCols(n_modes).noalias() -= attachment * Phi_b;
   // the boundary rows are [I 0] by construction; the solves leave round-off there (1e-11 on
   // the test strip), which is set exact: u_b are the boundary DOFs themselves
   for (Eigen::Index k = 0; k < nb; ++k) out.T.row(boundary_dofs[std::size_t(k)]) = Eigen::RowVectorXd::Unit(nb + n_modes, k);
-  out.K = projected(K, out.T);
+  // T^T K T without its n (nb + nm)^2 product: K dF = P E_b and Phi^T K dF = 0 make it
+  //   [ dF_bb^-1              -dF_bb^-1 Phi_b                     ]
+  //   [ -Phi_b^T dF_bb^-1     Lambda + Phi_b^T dF_bb^-1 Phi_b     ]
+  const Eigen::MatrixXd K_bb = residual.solve(Eigen::MatrixXd::Identity(nb, nb));
+  const Eigen::MatrixXd K_bm = -K_bb * Phi_b;
+  out.K.resize(nb + n_modes, nb + n_modes);
+  out.K.topLeftCorner(nb, nb) = 0.5 * (K_bb + K_bb.transpose());
+  out.K.topRightCorner(nb, n_modes) = K_bm;
+  out.K.bottomLeftCorner(n_modes, nb) = K_bm.transpose();
+  Eigen::MatrixXd K_mm = -Phi_b.transpose() * K_bm;
+  K_mm.diagonal() += omega2;
+  out.K.bottomRightCorner(n_modes, n_modes) = 0.5 * (K_mm + K_mm.transpose());
   out.M = Eigen::MatrixXd::Zero(nb + n_modes, nb + n_modes);
   out.M.bottomRightCorner(n_modes, n_modes).setIdentity();
   out.Phi = Phi;

@@ -21,11 +21,11 @@ MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, co
                                         const Eigen::MatrixXd& rigid, const std::vector<int>& boundary_dofs, int n_modes,
                                         double lambda_scale);
 
-/// The elastic static response K^+ L of loads L on the free DOFs (columns): K^-1 L for a
-/// constrained body; for a free one the loads are first balanced by rigid-body inertia
-/// (L <- P L, P = I - M R R^T with R the M-orthonormal rigid fields) and the response is the
-/// one without rigid content (R^T M u = 0).
-Eigen::MatrixXd elastic_static_response(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                                        const Eigen::MatrixXd& rigid, const Eigen::MatrixXd& loads, double lambda_scale);
+/// The elastic static response to a unit load on each of `dofs` (columns, in their order):
+/// K^-1 e_k for a constrained body; for a free one the load is first balanced by rigid-body
+/// inertia (e_k <- P e_k, P = I - M R (R^T M R)^-1 R^T, R the rigid fields) and the response is
+/// the one without rigid content (R^T M u = 0). One sparse factorization, the loads solved in blocks.
+Eigen::MatrixXd elastic_unit_load_response(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                                           const Eigen::MatrixXd& rigid, const std::vector<int>& dofs);
 
 }  // namespace isosid::prep
