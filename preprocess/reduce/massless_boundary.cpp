@@ -14,6 +14,9 @@ ReducedBasis massless_boundary_basis(const MasslessBoundaryModel& m) {
   out.omega2.head(nm) = m.omega2;
   out.n_low = int(nm);
   out.massless_dofs = m.boundary_dofs;
+  // m.K in the basis' order: [eta; u_b] from [u_b; eta]
+  out.stiffness.resize(nm + nb, nm + nb);
+  out.stiffness << m.K.bottomRightCorner(nm, nm), m.K.bottomLeftCorner(nm, nb), m.K.topRightCorner(nb, nm), m.K.topLeftCorner(nb, nb);
   return out;
 }
 

@@ -26,6 +26,9 @@ struct ReducedBasis {
   /// Phi^T K Phi is dense.
   std::vector<int> massless_dofs;
   Eigen::MatrixXd inertial;
+  /// Phi^T K Phi where the reduction formed it more exactly than the projection (MacNeal: in
+  /// closed form); empty: the SID builder projects K.
+  Eigen::MatrixXd stiffness;
   Eigen::Index massless() const { return Eigen::Index(massless_dofs.size()); }
   /// The displacement field whose motion carries the mass: Phi itself except for MacNeal.
   const Eigen::MatrixXd& mass_carrying() const { return massless() > 0 ? inertial : Phi; }

@@ -16,4 +16,17 @@ Eigen::MatrixXd projected(const Eigen::SparseMatrix<double>& A, const Eigen::Ref
   return 0.5 * (P + P.transpose());
 }
 
+Eigen::Index leading_columns(const Eigen::Ref<const Eigen::MatrixXd>& X) {
+  Eigen::Index used = X.cols();
+  while (used > 0 && X.col(used - 1).isZero(0.0)) --used;
+  return used;
+}
+
+Eigen::MatrixXd projected_leading(const Eigen::SparseMatrix<double>& A, const Eigen::Ref<const Eigen::MatrixXd>& X) {
+  const Eigen::Index used = leading_columns(X);
+  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(X.cols(), X.cols());
+  P.topLeftCorner(used, used) = projected(A, X.leftCols(used));
+  return P;
+}
+
 }  // namespace isosid::prep

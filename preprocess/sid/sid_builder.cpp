@@ -65,8 +65,8 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   const Eigen::MatrixXd inertial_nodal = basis.massless() > 0 ? nodal_modes(body.dofs, inertial) : Eigen::MatrixXd();
   const Eigen::MatrixXd& moving = basis.massless() > 0 ? inertial_nodal : Phi;
   fill_inertia_terms(sid, scalar_mass, body.dofs.node_points(), moving);
-  sid.Me.M0 = projected(system.M, inertial);
-  sid.Ke.M0 = projected(system.K, basis.Phi);
+  sid.Me.M0 = projected_leading(system.M, inertial);
+  sid.Ke.M0 = basis.stiffness.size() ? basis.stiffness : projected(system.K, basis.Phi);
 
   format::RefMod& r = sid.refmod;
   r.frequencies_hz = basis.omega2.cwiseMax(0.0).cwiseSqrt() / (2 * M_PI);

@@ -1,6 +1,7 @@
 // Body integrals and SID terms; see sid_terms.hpp.
 #include "sid/sid_terms.hpp"
 
+#include "reduce/sparse_products.hpp"
 #include "sid/body_integrals.hpp"
 
 #include <array>
@@ -23,10 +24,14 @@ format::Damping rayleigh_damping(double kappa, double f1, double f2) {
 
 void fill_inertia_terms(format::Sid& sid, const Eigen::SparseMatrix<double>& Ms, const MatrixXd& X, const MatrixXd& Phi_nodal) {
   const Index n = X.rows(), nq = Phi_nodal.cols(), dim = X.cols();
-  // section components of the modes: Phi_c[i] is n x nq
-  std::vector<MatrixXd> Phi_c(std::size_t(dim), MatrixXd(n, nq));
+  // the products over the columns that move mass: a massless boundary's trailing columns are
+  // zero in this field, and their terms with them (n nq^2 work otherwise, for a boundary of
+  // thousands of DOFs the largest part of the SID's preparation)
+  const Index used = leading_columns(Phi_nodal);
+  // section components of the modes: Phi_c[i] is n x used
+  std::vector<MatrixXd> Phi_c(std::size_t(dim), MatrixXd(n, used));
   for (Index node = 0; node < n; ++node)
-    for (Index i = 0; i < dim; ++i) Phi_c[std::size_t(i)].row(node) = Phi_nodal.row(node * dim + i);
+    for (Index i = 0; i < dim; ++i) Phi_c[std::size_t(i)].row(node) = Phi_nodal.row(node * dim + i).head(used);
   std::vector<MatrixXd> MPhi;
   for (const MatrixXd& p : Phi_c) MPhi.push_back(Ms * p);
   const Eigen::RowVectorXd ones_M = Eigen::RowVectorXd::Ones(n) * Ms;
@@ -44,10 +49,10 @@ void fill_inertia_terms(format::Sid& sid, const Eigen::SparseMatrix<double>& Ms,
       R[a][b] = Eigen::RowVectorXd::Zero(nq);
       P[a][b] = MatrixXd::Zero(nq, nq);
     }
-  for (const SectionSingle& s : singles) C1.row(s.b) += s.w * ones_M * Phi_c[std::size_t(s.j)];
+  for (const SectionSingle& s : singles) C1.row(s.b).head(used) += s.w * ones_M * Phi_c[std::size_t(s.j)];
   for (const SectionPair& p : pairs) {
-    R[p.a][p.b] += p.w * X.col(p.i).transpose() * MPhi[std::size_t(p.j)];
-    P[p.a][p.b] += p.w * Phi_c[std::size_t(p.i)].transpose() * MPhi[std::size_t(p.j)];
+    R[p.a][p.b].head(used) += p.w * X.col(p.i).transpose() * MPhi[std::size_t(p.j)];
+    P[p.a][p.b].topLeftCorner(used, used) += p.w * Phi_c[std::size_t(p.i)].transpose() * MPhi[std::size_t(p.j)];
   }
   auto Rk = [&](Index k) {
     Eigen::Matrix3d r;
