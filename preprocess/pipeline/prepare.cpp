@@ -4,6 +4,7 @@
 #include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "reduce/body_reduction.hpp"
+#include "reduce/memory_budget.hpp"
 #include "sid/sid_builder.hpp"
 #include "sid/transfer.hpp"
 
@@ -32,9 +33,17 @@ AssembledBody assemble(const ModelSpec& spec, bool with_mass, StageClock& clock)
   return a;
 }
 
-}  // namespace
+/// f(), with a stage's memory refusal as the input error it is: the model asks for more than fits.
+template <class F>
+auto refusing_oversize(const ModelSpec& spec, F&& f) {
+  try {
+    return f();
+  } catch (const MemoryRefusal& e) {
+    throw format::InputError(spec.file, e.field(), std::string(e.what()) + ": coarsen the model or prepare it where more memory is free");
+  }
+}
 
-PreparedBody prepare(const ModelSpec& spec, const PrepareOptions& options, StageObserver& observer) {
+PreparedBody prepare_body(const ModelSpec& spec, const PrepareOptions& options, StageObserver& observer) {
   StageClock clock(observer);
   AssembledBody a = assemble(spec, options.build_sid, clock);
   // a hierarchical body carries its coarse model's modes, so states transfer exactly
@@ -43,7 +52,7 @@ PreparedBody prepare(const ModelSpec& spec, const PrepareOptions& options, Stage
   Eigen::MatrixXd coarse_modes;
   if (a.body.hierarchy)
     clock.run("coarse_model", "coarse model and nodal transfer", [&] {
-      coarse.emplace(prepare(coarse_model_spec(spec), {.build_sid = false, .output = ""}));
+      coarse.emplace(prepare_body(coarse_model_spec(spec), {.build_sid = false, .output = ""}, no_progress()));
       nodal = nodal_transfer(coarse->body, a.body);
       coarse_modes = prolongated_modes({coarse->body, coarse->system, coarse->basis}, a.body, *nodal);
     });
@@ -63,7 +72,14 @@ PreparedBody prepare(const ModelSpec& spec, const PrepareOptions& options, Stage
   return out;
 }
 
+}  // namespace
+
+PreparedBody prepare(const ModelSpec& spec, const PrepareOptions& options, StageObserver& observer) {
+  return refusing_oversize(spec, [&] { return prepare_body(spec, options, observer); });
+}
+
 ModalAnalysis analyse_modes(const ModelSpec& spec, int n_modes, StageObserver& observer) {
+  return refusing_oversize(spec, [&]() -> ModalAnalysis {
   StageClock clock(observer);
   AssembledBody a = assemble(spec, true, clock);
   // the eigen solver finds fewer modes than DOFs; more is a request this model cannot meet
@@ -77,6 +93,7 @@ ModalAnalysis analyse_modes(const ModelSpec& spec, int n_modes, StageObserver& o
     return lowest_modes(a.system.K, a.system.M, n_modes, scale);
   });
   return {std::move(a.body), a.scalar_mass.sum(), std::move(modes), clock.timings()};
+  });
 }
 
 }  // namespace isosid::prep

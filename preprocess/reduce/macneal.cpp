@@ -3,6 +3,7 @@
 
 #include "isosid/format/error.hpp"
 #include "reduce/modal_analysis.hpp"
+#include "reduce/memory_budget.hpp"
 #include "reduce/mode_basis.hpp"
 #include "reduce/sparse_cholesky.hpp"
 #include "reduce/sparse_products.hpp"
@@ -64,6 +65,9 @@ MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, co
                                         double lambda_scale) {
   const Eigen::Index n = K.rows(), nb = Eigen::Index(boundary_dofs.size()), nr = rigid.cols();
   if (nb == 0) throw format::ComputationError("a massless-boundary reduction needs boundary DOFs");
+  // the basis T and the modes, with a block of loads and solutions in flight
+  check_memory("reduction.boundary_surface", "the MacNeal basis of " + std::to_string(nb) + " boundary DOFs on " + std::to_string(n) + " DOFs",
+               double(n) * double(nb + 2 * n_modes + 3 * std::min(kBlock, nb)) * sizeof(double));
   const ModalResult modes = lowest_modes(K, M, n_modes + int(nr), lambda_scale);
   // the elastic modes in normal form within their span: on finely graded bodies the Lanczos
   // vectors of close or repeated frequencies leave M-orthogonality errors far above the

@@ -3,6 +3,7 @@
 
 #include "isosid/format/error.hpp"
 #include "reduce/blas_threads.hpp"
+#include "reduce/memory_budget.hpp"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Eigenvalues>
@@ -31,7 +32,16 @@ public:
     const Eigen::SparseMatrix<double> A = K - sigma * M;
     cholmod_sparse a = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
     factor_ = cholmod_analyze(&a, &common_);
-    if (factor_) cholmod_factorize(&a, factor_, &common_);
+    if (factor_) {
+      try {
+        check_memory("refinement", "the eigen solve's factorization of " + std::to_string(K.rows()) + " DOFs",
+                     double(factor_->xsize) * sizeof(double));
+      } catch (...) {
+        release();
+        throw;
+      }
+      cholmod_factorize(&a, factor_, &common_);
+    }
     if (!factor_ || common_.status != CHOLMOD_OK || factor_->minor < factor_->n) {
       release();
       throw format::ComputationError("CHOLMOD factorization of K - sigma M failed (sigma = " + std::to_string(sigma) +

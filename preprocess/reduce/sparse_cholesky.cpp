@@ -3,18 +3,24 @@
 
 #include "isosid/format/error.hpp"
 #include "reduce/blas_threads.hpp"
+#include "reduce/memory_budget.hpp"
 
 #include <Eigen/CholmodSupport>
 
 namespace isosid::prep {
 
 struct SparseCholesky::Impl {
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
+  /// Eigen's supernodal LL^T, with the symbolic factor's size (after analyzePattern)
+  struct Llt : Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> {
+    double factor_bytes() const { return m_cholmodFactor ? double(m_cholmodFactor->xsize) * sizeof(double) : 0.0; }
+  } llt;
 };
 
 SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& A) : impl_(std::make_unique<Impl>()) {
   use_single_threaded_blas();
-  impl_->llt.compute(A);
+  impl_->llt.analyzePattern(A);
+  check_memory("refinement", "the sparse factorization of " + std::to_string(A.rows()) + " DOFs", impl_->llt.factor_bytes());
+  impl_->llt.factorize(A);
   if (impl_->llt.info() != Eigen::Success)
     throw format::ComputationError("CHOLMOD: the matrix is not positive definite (is the body free of constraints?)");
 }

@@ -4,6 +4,7 @@
 #include "isosid/format/file_kind.hpp"
 #include "isosid/common/cli_parse.hpp"
 #include "pipeline/prepare.hpp"
+#include "reduce/memory_budget.hpp"
 #include "tools/prep_report.hpp"
 
 #include <algorithm>
@@ -75,6 +76,11 @@ int main(int argc, char** argv) {
                    "SURFACE:U[,V]: centre the model's [refinement.hierarchical] (and a Craig-Bampton interface on that "
                    "surface) at tangential parameter(s) U[,V] of contact surface SURFACE (isosid-run asks so at an impact)");
     app.add_option("--refine-width", refine_width, "with --refine-at: physical width of the refined region, m");
+    double memory_limit_gib = 0;
+    app.add_option("--memory-limit", memory_limit_gib,
+                   "GiB the preparation may use (default: what the machine has available); a model whose factorization or "
+                   "reduction is estimated above it is refused before that stage (exit 2)")
+        ->check(CLI::PositiveNumber);
     if (auto status = common::parse_command_line(app, argc, argv)) return *status;
     // flags that cannot all be honoured are refused, not some of them silently dropped
     if (n_modes > 0 && app.count("--output")) throw format::InputError(model_file, "--modes", "reports only; it writes no SID (drop -o)");
@@ -87,6 +93,7 @@ int main(int argc, char** argv) {
         throw format::InputError(output, "-o", "is the model file itself; the SID would overwrite it");
     }
 
+    if (memory_limit_gib > 0) prep::set_memory_limit(memory_limit_gib * 1024.0 * 1024.0 * 1024.0);
     prep::ModelSpec spec = prep::read_model_file(model_file);  // progress starts on valid input (a meshed body is meshed here: gmsh takes well under a second)
     if (app.count("--contact-radius")) prep::set_contact_radius(spec, contact_radius, "--contact-radius");
     if (app.count("--refine-at") != app.count("--refine-width"))

@@ -59,3 +59,18 @@ TEST_CASE("isosid-prep prints the project's version", "[prep][command-line]") {
   CHECK(r.exit_status == 0);
   CHECK_THAT(r.out, Catch::Matchers::StartsWith(std::string("isosid-prep ") + ISOSID_VERSION));
 }
+
+TEST_CASE("isosid-prep refuses a model above its memory limit before the stage, with the estimate", "[prep][command-line]") {
+  const test::ScratchDir dir("prep-memory");
+  // the small sphere's factorization (78 DOFs) needs tens of kB: a limit of 1 kB refuses it, in one line
+  // naming the model file, the part of it that sets the size, and the estimate against the limit
+  const auto r = test::run_program(kPrep + " -q --memory-limit 1e-6 " + kSphere + " -o " + dir.path("x.sid.h5"));
+  CHECK(r.exit_status == 2);
+  CHECK_THAT(r.err, Contains(kSphere + ": refinement: the sparse factorization of"));
+  CHECK_THAT(r.err, Contains("GiB, more than the 1e-06 GiB of --memory-limit"));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(std::filesystem::exists(dir.path("x.sid.h5")));
+  // the modal report too, and a limit above the estimate changes nothing
+  CHECK(test::run_program(kPrep + " -q --memory-limit 1e-6 --modes 6 " + kSphere).exit_status == 2);
+  CHECK(test::run_program(kPrep + " -q --memory-limit 8 " + kSphere + " -o " + dir.path("x.sid.h5")).exit_status == 0);
+}
