@@ -72,14 +72,7 @@ PreparedBody prepare_body(const ModelSpec& spec, const PrepareOptions& options, 
   return out;
 }
 
-}  // namespace
-
-PreparedBody prepare(const ModelSpec& spec, const PrepareOptions& options, StageObserver& observer) {
-  return refusing_oversize(spec, [&] { return prepare_body(spec, options, observer); });
-}
-
-ModalAnalysis analyse_modes(const ModelSpec& spec, int n_modes, StageObserver& observer) {
-  return refusing_oversize(spec, [&]() -> ModalAnalysis {
+ModalAnalysis analyse_body(const ModelSpec& spec, int n_modes, StageObserver& observer) {
   StageClock clock(observer);
   AssembledBody a = assemble(spec, true, clock);
   // the eigen solver finds fewer modes than DOFs; more is a request this model cannot meet
@@ -93,7 +86,16 @@ ModalAnalysis analyse_modes(const ModelSpec& spec, int n_modes, StageObserver& o
     return lowest_modes(a.system.K, a.system.M, n_modes, scale);
   });
   return {std::move(a.body), a.scalar_mass.sum(), std::move(modes), clock.timings()};
-  });
+}
+
+}  // namespace
+
+PreparedBody prepare(const ModelSpec& spec, const PrepareOptions& options, StageObserver& observer) {
+  return refusing_oversize(spec, [&] { return prepare_body(spec, options, observer); });
+}
+
+ModalAnalysis analyse_modes(const ModelSpec& spec, int n_modes, StageObserver& observer) {
+  return refusing_oversize(spec, [&] { return analyse_body(spec, n_modes, observer); });
 }
 
 }  // namespace isosid::prep

@@ -53,10 +53,9 @@ Eigen::MatrixXd elastic_unit_load_response(const Eigen::SparseMatrix<double>& K,
     Eigen::MatrixXd loads = Eigen::MatrixXd::Zero(n, width);
     for (Eigen::Index k = 0; k < width; ++k) loads(dofs[std::size_t(first + k)], k) = 1.0;
     if (nr > 0) loads.noalias() -= MR * gram.solve(rigid.transpose() * loads);
-    Eigen::MatrixXd block = factor.solve(loads);
-    remove_rigid_content(block, M, rigid);  // the one solution without rigid content (R^T M u = 0)
-    u.middleCols(first, width) = block;
+    u.middleCols(first, width) = factor.solve(loads);
   }
+  remove_rigid_content(u, M, rigid);  // the one solution without rigid content (R^T M u = 0)
   return u;
 }
 
