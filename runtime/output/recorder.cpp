@@ -362,6 +362,101 @@ std::vector<RunWarning> Recorder::warnings() const {
   return out;
 }
 
+nlohmann::json Recorder::contact_summary(std::size_t k) const {
+  using nlohmann::json;
+  json c;
+  c["name"] = system_.contacts()[k].name();
+  const auto& list = intervals_[k];
+  c["start_s"] = list.empty() ? json(nullptr) : json(list.front().start);
+  c["end_s"] = list.empty() || list.back().end < 0 ? json(nullptr) : json(list.back().end);
+  // one impact may open and close several times at onset (single Gauss points bouncing):
+  // the contact lasts from the first onset to the last release
+  c["duration_s"] = list.empty() || list.back().end < 0 ? json(nullptr) : json(list.back().end - list.front().start);
+  c["intervals"] = list.size();
+  // the exact surfaces' first instants of contact, one per impact
+  c["touches"] = json::array();
+  for (const auto& entry : touches_[k]) {
+    const Touch& touch = entry.second;  // (a structured binding could not be captured below in C++17)
+    auto parameters = [&](const Eigen::Vector2d& u) {
+      if (std::isnan(u(0))) return json(nullptr);
+      json values = json::array();
+      for (int a = 0; a < touch.parameter_dim; ++a) values.push_back(u(a));
+      return values;
+    };
+    c["touches"].push_back({{"time_s", entry.first}, {"gap_m", touch.gap}, {"slave_parameter", parameters(touch.slave_parameter)},
+                            {"target_parameter", parameters(touch.target_parameter)},
+                            {"point_m", {touch.point.x(), touch.point.y(), touch.point.z()}}});
+  }
+  c["penalty_n_m3"] = system_.contacts()[k].penalty();
+  c["penalty_source"] = system_.contacts()[k].penalty_source();
+  c["peak_force_n"] = peak_force_[k];
+  c["points_at_peak"] = points_at_peak_[k];  // Gauss points carrying load at the peak-force step
+  c["edge_reached_s"] = edge_reached_[k] < 0 ? json(nullptr) : json(edge_reached_[k]);
+  c["interface_left_s"] = interface_left_[k] < 0 ? json(nullptr) : json(interface_left_[k]);
+  if (const auto& e = system_.impact_estimates()[k])
+    c["hertz_estimate"] = {{"approach_speed_m_s", e->approach_speed},
+                           {e->line_contact ? "contact_half_width_m" : "contact_radius_m", e->contact_radius},
+                           {"peak_force_n", e->peak_force},
+                           {"contact_time_s", e->line_contact ? json(nullptr) : json(e->contact_time)},
+                           {"contact_element_m", e->element_size},
+                           {"elements_per_radius", e->elements_per_radius()}};
+  if (impact_modes_[k] && impact_modes_[k]->report()) c["impact_modes"] = impact_modes_summary(*impact_modes_[k]->report());
+  c["impulse_ns"] = impulse_[k];
+  c["max_penetration_m"] = max_penetration_[k];
+  const auto ratio = penetration_per_approach(max_penetration_[k], system_.impact_estimates()[k]);
+  c["penetration_per_hertz_approach"] = ratio ? json(*ratio) : json(nullptr);
+  c["penalty_too_soft"] = ratio && *ratio > kMaxPenetrationPerApproach;
+  c["closed_at_end"] = closed_at_end(k);
+  c["never_closed"] = list.empty();
+  return c;
+}
+
+nlohmann::json Recorder::joint_summary(std::size_t k) const {
+  using nlohmann::json;
+  double peak_force = 0, peak_torque = 0, position_error = 0, angle_error = 0;
+  for (std::size_t i = 0; i + 2 < joint_force_[k].size(); i += 3) {
+    peak_force = std::max(peak_force, Eigen::Vector3d(&joint_force_[k][i]).norm());
+    peak_torque = std::max(peak_torque, Eigen::Vector3d(&joint_torque_[k][i]).norm());
+  }
+  for (std::size_t i = 0; i + 1 < joint_error_[k].size(); i += 2)
+    position_error = std::max(position_error, joint_error_[k][i]), angle_error = std::max(angle_error, joint_error_[k][i + 1]);
+  json jt = {{"name", system_.joints().joints()[k].name()}, {"peak_force_n", peak_force}, {"peak_torque_n_m", peak_torque},
+             {"max_position_error_m", position_error}, {"max_angle_error_rad", angle_error}};
+  if (joint_force_[k].size() >= 3) {
+    const std::size_t last = joint_force_[k].size() - 3;
+    jt["final_force_n"] = {joint_force_[k][last], joint_force_[k][last + 1], joint_force_[k][last + 2]};
+  }
+  return jt;
+}
+
+nlohmann::json Recorder::body_summary(std::size_t body, const double* y) const {
+  using nlohmann::json;
+  const FloatingBody& b = *system_.bodies()[body];
+  const Eigen::Vector3d v = b.v(y), w = b.omega(y), r = b.r(y);
+  json entry = {{"name", b.name()},
+                {"nq", b.nq()},
+                {"quasistatic_modes", b.n_quasistatic()},
+                {"final_position", {r.x(), r.y(), r.z()}},
+                {"final_velocity", {v.x(), v.y(), v.z()}},
+                {"final_angular_velocity", {w.x(), w.y(), w.z()}}};
+  if (b.nq() > 0 && !body_q_[body].empty()) {  // of the last sample
+    const Eigen::Map<const Eigen::VectorXd> q(body_q_[body].data() + body_q_[body].size() - std::size_t(b.nq()), b.nq());
+    const Eigen::VectorXd E = b.modal_energies(q, b.qdot(y));
+    entry["final_modal_energy_j"] = std::vector<double>(E.data(), E.data() + E.size());
+  }
+  return entry;
+}
+
+nlohmann::json Recorder::monitor_summary(std::size_t m) const {
+  using nlohmann::json;
+  const auto& v = monitor_values_[m];
+  json mon = {{"name", scene_.monitors[m].name}, {"quantity", scene_.monitors[m].quantity}};
+  if (!v.empty()) mon["final"] = {v[v.size() - 3], v[v.size() - 2], v[v.size() - 1]};
+  mon["arrival_s"] = monitor_events_[m].arrival() >= 0 ? json(monitor_events_[m].arrival()) : json(nullptr);
+  mon["reversal_s"] = monitor_events_[m].reversal() >= 0 ? json(monitor_events_[m].reversal()) : json(nullptr);
+  return mon;
+}
+
 nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome& outcome, const double* y) const {
   using nlohmann::json;
   json j;
@@ -392,103 +487,20 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
                    {"kept_contact_loads", cost.kept_contact_loads},
                    {"mean_active_points", cost.evaluations ? double(cost.active_points) / double(cost.evaluations) : 0.0}};
   j["contacts"] = json::array();
-  for (std::size_t k = 0; k < system_.contacts().size(); ++k) {
-    json c;
-    c["name"] = system_.contacts()[k].name();
-    const auto& list = intervals_[k];
-    c["start_s"] = list.empty() ? json(nullptr) : json(list.front().start);
-    c["end_s"] = list.empty() || list.back().end < 0 ? json(nullptr) : json(list.back().end);
-    // one impact may open and close several times at onset (single Gauss points bouncing):
-    // the contact lasts from the first onset to the last release
-    c["duration_s"] = list.empty() || list.back().end < 0 ? json(nullptr) : json(list.back().end - list.front().start);
-    c["intervals"] = list.size();
-    // the exact surfaces' first instants of contact, one per impact
-    c["touches"] = json::array();
-    for (const auto& entry : touches_[k]) {
-      const Touch& touch = entry.second;  // (a structured binding could not be captured below in C++17)
-      auto parameters = [&](const Eigen::Vector2d& u) {
-        if (std::isnan(u(0))) return json(nullptr);
-        json values = json::array();
-        for (int a = 0; a < touch.parameter_dim; ++a) values.push_back(u(a));
-        return values;
-      };
-      c["touches"].push_back({{"time_s", entry.first}, {"gap_m", touch.gap}, {"slave_parameter", parameters(touch.slave_parameter)},
-                              {"target_parameter", parameters(touch.target_parameter)},
-                              {"point_m", {touch.point.x(), touch.point.y(), touch.point.z()}}});
-    }
-    c["penalty_n_m3"] = system_.contacts()[k].penalty();
-    c["penalty_source"] = system_.contacts()[k].penalty_source();
-    c["peak_force_n"] = peak_force_[k];
-    c["points_at_peak"] = points_at_peak_[k];  // Gauss points carrying load at the peak-force step
-    c["edge_reached_s"] = edge_reached_[k] < 0 ? json(nullptr) : json(edge_reached_[k]);
-    c["interface_left_s"] = interface_left_[k] < 0 ? json(nullptr) : json(interface_left_[k]);
-    if (const auto& e = system_.impact_estimates()[k])
-      c["hertz_estimate"] = {{"approach_speed_m_s", e->approach_speed},
-                             {e->line_contact ? "contact_half_width_m" : "contact_radius_m", e->contact_radius},
-                             {"peak_force_n", e->peak_force},
-                             {"contact_time_s", e->line_contact ? json(nullptr) : json(e->contact_time)},
-                             {"contact_element_m", e->element_size},
-                             {"elements_per_radius", e->elements_per_radius()}};
-    if (impact_modes_[k] && impact_modes_[k]->report()) c["impact_modes"] = impact_modes_summary(*impact_modes_[k]->report());
-    c["impulse_ns"] = impulse_[k];
-    c["max_penetration_m"] = max_penetration_[k];
-    const auto ratio = penetration_per_approach(max_penetration_[k], system_.impact_estimates()[k]);
-    c["penetration_per_hertz_approach"] = ratio ? json(*ratio) : json(nullptr);
-    c["penalty_too_soft"] = ratio && *ratio > kMaxPenetrationPerApproach;
-    c["closed_at_end"] = closed_at_end(k);
-    c["never_closed"] = list.empty();
-    j["contacts"].push_back(c);
-  }
+  for (std::size_t k = 0; k < system_.contacts().size(); ++k) j["contacts"].push_back(contact_summary(k));
   j["hertz_contacts"] = json::array();
   for (const HertzContactLog& h : hertz_logs_) j["hertz_contacts"].push_back(h.summary());
   j["joints"] = json::array();
-  for (std::size_t k = 0; k < joint_force_.size(); ++k) {
-    double peak_force = 0, peak_torque = 0, position_error = 0, angle_error = 0;
-    for (std::size_t i = 0; i + 2 < joint_force_[k].size(); i += 3) {
-      peak_force = std::max(peak_force, Eigen::Vector3d(&joint_force_[k][i]).norm());
-      peak_torque = std::max(peak_torque, Eigen::Vector3d(&joint_torque_[k][i]).norm());
-    }
-    for (std::size_t i = 0; i + 1 < joint_error_[k].size(); i += 2)
-      position_error = std::max(position_error, joint_error_[k][i]), angle_error = std::max(angle_error, joint_error_[k][i + 1]);
-    json jt = {{"name", system_.joints().joints()[k].name()}, {"peak_force_n", peak_force}, {"peak_torque_n_m", peak_torque},
-               {"max_position_error_m", position_error}, {"max_angle_error_rad", angle_error}};
-    if (joint_force_[k].size() >= 3) {
-      const std::size_t last = joint_force_[k].size() - 3;
-      jt["final_force_n"] = {joint_force_[k][last], joint_force_[k][last + 1], joint_force_[k][last + 2]};
-    }
-    j["joints"].push_back(jt);
-  }
+  for (std::size_t k = 0; k < joint_force_.size(); ++k) j["joints"].push_back(joint_summary(k));
   j["bodies"] = json::array();
-  for (std::size_t body = 0; body < system_.bodies().size(); ++body) {
-    const FloatingBody& b = *system_.bodies()[body];
-    const Eigen::Vector3d v = b.v(y), w = b.omega(y), r = b.r(y);
-    json entry = {{"name", b.name()},
-                  {"nq", b.nq()},
-                  {"quasistatic_modes", b.n_quasistatic()},
-                  {"final_position", {r.x(), r.y(), r.z()}},
-                  {"final_velocity", {v.x(), v.y(), v.z()}},
-                  {"final_angular_velocity", {w.x(), w.y(), w.z()}}};
-    if (b.nq() > 0 && !body_q_[body].empty()) {  // of the last sample
-      const Eigen::Map<const Eigen::VectorXd> q(body_q_[body].data() + body_q_[body].size() - std::size_t(b.nq()), b.nq());
-      const Eigen::VectorXd E = b.modal_energies(q, b.qdot(y));
-      entry["final_modal_energy_j"] = std::vector<double>(E.data(), E.data() + E.size());
-    }
-    j["bodies"].push_back(entry);
-  }
+  for (std::size_t body = 0; body < system_.bodies().size(); ++body) j["bodies"].push_back(body_summary(body, y));
   const double e0 = energies_.empty() ? 0.0 : energies_.front()[5], e1 = energies_.empty() ? 0.0 : energies_.back()[5];
   const double energy_error = energy_error_per_motion();
   j["energy"] = {{"initial_j", e0}, {"final_j", e1}, {"max_rel_error", max_relative_energy_error()},
                  {"dissipated_j", energies_.empty() ? 0.0 : energies_.back()[4]},
                  {"error_per_energy_in_motion", energy_error}, {"error_too_large", energy_error > kMaxEnergyError}};
   j["monitors"] = json::array();
-  for (std::size_t m = 0; m < monitor_values_.size(); ++m) {
-    const auto& v = monitor_values_[m];
-    json mon = {{"name", scene_.monitors[m].name}, {"quantity", scene_.monitors[m].quantity}};
-    if (!v.empty()) mon["final"] = {v[v.size() - 3], v[v.size() - 2], v[v.size() - 1]};
-    mon["arrival_s"] = monitor_events_[m].arrival() >= 0 ? json(monitor_events_[m].arrival()) : json(nullptr);
-    mon["reversal_s"] = monitor_events_[m].reversal() >= 0 ? json(monitor_events_[m].reversal()) : json(nullptr);
-    j["monitors"].push_back(mon);
-  }
+  for (std::size_t m = 0; m < monitor_values_.size(); ++m) j["monitors"].push_back(monitor_summary(m));
   for (const StressMonitor& s : stress_monitors_) j["monitors"].push_back(s.summary());
   j["reference"] = compare_with_reference(j, scene_.reference, scene_.reference_from_hertz);
   return j;

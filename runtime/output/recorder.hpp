@@ -67,6 +67,12 @@ public:
   static std::string never_closed_warning(const std::string& contact);
 
 private:
+  /// summary.json's parts: contact k's entry, joint k's, body's (final state y) and
+  /// velocity monitor m's.
+  nlohmann::json contact_summary(std::size_t k) const;
+  nlohmann::json joint_summary(std::size_t k) const;
+  nlohmann::json body_summary(std::size_t body, const double* y) const;
+  nlohmann::json monitor_summary(std::size_t m) const;
   /// Contact k closed and did not open again before the last step.
   bool closed_at_end(std::size_t k) const;
   /// Monitor m's node velocity at y, the quasistatic coordinates moving at their last rate.

@@ -8,17 +8,23 @@
 
 namespace isosid::run {
 
-void settle_static_start(const MultibodySystem& system, const std::vector<bool>& static_start, double* y) {
-  // unknowns per flagged body: its integrated modes, then a translation and a rotation of its
-  // frame; a body jointed to one of them (directly or along a chain) moves its frame only, so
-  // that the flagged bodies' deflection does not pull the joints apart (a rigid ball hanging
-  // from a sagging rod follows it)
-  struct Unknowns {
-    const FloatingBody* body;
-    Eigen::Index modes;           ///< its integrated modes if flagged, else 0
-    Eigen::Index first;           ///< its first unknown
-    Eigen::Index first_equation;  ///< its first acceleration among the equations
-  };
+namespace {
+
+/// The unknowns of one body in the static solve.
+struct Unknowns {
+  const FloatingBody* body;
+  Eigen::Index modes;           ///< its integrated modes if flagged, else 0
+  Eigen::Index first;           ///< its first unknown
+  Eigen::Index first_equation;  ///< its first acceleration among the equations
+};
+
+/// Unknowns per flagged body: its integrated modes, then a translation and a rotation of its
+/// frame; a body jointed to one of them (directly or along a chain) moves its frame only, so
+/// that the flagged bodies' deflection does not pull the joints apart (a rigid ball hanging
+/// from a sagging rod follows it). `n` receives the unknowns' count, `accelerations` the
+/// modal equations'.
+std::vector<Unknowns> static_unknowns(const MultibodySystem& system, const std::vector<bool>& static_start, Eigen::Index& n,
+                                      Eigen::Index& accelerations) {
   std::vector<bool> moves(static_start);
   for (bool grown = true; grown;) {
     grown = false;
@@ -29,7 +35,7 @@ void settle_static_start(const MultibodySystem& system, const std::vector<bool>&
     }
   }
   std::vector<Unknowns> bodies;
-  Eigen::Index n = 0, accelerations = 0;
+  n = 0, accelerations = 0;
   for (std::size_t i = 0; i < system.bodies().size(); ++i) {
     if (!moves[i]) continue;
     const FloatingBody& b = *system.bodies()[i];
@@ -38,6 +44,14 @@ void settle_static_start(const MultibodySystem& system, const std::vector<bool>&
     n += modes + 6;
     accelerations += modes;
   }
+  return bodies;
+}
+
+}  // namespace
+
+void settle_static_start(const MultibodySystem& system, const std::vector<bool>& static_start, double* y) {
+  Eigen::Index n = 0, accelerations = 0;
+  const std::vector<Unknowns> bodies = static_unknowns(system, static_start, n, accelerations);
   if (accelerations == 0) return;
   std::vector<const Joint*> joints;  // those holding a settled body
   Eigen::Index rows = accelerations;
