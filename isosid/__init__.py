@@ -6,6 +6,9 @@ arrays and tables.
     r.contacts["impact"].peak_force_n      # summary.json's figures as attributes
     r.contacts["impact"].force             # results.h5's series as numpy arrays (N, world frame)
     r.to_dataframe()                       # every sampled series against time (pandas)
+    s = isosid.load_scene("models/sphere_hertz.scene.toml")   # a scene as a dict
+    s["flexible_body"][0]["velocity"] = [0, -0.2, 0]
+    r = isosid.run(s, base_dir="models")   # its SIDs and models found from models/
 
 Errors raise InputError (bad input: the command line's exit 2) or ComputationError (a failed
 computation: exit 1, its results so far kept) with the command line's message.
@@ -31,8 +34,8 @@ for _prep in (_os.path.join(_build, "preprocess", "isosid-prep"),
 from ._isosid import ComputationError, InputError  # noqa: E402
 from ._isosid import version as _version  # noqa: E402
 from .results import Result, read_results  # noqa: E402
-from .runs import run, toml_value  # noqa: E402
+from .runs import load_scene, run, scene_text, toml_value  # noqa: E402
 from .studies import Study, read_study  # noqa: E402
 
 __version__ = _version().split()[1]
-__all__ = ["run", "read_results", "read_study", "Result", "Study", "InputError", "ComputationError", "toml_value"]
+__all__ = ["run", "load_scene", "scene_text", "read_results", "read_study", "Result", "Study", "InputError", "ComputationError", "toml_value"]

@@ -61,13 +61,18 @@ private:
   std::chrono::steady_clock::time_point last_check_ = std::chrono::steady_clock::now();
 };
 
-/// Runs a scene file with `settings` (dotted key, TOML value text) set over it into `output`;
-/// returns status, failure, summary (JSON text) and end time. Raises as described above.
-py::dict run_scene(const std::string& scene_file, const std::string& output, const std::vector<std::pair<std::string, std::string>>& settings,
-                   bool progress) {
+using Settings = std::vector<std::pair<std::string, std::string>>;
+
+/// `settings` (dotted key, TOML value text) as overrides.
+std::vector<common::TomlOverride> overrides_of(const Settings& settings) {
   std::vector<common::TomlOverride> overrides;
   for (const auto& [key, value] : settings) overrides.push_back({key, value});
-  run::Scene scene = run::read_scene_file(scene_file, overrides);
+  return overrides;
+}
+
+/// Runs `scene` into `output`; returns status, failure, summary (JSON text) and end time.
+/// Raises as described above.
+py::dict run_in_process(run::Scene scene, const std::string& output, bool progress) {
   PythonSignals signals;
   run::RunResult result;
   try {
@@ -88,6 +93,18 @@ py::dict run_scene(const std::string& scene_file, const std::string& output, con
   out["summary"] = result.summary.is_null() ? std::string("{}") : result.summary.dump();
   out["end_time"] = result.end_time;
   return out;
+}
+
+/// Runs a scene file with `settings` set over it.
+py::dict run_scene(const std::string& scene_file, const std::string& output, const Settings& settings, bool progress) {
+  return run_in_process(run::read_scene_file(scene_file, overrides_of(settings)), output, progress);
+}
+
+/// Runs a scene given as TOML text, named `name` (errors name it, paths are relative to its
+/// folder), with `settings` set over it.
+py::dict run_scene_text(const std::string& text, const std::string& name, const std::string& output, const Settings& settings,
+                        bool progress) {
+  return run_in_process(run::read_scene_text(text, name, overrides_of(settings)), output, progress);
 }
 
 }  // namespace
@@ -113,5 +130,6 @@ PYBIND11_MODULE(_isosid, m) {
     }
   });
   m.def("run_scene", &run_scene, py::arg("scene_file"), py::arg("output"), py::arg("settings"), py::arg("progress"));
+  m.def("run_scene_text", &run_scene_text, py::arg("text"), py::arg("name"), py::arg("output"), py::arg("settings"), py::arg("progress"));
   m.def("version", [] { return common::version_line("isosid"); });
 }

@@ -22,16 +22,22 @@ toml::table parse_toml_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (!in && !in.eof()) throw format::InputError(path, "", "cannot be read");
-  check_toml_nesting(text, path);
+  return parse_toml_text(text, path);
+}
+
+toml::table parse_toml_text(const std::string& text, const std::string& origin) {
+  if (text.size() > kMaxTomlBytes)
+    throw format::InputError(origin, "", "larger than " + std::to_string(kMaxTomlBytes >> 20) + " MiB: not a model or scene file");
+  check_toml_nesting(text, origin);
   try {
-    return toml::parse(text, path);
+    return toml::parse(text, origin);
   } catch (const toml::parse_error& e) {
     std::ostringstream where;
     where << "line " << e.source().begin.line << ", column " << e.source().begin.column;
     std::string what(e.description());
     for (char& c : what)
       if (c == '\n') c = ' ';
-    throw format::InputError(path, where.str(), "TOML syntax error: " + what);
+    throw format::InputError(origin, where.str(), "TOML syntax error: " + what);
   }
 }
 

@@ -9,7 +9,6 @@
 #include "output/force_spectrum.hpp"
 #include "output/paraview_series.hpp"
 #include "output/velocity_events.hpp"
-#include "isosid/common/number_text.hpp"
 
 #include <cmath>
 #include <optional>

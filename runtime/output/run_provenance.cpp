@@ -17,7 +17,8 @@ RunProvenance run_provenance(const Scene& scene) {
     if (path.empty() || !std::filesystem::is_regular_file(path, ec)) return;
     p.inputs.push_back({role, path, common::sha256_file(path)});
   };
-  add("scene", scene.file);
+  if (scene.text_sha256.empty()) add("scene", scene.file);
+  else p.inputs.push_back({"scene", scene.file, scene.text_sha256});  // given as text: no file to hash
   for (const BodySpec& body : scene.bodies) {
     add("model " + body.name, body.model_file);
     add("sid " + body.name, body.sid_file);

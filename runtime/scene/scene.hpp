@@ -159,7 +159,11 @@ struct OutputSettings {
 };
 
 struct Scene {
+  /// The scene file; for a scene given as text, the name it was given under (relative paths
+  /// are resolved from its folder, and errors name it).
   std::string file;
+  /// A scene given as text: its SHA-256, recorded in the run's provenance in place of a file's.
+  std::string text_sha256;
   /// Values set over the file's ("key = value", common/toml_override.hpp), in order; recorded
   /// in the run's provenance beside the file's hash.
   std::vector<std::string> overrides;
@@ -186,6 +190,9 @@ struct Scene {
 /// Reads and validates a scene file, with `overrides` set over it by dotted key; paths are
 /// resolved relative to the file.
 Scene read_scene_file(const std::string& path, const std::vector<common::TomlOverride>& overrides = {});
+/// Reads and validates a scene held as TOML text, as read_scene_file() a file: `name` stands
+/// for the file (errors name it, paths are resolved relative to its folder).
+Scene read_scene_text(const std::string& text, const std::string& name, const std::vector<common::TomlOverride>& overrides = {});
 
 std::string to_string(Dimension d);
 

@@ -6,6 +6,7 @@
 #include "scene/scene_reading.hpp"
 
 #include "isosid/common/number_text.hpp"
+#include "isosid/common/sha256.hpp"
 
 #include <filesystem>
 #include <algorithm>
@@ -151,8 +152,10 @@ const ShapeSpec* Scene::fixed_surface(const std::string& name) const {
   return nullptr;
 }
 
-Scene read_scene_file(const std::string& path, const std::vector<common::TomlOverride>& overrides) {
-  toml::table root = common::parse_toml_file(path);
+namespace {
+
+/// The scene of a parsed file or text `path`, with `overrides` set over it.
+Scene read_scene(toml::table root, const std::string& path, const std::vector<common::TomlOverride>& overrides) {
   common::apply_overrides(root, overrides, path);
   const TomlView top(root, path);
   top.allow_only({"simulation", "flexible_body", "rigid_body", "fixed_plane", "fixed_sphere", "fixed_cylinder", "contact",
@@ -170,6 +173,18 @@ Scene read_scene_file(const std::string& path, const std::vector<common::TomlOve
     top.table("simulation").fail("gravity", common::number_text(scene.gravity.stableNorm()) + " m/s^2 exceeds 1e8 m/s^2 (1e7 g)");
   read_reference(top, overrides, scene);
   read_adaptive(top, scene);
+  return scene;
+}
+
+}  // namespace
+
+Scene read_scene_file(const std::string& path, const std::vector<common::TomlOverride>& overrides) {
+  return read_scene(common::parse_toml_file(path), path, overrides);
+}
+
+Scene read_scene_text(const std::string& text, const std::string& name, const std::vector<common::TomlOverride>& overrides) {
+  Scene scene = read_scene(common::parse_toml_text(text, name), name, overrides);
+  scene.text_sha256 = common::sha256_hex(text);
   return scene;
 }
 

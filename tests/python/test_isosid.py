@@ -72,6 +72,38 @@ def test_values_set_over_the_scene_equal_the_command_lines(scene_a, tmp_path):
     assert abs(ratio / 2 ** 1.2 - 1) < 0.02
 
 
+def test_a_scene_as_a_dict_equals_its_file(scene_a, tmp_path):
+    scene = isosid.load_scene(scene_a)
+    scene["flexible_body"][0]["velocity"] = FASTER
+    r = isosid.run(scene, output=tmp_path / "dict", base_dir=scene_a.parent, progress=False)
+    f = isosid.run(scene_a, output=tmp_path / "file", set={"flexible_body.0.velocity": FASTER}, progress=False)
+    for key in ("peak_force_n", "duration_s", "impulse_ns"):
+        assert getattr(r.contacts["impact"], key) == getattr(f.contacts["impact"], key), key  # the same scene: to the last digit
+    # the provenance names the dict under its base folder and records its text's hash
+    scene_input = next(i for i in r.summary["provenance"]["inputs"] if i["role"] == "scene")
+    assert scene_input["path"] == os.path.join(str(scene_a.parent), "<scene dict>")
+    assert len(scene_input["sha256"]) == 64
+    # and its values set over it as a file's
+    s = isosid.run(scene, output=tmp_path / "set", base_dir=scene_a.parent, set={"flexible_body.0.velocity": [0.0, -0.1, 0.0]},
+                   progress=False)
+    b = isosid.run(scene_a, output=tmp_path / "base", progress=False)
+    assert s.contacts["impact"].peak_force_n == b.contacts["impact"].peak_force_n
+
+
+def test_a_bad_scene_dict_raises_input_error_naming_it_and_the_field(scene_a, tmp_path):
+    scene = isosid.load_scene(scene_a)
+    scene["simulation"]["end_time"] = -1.0
+    with pytest.raises(isosid.InputError, match=r"<scene dict>: simulation.end_time: must be positive"):
+        isosid.run(scene, output=tmp_path / "py", base_dir=scene_a.parent, progress=False)
+    # relative paths are the base folder's: elsewhere the SID is not found
+    scene = isosid.load_scene(scene_a)
+    with pytest.raises(isosid.InputError, match="flexible_body"):
+        isosid.run(scene, output=tmp_path / "py", base_dir=tmp_path / "elsewhere", progress=False)
+    with pytest.raises(TypeError):
+        isosid.run(["not", "a", "scene"], output=tmp_path / "py", progress=False)
+    assert not (tmp_path / "py").exists()
+
+
 def cli_message(result):
     """The command line's one line, without its program and class prefix."""
     line = result.stderr.strip().splitlines()[-1]

@@ -16,6 +16,8 @@ namespace isosid::common {
 
 /// Parses a TOML file; syntax errors become InputError with line and column.
 toml::table parse_toml_file(const std::string& path);
+/// Parses TOML text held in memory, as parse_toml_file() a file's; `origin` names it in errors.
+toml::table parse_toml_text(const std::string& text, const std::string& origin);
 
 /// Sets each override in `root` (parsed from `file`), replacing a value or adding a key to an
 /// existing table; the reader of the file then checks the result as if it had been written
