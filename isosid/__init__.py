@@ -33,9 +33,10 @@ for _prep in (_os.path.join(_build, "preprocess", "isosid-prep"),
 
 from ._isosid import ComputationError, InputError  # noqa: E402
 from ._isosid import version as _version  # noqa: E402
+from .models import modes, prepare  # noqa: E402
 from .results import Result, read_results  # noqa: E402
 from .runs import load_scene, run, scene_text, toml_value  # noqa: E402
 from .studies import Study, read_study  # noqa: E402
 
 __version__ = _version().split()[1]
-__all__ = ["run", "load_scene", "scene_text", "read_results", "read_study", "Result", "Study", "InputError", "ComputationError", "toml_value"]
+__all__ = ["run", "load_scene", "scene_text", "prepare", "modes", "read_results", "read_study", "Result", "Study", "InputError", "ComputationError", "toml_value"]

@@ -5,7 +5,7 @@
 #include "isosid/common/cli_parse.hpp"
 #include "pipeline/prepare.hpp"
 #include "reduce/memory_budget.hpp"
-#include "tools/prep_report.hpp"
+#include "pipeline/prep_report.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -104,6 +104,41 @@ def test_a_bad_scene_dict_raises_input_error_naming_it_and_the_field(scene_a, tm
     assert not (tmp_path / "py").exists()
 
 
+PREP = os.environ.get("ISOSID_PREP_PROGRAM", os.path.join(ROOT, "build", "preprocess", "isosid-prep"))
+
+
+def test_prepare_and_modes_equal_isosid_prep(tmp_path):
+    model = tmp_path / "sphere_axisym.model.toml"
+    shutil.copy(os.path.join(MODELS, "sphere_axisym.model.toml"), model)
+    report = isosid.prepare(model, progress=False)
+    assert report["output"] == str(tmp_path / "sphere_axisym.sid.h5") and os.path.isfile(report["output"])
+    cli_run = subprocess.run([PREP, "-q", "--json", str(model), "-o", str(tmp_path / "cli.sid.h5")], capture_output=True, text=True)
+    assert cli_run.returncode == 0, cli_run.stderr
+    cli_report = json.loads(cli_run.stdout)
+    for key in ("dofs", "nq", "reduction", "frequencies_hz", "contact_points"):
+        assert report[key] == cli_report[key], key  # the same code on the same model
+    with h5py.File(report["output"], "r") as a, h5py.File(tmp_path / "cli.sid.h5", "r") as b:
+        np.testing.assert_array_equal(a["refmod/frequencies_hz"][()], b["refmod/frequencies_hz"][()])
+    m = isosid.modes(model, 8, progress=False)
+    cli_modes = json.loads(subprocess.run([PREP, "-q", "--json", "--modes", "8", str(model)], capture_output=True, text=True).stdout)
+    assert m["frequencies_hz"] == cli_modes["frequencies_hz"] and len(m["frequencies_hz"]) == 8
+
+
+def test_prepare_refuses_bad_models_with_input_error(tmp_path):
+    with pytest.raises(isosid.InputError, match="missing.model.toml: file not found"):
+        isosid.prepare(tmp_path / "missing.model.toml", progress=False)
+    model = tmp_path / "bad.model.toml"
+    text = open(os.path.join(MODELS, "sphere_axisym.model.toml")).read().replace("poisson_ratio = 0.33", "poisson_ratio = 0.7")
+    model.write_text(text)
+    with pytest.raises(isosid.InputError, match="bad.model.toml: material.poisson_ratio"):
+        isosid.prepare(model, progress=False)
+    with pytest.raises(isosid.InputError, match="output: is the model file itself"):
+        isosid.prepare(model, output=model, progress=False)
+    with pytest.raises(isosid.InputError, match="count: must be at least 1"):
+        isosid.modes(os.path.join(MODELS, "sphere_axisym.model.toml"), 0, progress=False)
+    assert not (tmp_path / "bad.sid.h5").exists()
+
+
 def cli_message(result):
     """The command line's one line, without its program and class prefix."""
     line = result.stderr.strip().splitlines()[-1]

@@ -1,5 +1,5 @@
 // isosid-prep's reports; see prep_report.hpp.
-#include "tools/prep_report.hpp"
+#include "pipeline/prep_report.hpp"
 
 #include "isosid/common/number_text.hpp"
 #include "model/placement.hpp"
@@ -101,18 +101,54 @@ nlohmann::json placement_json(const ModelSpec& spec, std::string& text) {
 
 }  // namespace
 
+namespace {
+
+nlohmann::json modal_report(const ModalAnalysis& analysis, std::string& levels_text) {
+  nlohmann::json j = body_json(analysis.body, analysis.mass, levels_text);
+  j["rigid_body_modes"] = analysis.modes.rigid_body_modes;
+  j["frequencies_hz"] = as_vector(analysis.modes.frequencies_hz());
+  j["timings_s"] = timings_json(analysis.timings);
+  return j;
+}
+
+nlohmann::json sid_report(const PreparedBody& prepared, const std::string& output, std::string& levels_text, std::string& placement_text) {
+  const format::Sid& sid = prepared.sid;
+  nlohmann::json j = body_json(prepared.body, prepared.scalar_mass.sum(), levels_text);
+  j["nq"] = sid.nq();
+  j["n_low"] = sid.refmod.n_low;
+  j["n_high"] = sid.refmod.n_high();
+  j["reduction"] = prepared.basis.method;
+  j["removed_rigid_directions"] = prepared.basis.removed_rigid;
+  j["frequencies_hz"] = as_vector(sid.refmod.frequencies_hz);
+  j["contact_points"] = nlohmann::json::object();
+  for (const auto& c : sid.contact_surfaces) j["contact_points"][c.name] = c.points();
+  j["placement"] = placement_json(prepared.body.spec, placement_text);
+  j["output"] = output;
+  j["timings_s"] = timings_json(prepared.timings);
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json modal_report(const ModalAnalysis& analysis) {
+  std::string levels_text;
+  return modal_report(analysis, levels_text);
+}
+
+nlohmann::json sid_report(const PreparedBody& prepared, const std::string& output) {
+  std::string levels_text, placement_text;
+  return sid_report(prepared, output, levels_text, placement_text);
+}
+
 void print_modal_report(const ModalAnalysis& analysis, bool as_json) {
   const BodyModel& body = analysis.body;
   std::string levels_text;
-  nlohmann::json j = body_json(body, analysis.mass, levels_text);
-  const Eigen::VectorXd f = analysis.modes.frequencies_hz();
-  j["rigid_body_modes"] = analysis.modes.rigid_body_modes;
-  j["frequencies_hz"] = as_vector(f);
-  j["timings_s"] = timings_json(analysis.timings);
+  const nlohmann::json j = modal_report(analysis, levels_text);
   if (as_json) {
     std::cout << j.dump(2) << "\n";
     return;
   }
+  const Eigen::VectorXd f = analysis.modes.frequencies_hz();
   std::printf("%s (%s): %zu elements, degrees", body.spec.body_name.c_str(), format::to_string(body.spec.analysis).c_str(),
               body.space.elements.size());
   for (int p : body.space.degrees) std::printf(" %d", p);
@@ -126,18 +162,7 @@ void print_sid_report(const PreparedBody& prepared, const std::string& output, b
   const BodyModel& body = prepared.body;
   const format::Sid& sid = prepared.sid;
   std::string levels_text, placement_text;
-  nlohmann::json j = body_json(body, prepared.scalar_mass.sum(), levels_text);
-  j["nq"] = sid.nq();
-  j["n_low"] = sid.refmod.n_low;
-  j["n_high"] = sid.refmod.n_high();
-  j["reduction"] = prepared.basis.method;
-  j["removed_rigid_directions"] = prepared.basis.removed_rigid;
-  j["frequencies_hz"] = as_vector(sid.refmod.frequencies_hz);
-  j["contact_points"] = nlohmann::json::object();
-  for (const auto& c : sid.contact_surfaces) j["contact_points"][c.name] = c.points();
-  j["placement"] = placement_json(body.spec, placement_text);
-  j["output"] = output;
-  j["timings_s"] = timings_json(prepared.timings);
+  const nlohmann::json j = sid_report(prepared, output, levels_text, placement_text);
   if (as_json) {
     std::cout << j.dump(2) << "\n";
     return;
