@@ -1,6 +1,8 @@
 // Progress on stderr; see progress_line.hpp.
 #include "isosid/common/progress_line.hpp"
 
+#include <mutex>
+
 #include <atomic>
 #include <cstdio>
 #include <unistd.h>
@@ -44,10 +46,29 @@ std::string ProgressLine::time_left(double fraction, double elapsed_s) {
 
 namespace {
 std::atomic<double> g_work_fraction{-1.0};
-}
+std::mutex g_work_step_mutex;
+std::string g_work_step;
+std::function<void(const std::string&)> g_work_step_listener;
+}  // namespace
 
 void set_work_fraction(double fraction) { g_work_fraction.store(fraction, std::memory_order_relaxed); }
 
 double work_fraction() { return g_work_fraction.load(std::memory_order_relaxed); }
+
+void set_work_step(std::string step) {
+  const std::lock_guard<std::mutex> lock(g_work_step_mutex);
+  g_work_step = std::move(step);
+  if (g_work_step_listener) g_work_step_listener(g_work_step);
+}
+
+void set_work_step_listener(std::function<void(const std::string&)> listener) {
+  const std::lock_guard<std::mutex> lock(g_work_step_mutex);
+  g_work_step_listener = std::move(listener);
+}
+
+std::string work_step() {
+  const std::lock_guard<std::mutex> lock(g_work_step_mutex);
+  return g_work_step;
+}
 
 }  // namespace isosid::common

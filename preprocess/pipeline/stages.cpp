@@ -17,14 +17,29 @@ StderrProgress::~StderrProgress() { stop_ticker(); }
 void StderrProgress::started(const std::string& /*stage*/, const std::string& what) {
   stop_ticker();
   if (!line_.terminal()) {
+    // a log: a line for each new kind of step (its text up to a comma) as it is set, and for
+    // a step whose count moves on at most every 10 s, so that it stays readable through a
+    // long eigen solve
     line_.show(what + " ...");
+    common::set_work_step_listener([this, what, kind = std::string(), t0 = std::chrono::steady_clock::now(),
+                                    shown_at = -1e300](const std::string& step) mutable {
+      const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const std::string step_kind = step.substr(0, step.find(','));
+      if (step.empty() || (step_kind == kind && now - shown_at < 10)) return;
+      line_.show(what + " ... " + step);
+      kind = step_kind;
+      shown_at = now;
+    });
     return;
   }
+  // a terminal: one line, rewritten four times a second with the step, the elapsed time and
+  // (where the stage reports them) its fraction and the time left
   running_ = true;
   ticker_ = std::thread([this, what] {
     const auto t0 = std::chrono::steady_clock::now();
     std::unique_lock<std::mutex> lock(mutex_);
     do {
+      const std::string step = common::work_step();
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const double fraction = common::work_fraction();
       char text[96];
@@ -34,7 +49,7 @@ void StderrProgress::started(const std::string& /*stage*/, const std::string& wh
       } else {
         std::snprintf(text, sizeof text, " %.1f s", elapsed);
       }
-      line_.show(what + " ..." + text);
+      line_.show(what + " ..." + (step.empty() ? "" : " " + step + ",") + text);
     } while (!wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return !running_; }));
   });
 }
@@ -48,6 +63,7 @@ void StderrProgress::finished(const std::string& stage, double seconds) {
 }
 
 void StderrProgress::stop_ticker() {
+  common::set_work_step_listener(nullptr);
   if (!ticker_.joinable()) return;
   {
     const std::lock_guard<std::mutex> lock(mutex_);

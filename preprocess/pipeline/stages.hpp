@@ -28,8 +28,9 @@ public:
 StageObserver& no_progress();
 
 /// Progress on stderr: "PROGRAM: what ..." and "PROGRAM: stage done in 1.234 s". On a
-/// terminal the first is one line updated a few times a second with the stage's elapsed time,
-/// and its percentage and time left where the stage reports them (common::work_fraction).
+/// terminal the first is one line updated a few times a second with the step within the stage
+/// (common::work_step), its elapsed time, and its percentage and time left where the stage
+/// reports them (common::work_fraction); elsewhere each new step is a line of its own.
 class StderrProgress : public StageObserver {
 public:
   explicit StderrProgress(std::string program);
@@ -55,6 +56,7 @@ public:
   template <class F>
   auto run(const std::string& stage, const std::string& what, F&& f) {
     common::set_work_fraction(-1);  // unknown until the stage reports it
+    common::set_work_step("");
     observer_.started(stage, what);
     const auto t0 = std::chrono::steady_clock::now();
     auto finish = [&] {

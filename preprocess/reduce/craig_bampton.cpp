@@ -1,6 +1,7 @@
 // Craig-Bampton basis; see craig_bampton.hpp.
 #include "reduce/craig_bampton.hpp"
 
+#include "isosid/common/progress_line.hpp"
 #include "isosid/format/error.hpp"
 #include "reduce/modal_analysis.hpp"
 #include "reduce/sparse_cholesky.hpp"
@@ -42,6 +43,7 @@ Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const 
   // the interior stiffness is positive definite exactly when the interface fixes the body
   std::unique_ptr<SparseCholesky> interior;
   try {
+    common::set_work_step("constraint modes: factorizing the interior stiffness (" + std::to_string(Koo.rows()) + " DOFs)");
     interior = std::make_unique<SparseCholesky>(Koo);
   } catch (const format::ComputationError&) {
     throw format::ComputationError("Craig-Bampton: the " + std::to_string(interface_dofs.size()) +
@@ -53,6 +55,7 @@ Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const 
     const ModalResult fixed = lowest_modes(Koo, Moo, n_normal, lambda_scale);
     for (std::size_t i = 0; i < inner.size(); ++i) basis.row(inner[i]).head(n_normal) = fixed.modes.row(Eigen::Index(i));
   }
+  common::set_work_step("constraint modes: " + std::to_string(interface_dofs.size()) + " interface DOFs' solves");
   const Eigen::MatrixXd static_part = -interior->solve(Eigen::MatrixXd(Koi));
   for (std::size_t i = 0; i < inner.size(); ++i) basis.row(inner[i]).tail(static_part.cols()) = static_part.row(Eigen::Index(i));
   for (std::size_t j = 0; j < interface_dofs.size(); ++j) basis(interface_dofs[j], n_normal + Eigen::Index(j)) = 1.0;

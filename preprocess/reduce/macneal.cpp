@@ -1,6 +1,7 @@
 // MacNeal reduction; see macneal.hpp.
 #include "reduce/macneal.hpp"
 
+#include "isosid/common/progress_line.hpp"
 #include "isosid/format/error.hpp"
 #include "reduce/modal_analysis.hpp"
 #include "reduce/memory_budget.hpp"
@@ -43,6 +44,7 @@ Eigen::SparseMatrix<double> supported(const Eigen::SparseMatrix<double>& K, cons
 Eigen::MatrixXd elastic_unit_load_response(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
                                            const Eigen::MatrixXd& rigid, const std::vector<int>& dofs) {
   const Eigen::Index n = K.rows(), nb = Eigen::Index(dofs.size()), nr = rigid.cols();
+  common::set_work_step("boundary statics: factorizing the stiffness (" + std::to_string(n) + " DOFs)");
   const SparseCholesky factor(nr > 0 ? supported(K, rigid) : K);
   // P = I - M R (R^T M R)^-1 R^T removes the loads' rigid-body resultants (inertia relief)
   const Eigen::MatrixXd MR = nr > 0 ? sparse_times(M, rigid) : Eigen::MatrixXd(n, 0);
@@ -50,6 +52,8 @@ Eigen::MatrixXd elastic_unit_load_response(const Eigen::SparseMatrix<double>& K,
   Eigen::MatrixXd u(n, nb);
   for (Eigen::Index first = 0; first < nb; first += kBlock) {
     const Eigen::Index width = std::min(kBlock, nb - first);
+    common::set_work_step("boundary statics: unit loads " + std::to_string(first + 1) + "-" + std::to_string(first + width) + " of " +
+                          std::to_string(nb));
     Eigen::MatrixXd loads = Eigen::MatrixXd::Zero(n, width);
     for (Eigen::Index k = 0; k < width; ++k) loads(dofs[std::size_t(first + k)], k) = 1.0;
     if (nr > 0) loads.noalias() -= MR * gram.solve(rigid.transpose() * loads);
@@ -85,6 +89,7 @@ MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, co
   // modes' share, formed in place of the attachment modes it becomes
   auto attachment = out.T.leftCols(nb);
   attachment = elastic_unit_load_response(K, M, rigid, boundary_dofs);
+  common::set_work_step("attachment modes");
   attachment.noalias() -= Phi * (omega2.cwiseInverse().asDiagonal() * Phi_b.transpose());
   Eigen::MatrixXd dF_bb(nb, nb);
   for (Eigen::Index k = 0; k < nb; ++k) dF_bb.row(k) = attachment.row(boundary_dofs[std::size_t(k)]);

@@ -1,6 +1,8 @@
 // Shift-invert Lanczos with CHOLMOD on a symmetric form of the pencil; see modal_analysis.hpp.
 #include "reduce/modal_analysis.hpp"
 
+#include "isosid/common/progress_line.hpp"
+
 #include "isosid/format/error.hpp"
 #include "reduce/blas_threads.hpp"
 #include "reduce/memory_budget.hpp"
@@ -31,6 +33,7 @@ public:
     common_.print = 0;  // failures become the exception below, not text on stdout (which may be JSON)
     const Eigen::SparseMatrix<double> A = K - sigma * M;
     cholmod_sparse a = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+    common::set_work_step("eigen solve: factorizing K - sigma M (" + std::to_string(K.rows()) + " DOFs)");
     factor_ = cholmod_analyze(&a, &common_);
     if (factor_) {
       try {
@@ -56,6 +59,8 @@ public:
   Eigen::Index rows() const { return M_.rows(); }
   Eigen::Index cols() const { return M_.rows(); }
   void perform_op(const double* x_in, double* y_out) const {
+    // Lanczos's count of solves is its progress: how many it needs is known only at its end
+    common::set_work_step("eigen solve: Lanczos, " + std::to_string(++solves_) + " solves");
     Eigen::Map<Eigen::VectorXd> y(y_out, rows());
     y = Eigen::Map<const Eigen::VectorXd>(x_in, rows());
     solve_in_place(CHOLMOD_Lt, y);
@@ -104,6 +109,7 @@ private:
   cholmod_factor* factor_ = nullptr;
   mutable cholmod_dense *x_ = nullptr, *y_ = nullptr, *e_ = nullptr;
   mutable Eigen::VectorXd work_;
+  mutable long solves_ = 0;
 };
 
 }  // namespace

@@ -1,11 +1,14 @@
 // isosid-prep's command line: flags it cannot all honour are refused in one line (exit 2)
 // before any work, never some of them dropped; an output that is no regular file is refused
-// before the work too; --version.
+// before the work too; --version; the reduction's steps in its progress.
 #include "support/run_program.hpp"
+#include "support/scene_text.hpp"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sys/stat.h>
 
 using namespace isosid;
@@ -73,4 +76,23 @@ TEST_CASE("isosid-prep refuses a model above its memory limit before the stage, 
   // the modal report too, and a limit above the estimate changes nothing
   CHECK(test::run_program(kPrep + " -q --memory-limit 1e-6 --modes 6 " + kSphere).exit_status == 2);
   CHECK(test::run_program(kPrep + " -q --memory-limit 8 " + kSphere + " -o " + dir.path("x.sid.h5")).exit_status == 0);
+}
+
+TEST_CASE("isosid-prep names the reduction's steps in its progress, one line per kind of step in a log", "[prep][command-line]") {
+  const test::ScratchDir dir("prep-steps");
+  // the golden beam as a MacNeal model: its eigen solve, the boundary's statics and its blocks
+  std::ifstream in(std::string(ISOSID_GOLDEN_DIR) + "/beam_small.model.toml");
+  const std::string golden((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::ofstream(dir.path("beam.model.toml"))
+      << test::replace(golden, "method = \"modal\"\nnormal_modes = 6", "method = \"macneal\"\nnormal_modes = 6\nboundary_surface = \"contact\"");
+  const auto r = test::run_program(kPrep + " " + dir.path("beam.model.toml") + " -o " + dir.path("beam.sid.h5"));  // stderr is no terminal
+  REQUIRE(r.exit_status == 0);
+  CHECK_THAT(r.err, Contains("macneal reduction ... eigen solve: factorizing K - sigma M ("));
+  CHECK_THAT(r.err, Contains("macneal reduction ... eigen solve: Lanczos, "));
+  CHECK_THAT(r.err, Contains("macneal reduction ... boundary statics: factorizing the stiffness ("));
+  CHECK_THAT(r.err, Contains("macneal reduction ... boundary statics: unit loads 1-"));
+  // a log gets the Lanczos count once for so short a solve, not a line per solve
+  std::size_t lanczos = 0;
+  for (std::size_t at = r.err.find("Lanczos"); at != std::string::npos; at = r.err.find("Lanczos", at + 1)) ++lanczos;
+  CHECK(lanczos <= 2);
 }

@@ -3,6 +3,7 @@
 // lines, so that logs stay readable.
 #pragma once
 #include <chrono>
+#include <functional>
 #include <string>
 
 namespace isosid::common {
@@ -36,5 +37,14 @@ private:
 /// the process: the programs run one long loop at a time.
 void set_work_fraction(double fraction);
 double work_fraction();
+
+/// What the long work under way is doing now, within its stage (e.g. "Lanczos, 57 solves"),
+/// shown after the stage's own text; empty: nothing more to say. Set from any thread, like
+/// the fraction.
+void set_work_step(std::string step);
+std::string work_step();
+/// Called with every new step as it is set (in the setting thread, one call at a time): for
+/// progress in a log, which prints steps as they come rather than sampling them. Empty: none.
+void set_work_step_listener(std::function<void(const std::string&)> listener);
 
 }  // namespace isosid::common
