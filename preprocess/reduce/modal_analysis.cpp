@@ -60,7 +60,7 @@ public:
   Eigen::Index cols() const { return M_.rows(); }
   void perform_op(const double* x_in, double* y_out) const {
     // Lanczos's count of solves is its progress: how many it needs is known only at its end
-    common::set_work_step("eigen solve: Lanczos, " + std::to_string(++solves_) + " solves");
+    common::set_work_step("eigen solve: Lanczos, solve " + std::to_string(++solves_));
     Eigen::Map<Eigen::VectorXd> y(y_out, rows());
     y = Eigen::Map<const Eigen::VectorXd>(x_in, rows());
     solve_in_place(CHOLMOD_Lt, y);
