@@ -67,6 +67,13 @@ private:
 
 using Settings = std::vector<std::pair<std::string, std::string>>;
 
+/// Runs and preparations from several Python threads take turns: libhdf5 (Debian's, serial)
+/// is not thread-safe.
+std::mutex& hdf5_turn() {
+  static std::mutex turn;
+  return turn;
+}
+
 /// `settings` (dotted key, TOML value text) as overrides.
 std::vector<common::TomlOverride> overrides_of(const Settings& settings) {
   std::vector<common::TomlOverride> overrides;
@@ -81,9 +88,7 @@ py::dict run_in_process(run::Scene scene, const std::string& output, bool progre
   run::RunResult result;
   try {
     py::gil_scoped_release release;
-    // runs from several Python threads take turns: libhdf5 (Debian's, serial) is not thread-safe
-    static std::mutex one_run_at_a_time;
-    const std::lock_guard<std::mutex> turn(one_run_at_a_time);
+    const std::lock_guard<std::mutex> turn(hdf5_turn());
     run::RunFolder folder(output, scene);
     result = run::run_scene(std::move(scene), folder, {!progress, [&signals] { return signals.stop_requested(); }});
   } catch (...) {
@@ -126,6 +131,7 @@ std::string prepare(const std::string& model_file, std::string output, double co
   prep::ModelSpec spec = prep::read_model_file(model_file);
   if (contact_radius > 0) prep::set_contact_radius(spec, contact_radius, "contact_radius");
   py::gil_scoped_release release;
+  const std::lock_guard<std::mutex> turn(hdf5_turn());
   prep::StderrProgress shown("isosid.prepare");
   return prep::sid_report(prep::prepare(spec, {.build_sid = true, .output = output}, progress ? shown : prep::no_progress()), output).dump();
 }

@@ -1,10 +1,9 @@
 // Progress on stderr; see progress_line.hpp.
 #include "isosid/common/progress_line.hpp"
 
-#include <mutex>
-
 #include <atomic>
 #include <cstdio>
+#include <mutex>
 #include <unistd.h>
 
 namespace isosid::common {
