@@ -44,7 +44,8 @@ double work_fraction();
 void set_work_step(std::string step);
 std::string work_step();
 /// Called with every new step as it is set (in the setting thread, one call at a time): for
-/// progress in a log, which prints steps as they come rather than sampling them. Empty: none.
+/// progress in a log, which prints steps as they come rather than sampling them (it must not
+/// set a step itself). Empty: none.
 void set_work_step_listener(std::function<void(const std::string&)> listener);
 
 }  // namespace isosid::common
