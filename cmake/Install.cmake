@@ -27,5 +27,5 @@ if(ISOSID_PYTHON)
   set(ISOSID_PYTHON_INSTALL_DIR lib/python${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}/dist-packages
       CACHE PATH "where the Python package goes, under the prefix")
   install(DIRECTORY isosid/ DESTINATION ${ISOSID_PYTHON_INSTALL_DIR}/isosid FILES_MATCHING PATTERN "*.py" PATTERN __pycache__ EXCLUDE)
-  install(TARGETS _isosid LIBRARY DESTINATION ${ISOSID_PYTHON_INSTALL_DIR}/isosid)
+  install(TARGETS _isosid _isosid_prep LIBRARY DESTINATION ${ISOSID_PYTHON_INSTALL_DIR}/isosid)
 endif()

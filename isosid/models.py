@@ -1,8 +1,14 @@
 """isosid.prepare and isosid.modes: isosid-prep's work on a model file, in-process."""
+import importlib
 import json
 import os
 
-from . import _isosid
+from . import _hdf5
+
+
+def _prep():
+    """The compiled preparation, loaded on first use (its libraries would slow every import)."""
+    return importlib.import_module("._isosid_prep", __package__)
 
 
 def prepare(model, output=None, contact_radius=None, progress=True):
@@ -15,8 +21,9 @@ def prepare(model, output=None, contact_radius=None, progress=True):
     Raises InputError for a bad model (or one too large for the memory, before the stage that
     would not fit) and ComputationError for a failed computation. `progress` shows the stages
     on stderr."""
-    raw = _isosid.prepare(os.fspath(model), os.fspath(output) if output is not None else "",
-                          float(contact_radius) if contact_radius is not None else 0.0, bool(progress))
+    with _hdf5.turn:
+        raw = _prep().prepare(os.fspath(model), os.fspath(output) if output is not None else "",
+                              float(contact_radius) if contact_radius is not None else 0.0, bool(progress))
     return json.loads(raw)
 
 
@@ -24,4 +31,4 @@ def modes(model, count, progress=True):
     """The `count` lowest modes of the model file `model` (rigid-body modes included), as
     isosid-prep --modes --json reports them: `frequencies_hz`, `rigid_body_modes`, the body's
     size, mass and stage times. Writes nothing."""
-    return json.loads(_isosid.modes(os.fspath(model), int(count), bool(progress)))
+    return json.loads(_prep().modes(os.fspath(model), int(count), bool(progress)))

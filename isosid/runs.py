@@ -7,7 +7,7 @@ import os
 import tomllib
 from collections.abc import Mapping
 
-from . import _isosid
+from . import _hdf5, _isosid
 from .results import Result
 
 
@@ -72,12 +72,14 @@ def run(scene, output=None, set=None, progress=True, base_dir=None):  # noqa: A0
     if isinstance(scene, Mapping):
         output = os.fspath(output) if output is not None else os.path.join("out", "scene")
         name = os.path.join(os.path.abspath(base_dir if base_dir is not None else os.getcwd()), "<scene dict>")
-        raw = _isosid.run_scene_text(scene_text(scene), name, output, settings, bool(progress))
+        with _hdf5.turn:
+            raw = _isosid.run_scene_text(scene_text(scene), name, output, settings, bool(progress))
     else:
         if base_dir is not None:
             raise TypeError("isosid.run: base_dir is for a scene given as a dict (a file's paths are relative to the file)")
         output = os.fspath(output) if output is not None else default_output(scene)
-        raw = _isosid.run_scene(os.fspath(scene), output, settings, bool(progress))
+        with _hdf5.turn:
+            raw = _isosid.run_scene(os.fspath(scene), output, settings, bool(progress))
     result = Result(output, json.loads(raw["summary"]))
     if raw["status"] == "failed":
         error = _isosid.ComputationError(f"{raw['failure']}; results so far are in {output}")

@@ -5,17 +5,13 @@
 #include "isosid/common/toml_override.hpp"
 #include "isosid/common/version.hpp"
 #include "isosid/format/error.hpp"
-#include "isosid/format/file_kind.hpp"
-#include "model/model_file.hpp"
 #include "output/run_folder.hpp"
-#include "pipeline/prep_report.hpp"
 #include "pipeline/run_scene.hpp"
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <chrono>
-#include <filesystem>
 #include <mutex>
 #include <string>
 #include <utility>
@@ -67,8 +63,8 @@ private:
 
 using Settings = std::vector<std::pair<std::string, std::string>>;
 
-/// Runs and preparations from several Python threads take turns: libhdf5 (Debian's, serial)
-/// is not thread-safe.
+/// Runs from several Python threads take turns: libhdf5 (Debian's, serial) is not thread-safe
+/// (preparations, in the module _isosid_prep, take their turn in Python: isosid/models.py).
 std::mutex& hdf5_turn() {
   static std::mutex turn;
   return turn;
@@ -116,36 +112,6 @@ py::dict run_scene_text(const std::string& text, const std::string& name, const 
   return run_in_process(run::read_scene_text(text, name, overrides_of(settings)), output, progress);
 }
 
-/// isosid-prep's work on a model file in-process: its SID written to `output` (the model's
-/// name with .sid.h5 if empty), sized for `contact_radius` (m; 0: the model's own) where the
-/// model asks for one; returns isosid-prep's JSON report as text.
-std::string prepare(const std::string& model_file, std::string output, double contact_radius, bool progress) {
-  if (output.empty()) {
-    const std::string suffix = ".model.toml";
-    const bool named = model_file.size() > suffix.size() && model_file.compare(model_file.size() - suffix.size(), suffix.size(), suffix) == 0;
-    output = (named ? model_file.substr(0, model_file.size() - suffix.size()) : model_file) + ".sid.h5";
-  }
-  format::require_output_file(output);
-  std::error_code same;
-  if (std::filesystem::equivalent(model_file, output, same)) throw format::InputError(output, "output", "is the model file itself; the SID would overwrite it");
-  prep::ModelSpec spec = prep::read_model_file(model_file);
-  if (contact_radius > 0) prep::set_contact_radius(spec, contact_radius, "contact_radius");
-  py::gil_scoped_release release;
-  const std::lock_guard<std::mutex> turn(hdf5_turn());
-  prep::StderrProgress shown("isosid.prepare");
-  return prep::sid_report(prep::prepare(spec, {.build_sid = true, .output = output}, progress ? shown : prep::no_progress()), output).dump();
-}
-
-/// The model's `count` lowest modes (rigid-body modes included) as isosid-prep --modes reports
-/// them (JSON text).
-std::string modes(const std::string& model_file, int count, bool progress) {
-  if (count < 1) throw format::InputError(model_file, "count", "must be at least 1");
-  const prep::ModelSpec spec = prep::read_model_file(model_file);
-  py::gil_scoped_release release;
-  prep::StderrProgress shown("isosid.modes");
-  return prep::modal_report(prep::analyse_modes(spec, count, progress ? shown : prep::no_progress())).dump();
-}
-
 }  // namespace
 
 PYBIND11_MODULE(_isosid, m) {
@@ -170,7 +136,5 @@ PYBIND11_MODULE(_isosid, m) {
   });
   m.def("run_scene", &run_scene, py::arg("scene_file"), py::arg("output"), py::arg("settings"), py::arg("progress"));
   m.def("run_scene_text", &run_scene_text, py::arg("text"), py::arg("name"), py::arg("output"), py::arg("settings"), py::arg("progress"));
-  m.def("prepare", &prepare, py::arg("model_file"), py::arg("output"), py::arg("contact_radius"), py::arg("progress"));
-  m.def("modes", &modes, py::arg("model_file"), py::arg("count"), py::arg("progress"));
   m.def("version", [] { return common::version_line("isosid"); });
 }
