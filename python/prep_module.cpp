@@ -3,14 +3,12 @@
 // the preparation links gmsh and CHOLMOD, whose loading would otherwise cost every
 // `import isosid` about 0.2 s. Its errors are _isosid's InputError and ComputationError.
 #include "isosid/format/error.hpp"
-#include "isosid/format/file_kind.hpp"
 #include "model/model_file.hpp"
 #include "pipeline/prep_report.hpp"
 #include "pipeline/prepare.hpp"
 
 #include <pybind11/pybind11.h>
 
-#include <filesystem>
 #include <string>
 
 namespace py = pybind11;
@@ -22,14 +20,7 @@ namespace {
 /// name with .sid.h5 if empty), sized for `contact_radius` (m; 0: the model's own) where the
 /// model asks for one; returns isosid-prep's JSON report as text.
 std::string prepare(const std::string& model_file, std::string output, double contact_radius, bool progress) {
-  if (output.empty()) {
-    const std::string suffix = ".model.toml";
-    const bool named = model_file.size() > suffix.size() && model_file.compare(model_file.size() - suffix.size(), suffix.size(), suffix) == 0;
-    output = (named ? model_file.substr(0, model_file.size() - suffix.size()) : model_file) + ".sid.h5";
-  }
-  format::require_output_file(output);
-  std::error_code same;
-  if (std::filesystem::equivalent(model_file, output, same)) throw format::InputError(output, "output", "is the model file itself; the SID would overwrite it");
+  output = prep::sid_output(model_file, output, "output");
   prep::ModelSpec spec = prep::read_model_file(model_file);
   if (contact_radius > 0) prep::set_contact_radius(spec, contact_radius, "contact_radius");
   py::gil_scoped_release release;

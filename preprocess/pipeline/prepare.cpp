@@ -2,6 +2,7 @@
 #include "pipeline/prepare.hpp"
 
 #include "isosid/format/error.hpp"
+#include "isosid/format/file_kind.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "reduce/body_reduction.hpp"
 #include "reduce/memory_budget.hpp"
@@ -9,6 +10,7 @@
 #include "sid/transfer.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <optional>
 
 namespace isosid::prep {
@@ -89,6 +91,19 @@ ModalAnalysis analyse_body(const ModelSpec& spec, int n_modes, StageObserver& ob
 }
 
 }  // namespace
+
+std::string sid_output(const std::string& model_file, std::string output, const std::string& field) {
+  if (output.empty()) {
+    const std::string suffix = ".model.toml";
+    const bool named = model_file.size() > suffix.size() && model_file.compare(model_file.size() - suffix.size(), suffix.size(), suffix) == 0;
+    output = (named ? model_file.substr(0, model_file.size() - suffix.size()) : model_file) + ".sid.h5";
+  }
+  format::require_output_file(output);
+  std::error_code same_error;
+  if (std::filesystem::equivalent(model_file, output, same_error))
+    throw format::InputError(output, field, "is the model file itself; the SID would overwrite it");
+  return output;
+}
 
 PreparedBody prepare(const ModelSpec& spec, const PrepareOptions& options, StageObserver& observer) {
   return refusing_oversize(spec, [&] { return prepare_body(spec, options, observer); });

@@ -27,6 +27,11 @@ struct PreparedBody {
   StageTimings timings;      ///< every stage run, in order
 };
 
+/// Where a model's SID goes: `output`, or the model file's name with .sid.h5 for .model.toml
+/// where it is empty; checked before any work (an existing output must be a regular file, and
+/// never the model itself: InputError naming `field`, the option that gave it).
+std::string sid_output(const std::string& model_file, std::string output, const std::string& field);
+
 /// Stages refine, assembly, mass, coarse_model (hierarchical bodies), reduction, sid_terms, write.
 PreparedBody prepare(const ModelSpec& spec, const PrepareOptions& options = {}, StageObserver& observer = no_progress());
 

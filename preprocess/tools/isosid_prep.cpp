@@ -1,7 +1,6 @@
 // isosid-prep: builds an isogeometric body from a model file, assembles it, reduces it and
 // writes its SID (or, with --modes, reports its size and natural frequencies).
 #include "isosid/format/atomic_output.hpp"
-#include "isosid/format/file_kind.hpp"
 #include "isosid/common/cli_parse.hpp"
 #include "pipeline/prepare.hpp"
 #include "reduce/memory_budget.hpp"
@@ -10,18 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <utility>
 #include <vector>
 
 namespace {
-
-std::string default_output(const std::string& model) {
-  const std::string suffix = ".model.toml";
-  if (model.size() > suffix.size() && model.compare(model.size() - suffix.size(), suffix.size(), suffix) == 0)
-    return model.substr(0, model.size() - suffix.size()) + ".sid.h5";
-  return model + ".sid.h5";
-}
 
 /// "SURFACE:U[,V]" -> the surface's name and its tangential parameter(s).
 std::pair<std::string, std::vector<double>> parse_refinement_point(const std::string& text, const std::string& model_file) {
@@ -85,13 +76,7 @@ int main(int argc, char** argv) {
     // flags that cannot all be honoured are refused, not some of them silently dropped
     if (n_modes > 0 && app.count("--output")) throw format::InputError(model_file, "--modes", "reports only; it writes no SID (drop -o)");
     if (coarse && app.count("--refine-at")) throw format::InputError(model_file, "--coarse", "and --refine-at exclude each other");
-    if (n_modes == 0) {  // the SID's path, checked before any work: only a regular file is replaced, never the model
-      if (output.empty()) output = default_output(model_file);
-      format::require_output_file(output);
-      std::error_code same_error;
-      if (std::filesystem::equivalent(model_file, output, same_error))
-        throw format::InputError(output, "-o", "is the model file itself; the SID would overwrite it");
-    }
+    if (n_modes == 0) output = prep::sid_output(model_file, output, "-o");  // checked before any work
 
     if (memory_limit_gib > 0) prep::set_memory_limit(memory_limit_gib * 1024.0 * 1024.0 * 1024.0);
     prep::ModelSpec spec = prep::read_model_file(model_file);  // progress starts on valid input (a meshed body is meshed here: gmsh takes well under a second)
