@@ -12,7 +12,6 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
-#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -63,13 +62,6 @@ private:
 
 using Settings = std::vector<std::pair<std::string, std::string>>;
 
-/// Runs from several Python threads take turns: libhdf5 (Debian's, serial) is not thread-safe
-/// (preparations, in the module _isosid_prep, take their turn in Python: isosid/models.py).
-std::mutex& hdf5_turn() {
-  static std::mutex turn;
-  return turn;
-}
-
 /// `settings` (dotted key, TOML value text) as overrides.
 std::vector<common::TomlOverride> overrides_of(const Settings& settings) {
   std::vector<common::TomlOverride> overrides;
@@ -84,7 +76,7 @@ py::dict run_in_process(run::Scene scene, const std::string& output, bool progre
   run::RunResult result;
   try {
     py::gil_scoped_release release;
-    const std::lock_guard<std::mutex> turn(hdf5_turn());
+    // runs from several Python threads take turns on libhdf5 in Python (isosid/_hdf5.py)
     run::RunFolder folder(output, scene);
     result = run::run_scene(std::move(scene), folder, {!progress, [&signals] { return signals.stop_requested(); }});
   } catch (...) {
