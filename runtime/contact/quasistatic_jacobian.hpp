@@ -9,6 +9,7 @@
 // among the last eight).
 #pragma once
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 #include <string>
 #include <vector>
@@ -38,6 +39,12 @@ public:
   /// keeps its LU of the used rows, from U formed here).
   void solve(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd& b, Eigen::VectorXd& x,
              const Eigen::VectorXd* weights = nullptr) const;
+
+  /// x = K_h^-1 b.
+  void solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  /// X = K_h^-1 B for a sparse B (gap gradients: each column a few control points' rows).
+  /// False where K_h is dense and not positive definite (no inverse is kept then).
+  bool solve_stiffness(const Eigen::SparseMatrix<double>& B, Eigen::MatrixXd& X) const;
 
   /// Factorizations kept.
   static constexpr std::size_t kKeptFactorizations = 8;
@@ -70,8 +77,6 @@ private:
   bool direct(Eigen::Index r) const;
   /// Sizes every kept factorization's buffers for `capacity` columns of terms.
   void reserve(Eigen::Index capacity) const;
-  /// x = K^-1 b.
-  void solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// out = A x for a matrix A with K_h's dense blocks (K_h itself or its inverse), block by block.
   void multiply_blocks(const Eigen::MatrixXd& A, const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
 

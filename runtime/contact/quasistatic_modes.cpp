@@ -3,6 +3,7 @@
 
 #include "isosid/format/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace isosid::run {
@@ -44,6 +45,15 @@ QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBod
     exact_ = exact_ || c.exact();
   }
   z_.setZero(n);
+  // gap space condenses all the quasistatic modes onto the gaps: every contact on them must be in it
+  const auto in_gap_space = [](const SurfaceContact* c) { return c->gap_space(); };
+  if (std::any_of(contacts_.begin(), contacts_.end(), in_gap_space)) {
+    for (const SurfaceContact* c : contacts_)
+      if (!c->gap_space())
+        throw format::InputError(c->name(), "formulation",
+                                 "must be gap-space like the other contacts on the quasistatic modes of " + names_);
+    gap_space_ = std::make_unique<GapSpaceSolve>(contacts_, jacobian_);
+  }
 }
 
 void QuasistaticModes::scatter(const Eigen::VectorXd& z) const {
@@ -88,6 +98,7 @@ int QuasistaticModes::solve(const double* y) const {
   if (size() == 0) return 0;
   for (FloatingBody* b : bodies_) z_.segment(b->quasistatic_offset(), b->n_quasistatic()) = b->quasistatic_modes();
   update_held_loads(y);
+  if (gap_space_) return gap_space_->solve(y, held_loads_, z_, [&](const Eigen::VectorXd& z) { scatter(z); });
   int iterations = newton(y);
   if (!exact_) return iterations;
   // exact contact: Uzawa passes on the multipliers, each followed by Newton, until the forces

@@ -8,6 +8,7 @@
 // solved by Woodbury or directly, whichever is cheaper (QuasistaticJacobian).
 #pragma once
 #include "body/floating_body.hpp"
+#include "condensation/gap_space_solve.hpp"
 #include "contact/contact_model.hpp"
 #include "contact/quasistatic_jacobian.hpp"
 #include "contact/quasistatic_terms.hpp"
@@ -73,6 +74,7 @@ private:
   std::vector<const SurfaceContact*> contacts_;  ///< contacts touching one of them
   QuasistaticJacobian jacobian_;
   ContactModel model_;
+  std::unique_ptr<GapSpaceSolve> gap_space_;     ///< every contact in gap space: solves in place of Newton
   bool conservative_ = true;
   bool flat_ = true;                             ///< every contact's target is a fixed plane
   bool exact_ = false;                           ///< some contact is exact: Uzawa passes around Newton

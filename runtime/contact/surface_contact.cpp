@@ -44,6 +44,7 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
   quasistatic_row_norms_.resize(surface_.points());
   for (Eigen::Index g = 0; g < surface_.points(); ++g)
     quasistatic_row_norms_(g) = shape_columns_.block(body.nq() - nh, g * dim_, nh, dim_).norm();
+  if (spec_.gap_space) pairing_ = std::make_unique<GapPairing>(body, surface_, target);
   hints_.assign(std::size_t(surface_.points()), Eigen::Vector2d::Constant(NAN));
   recorded_pass_.assign(std::size_t(surface_.points()), -1);
   left_out_.assign(std::size_t(surface_.points()), 0);
@@ -188,7 +189,24 @@ Eigen::Vector3d SurfaceContact::point_force(Eigen::Index g, double p, const Eige
 }
 
 template <class F>
+void SurfaceContact::for_each_pressed_pair(const double* y, F&& f) const {
+  const GapPairing::Poses at = pairing_->poses(y);
+  GapPairing::Evaluation e;
+  for (std::size_t k = 0; k < pairing_->pairs().size(); ++k) {
+    pairing_->evaluate(at, k, e);
+    const Eigen::Index g = pairing_->pairs()[k].g;
+    if (pressure(g, e.gap) <= 0) continue;
+    pairing_->target_point(y, k, e, point_);
+    f(g, surface_.Psi.middleRows(g * dim_, dim_), e.slave_point, at.A_slave, point_);
+  }
+}
+
+template <class F>
 bool SurfaceContact::for_each_pressed(const double* y, F&& f) const {
+  if (pairing_ && pairing_->paired()) {
+    for_each_pressed_pair(y, f);
+    return true;
+  }
   solution_key(y, current_key_);
   if (!recorded_valid_ || current_key_ != recorded_key_) {
     for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A,
@@ -386,6 +404,7 @@ double SurfaceContact::update_multipliers(const double* y) const {
 
 double SurfaceContact::min_gap(const double* y) const {
   double smallest = INFINITY;
+  if (pairing_ && pairing_->paired() && !pairing_->pairs().empty()) return pairing_->min_gap(y);
   // Exact contact presses a point at a gap that closes to round-off, of either sign: its
   // effective gap g - lambda / c_p is negative exactly while it carries pressure. A point whose
   // gap bound is at or beyond the smallest gap found so far cannot be the smallest: the bounds

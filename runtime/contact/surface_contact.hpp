@@ -8,12 +8,14 @@
 // multiplier lambda that the static solve updates (Uzawa) until the active gaps close.
 #pragma once
 #include "body/floating_body.hpp"
+#include "condensation/gap_pairing.hpp"
 #include "contact/contact_target.hpp"
 #include "contact/gap_bounds.hpp"
 #include "contact/quasistatic_terms.hpp"
 #include "scene/scene.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <vector>
 
 namespace isosid::run {
@@ -78,6 +80,12 @@ public:
   /// finds the surface clear, a positive lower bound.
   double min_gap(const double* y) const;
 
+  /// Solved in gap space (condensation/gap_space_solve.hpp): its points paired once per impact.
+  bool gap_space() const { return spec_.gap_space; }
+  /// The pairing of a gap-space contact (its solve pairs and releases it); while paired, the
+  /// loads, points and gaps come from its pairs.
+  GapPairing& gap_pairing() const { return *pairing_; }
+
   /// Exact contact (augmented Lagrangian) rather than penalty.
   bool exact() const { return spec_.exact; }
   /// Uzawa update of the exact contact's multipliers at y: lambda <- max(0, lambda - c_p g)
@@ -132,7 +140,12 @@ private:
   Eigen::Vector3d sliding_velocity(const Eigen::Vector3d& P, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const double* y,
                                    const TargetPoint& t) const;
 
+  /// Calls f as for_each_pressed() does for the pressed pairs of the gap-space pairing.
+  template <class F>
+  void for_each_pressed_pair(const double* y, F&& f) const;
+
   ContactSpec spec_;
+  std::unique_ptr<GapPairing> pairing_;  ///< gap-space contacts
   std::string penalty_source_;  ///< the spec's, or "derived: ..."
   bool derived_ = false;        ///< the penalty was derived here (none given)
   const FloatingBody& body_;

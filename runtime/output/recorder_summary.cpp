@@ -111,6 +111,15 @@ nlohmann::json Recorder::contact_summary(std::size_t k) const {
   c["penalty_source"] = system_.contacts()[k].penalty_source();
   c["peak_force_n"] = peak_force_[k];
   c["points_at_peak"] = points_at_peak_[k];  // Gauss points carrying load at the peak-force step
+  const SurfaceContact& contact = system_.contacts()[k];
+  c["formulation"] = contact.gap_space() ? "gap-space" : "general";
+  if (contact.gap_space()) {
+    // pairings: once per impact, more where the points slid beyond what a pairing holds
+    const GapPairing& pairing = contact.gap_pairing();
+    c["pairs"] = pairing.largest_pairing();
+    c["pairings"] = pairing.pairings();
+    c["repairings"] = pairing.repairings();
+  }
   c["edge_reached_s"] = edge_reached_[k] < 0 ? json(nullptr) : json(edge_reached_[k]);
   c["interface_left_s"] = interface_left_[k] < 0 ? json(nullptr) : json(interface_left_[k]);
   if (const auto& e = system_.impact_estimates()[k])

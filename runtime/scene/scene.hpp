@@ -107,6 +107,9 @@ struct ContactSpec {
   /// The contact on a massless boundary solved exactly (augmented Lagrangian: the penalty
   /// becomes the augmentation, the gap of every active point closes); else penalty contact.
   bool exact = false;
+  /// Solved in gap space (condensation/gap_space_solve.hpp): the points paired once per impact,
+  /// the quasistatic modes condensed onto their gaps; else every point projected at every pass.
+  bool gap_space = false;
   /// Where a given penalty comes from, for the summary: the scene, or the adaptive loop's
   /// penalty search (adapt/adaptive_run sets it with the penalty)
   std::string penalty_source = "scene";

@@ -8,7 +8,7 @@ namespace {
 
 void read_contacts(const TomlView& top, ItemNames& names, Scene& scene) {
   for (const TomlView& c : top.tables("contact")) {
-    c.allow_only({"name", "body", "surface", "target", "target_surface", "penalty", "friction", "regularization", "enforcement"});
+    c.allow_only({"name", "body", "surface", "target", "target_surface", "penalty", "friction", "regularization", "enforcement", "formulation"});
     ContactSpec s;
     s.name = names.take(c);
     s.body = c.string("body");
@@ -30,6 +30,11 @@ void read_contacts(const TomlView& top, ItemNames& names, Scene& scene) {
     // adaptive integrator its contact set switches inside the stages and the steps chatter
     if (s.exact && scene.simulation.integrator != IntegratorKind::Leapfrog)
       c.fail("enforcement", "exact contact needs integrator = \"leapfrog\"");
+    const std::string formulation = c.string("formulation", "general");
+    if (formulation != "general" && formulation != "gap-space") c.fail("formulation", "must be general or gap-space");
+    s.gap_space = formulation == "gap-space";
+    if (s.gap_space && s.exact) c.fail("formulation", "gap-space contact is penalty contact (enforcement = \"penalty\")");
+    if (s.gap_space && s.friction > 0) c.fail("formulation", "gap-space contact is frictionless (friction = 0)");
     const BodySpec* slave = scene.body(s.body);
     if (!slave || slave->rigid) c.fail("body", "no flexible_body named '" + s.body + "' (the slave side carries the contact points)");
     const BodySpec* master = scene.body(s.target);

@@ -39,6 +39,10 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
     contacts_.emplace_back(c, *bodies_[slave_body_.back()], *targets_.back());
     require_boundary_covers(contacts_.back(), targets_.back()->body(), c.target_surface);
     if (c.exact) require_massless_points(contacts_.back());
+    const FloatingBody* target_body = targets_.back()->body();
+    if (c.gap_space && bodies_[slave_body_.back()]->n_quasistatic() == 0 && !(target_body && target_body->n_quasistatic() > 0))
+      throw format::InputError(c.name, "formulation",
+                               "gap-space contact condenses quasistatic modes (a massless boundary), and neither body has them");
   } catch (const format::InputError& e) {  // a surface the SID does not have: name the scene file
     throw format::InputError(scene.file, "contact " + c.name + "." + e.field(), e.problem());
   }

@@ -5,6 +5,7 @@
 // monitor on the massless boundary moves with it.
 #include "isosid/format/hdf5_file.hpp"
 #include "scene_runner.hpp"
+#include "support/impact_scene.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -19,65 +20,9 @@ TEST_CASE("impact modes: energies, restitution and bending labels of a centric i
   const test::ScratchDir dir("impact-modes");
   test::copy_model_file(dir, "sphere_seed003_macneal.model.toml");
   // 100 x 10 x 15 mm, bending in y (10 mm) lowest; graded to 0.3 mm under the centre of the top face
-  std::ofstream(dir.path("beam.model.toml")) << R"(
-[body]
-name = "beam"
-analysis = "solid"
-[material]
-youngs_modulus = 2.1e11
-poisson_ratio = 0.3
-density = 7800.0
-[geometry]
-primitive = "box"
-size = [0.1, 0.01, 0.015]
-[refinement]
-degrees = [2, 2, 2]
-subdivisions = [12, 2, 2]
-[[refinement.graded]]
-direction = "xi"
-toward = 0.5
-smallest = 0.3e-3
-growth = 1.6
-[[refinement.graded]]
-direction = "zeta"
-toward = 0.5
-smallest = 0.3e-3
-growth = 1.6
-[[contact_surface]]
-name = "impact"
-side = "top"
-interval = [[0.49, 0.51], [0.45, 0.55]]
-[reduction]
-method = "macneal"
-normal_modes = 12
-boundary_surface = "impact"
-[damping]
-kappa = 0.0
-)";
+  std::ofstream(dir.path("beam.model.toml")) << test::free_beam_model();
   const double v0 = 1.1, sphere_mass = 5.58e-3, beam_mass = 7800 * 0.1 * 0.01 * 0.015;
-  const json s = test::run_scene(dir, R"(
-[simulation]
-dimension = "3d"
-end_time = 40e-6
-integrator = "leapfrog"
-step = 0.1e-6
-output_interval = 0.5e-6
-[[flexible_body]]
-name = "sphere"
-sid = "sphere.sid.h5"
-model = "sphere_seed003_macneal.model.toml"
-position = [0.05, 0.015550001, 0.0075]
-velocity = [0.0, -1.1, 0.0]
-[[flexible_body]]
-name = "beam"
-sid = "beam.sid.h5"
-model = "beam.model.toml"
-[[contact]]
-name = "impact"
-body = "sphere"
-surface = "contact"
-target = "beam"
-target_surface = "impact"
+  const json s = test::run_scene(dir, test::sphere_on_free_beam_scene("") + R"(
 [[monitor]]
 name = "under"
 body = "beam"

@@ -1,0 +1,162 @@
+// Slave points paired once with target points; see gap_pairing.hpp.
+#include "condensation/gap_pairing.hpp"
+
+#include <cmath>
+
+namespace isosid::run {
+
+namespace {
+/// Entries below this fraction of a point's largest displacement row entry are round-off of the
+/// reduction (a massless boundary's surface points have 1e-17 in the columns of the normal modes).
+constexpr double kDroppedEntry = 1e-13;
+}  // namespace
+
+SparseRows SparseRows::from(const Eigen::Ref<const Eigen::MatrixXd>& rows) {
+  SparseRows s;
+  const double floor = kDroppedEntry * rows.cwiseAbs().maxCoeff();
+  for (Eigen::Index j = 0; j < rows.cols(); ++j)
+    if (rows.col(j).cwiseAbs().maxCoeff() > floor) s.columns.push_back(j);
+  s.values = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, Eigen::Index(s.columns.size()));
+  for (std::size_t i = 0; i < s.columns.size(); ++i) s.values.col(Eigen::Index(i)).head(rows.rows()) = rows.col(s.columns[i]);
+  return s;
+}
+
+GapPairing::GapPairing(const FloatingBody& slave, const format::ContactSurface& surface, const ContactTarget& target)
+    : slave_(slave), surface_(surface), target_(target), dim_(slave.sid().dim()) {
+  // the spacing of the points: each point's distance to its nearest neighbour
+  const Eigen::Index n = surface_.points();
+  spacing_ = Eigen::VectorXd::Constant(n, INFINITY);
+  for (Eigen::Index g = 0; g < n; ++g)
+    for (Eigen::Index h = g + 1; h < n; ++h) {
+      const double d = (surface_.position.row(g) - surface_.position.row(h)).norm();
+      spacing_(g) = std::min(spacing_(g), d), spacing_(h) = std::min(spacing_(h), d);
+    }
+  const Eigen::RowVectorXd centroid = n ? Eigen::RowVectorXd(surface_.position.colwise().mean()) : Eigen::RowVectorXd();
+  for (Eigen::Index g = 0; g < n; ++g) {
+    if (!std::isfinite(spacing_(g))) spacing_(g) = 0;
+    extent_ = std::max(extent_, (surface_.position.row(g) - centroid).norm());
+  }
+}
+
+void GapPairing::pair(const double* y) {
+  if (paired_) ++repairings_;
+  pairs_.clear();
+  ++pairings_;
+  paired_ = true;
+  target_.update(y);
+  const FloatingBody* master = target_.body();
+  const Eigen::Matrix3d A = slave_.orientation(y).toRotationMatrix();
+  const Eigen::Matrix3d A_target = master ? master->orientation(y).toRotationMatrix() : Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d r = slave_.r(y);
+  const Eigen::VectorXd& q = slave_.q(y);
+  TargetPoint t;
+  for (Eigen::Index g = 0; g < surface_.points(); ++g) {
+    const auto rows = surface_.Psi.middleRows(g * dim_, dim_);
+    Eigen::Vector3d P = Eigen::Vector3d::Zero();
+    P.head(dim_) = surface_.position.row(g).transpose() + rows * q;
+    Eigen::Vector2d hint = Eigen::Vector2d::Constant(NAN);
+    if (!target_.project(r + A * P, y, t, hint, ContactTarget::Fill::Loads)) continue;  // beside the target
+    target_.fill_loads(y, t);
+    Pair p;
+    p.g = g;
+    p.slave_rows = SparseRows::from(rows);
+    p.normal = A_target.transpose() * t.normal;
+    p.target_point = t.body_point;
+    if (master && t.Psi.cols() > 0) {
+      p.target_rows = SparseRows::from(t.Psi);
+      Eigen::Vector3d displacement = Eigen::Vector3d::Zero();
+      p.target_rows.add_product(master->q(y), displacement);
+      p.target_point -= displacement;
+    }
+    p.spacing = spacing_(g);
+    pairs_.push_back(std::move(p));
+  }
+  largest_ = std::max(largest_, pairs_.size());
+}
+
+GapPairing::Poses GapPairing::poses(const double* y) const {
+  Poses at;
+  at.r_slave = slave_.r(y);
+  at.A_slave = slave_.orientation(y).toRotationMatrix();
+  at.q_slave = &slave_.q(y);
+  if (const FloatingBody* master = target_.body()) {
+    at.r_target = master->r(y);
+    at.A_target = master->orientation(y).toRotationMatrix();
+    if (master->nq() > 0) at.q_target = &master->q(y);
+  }
+  return at;
+}
+
+void GapPairing::evaluate(const Poses& at, std::size_t k, Evaluation& e) const {
+  const Pair& p = pairs_[k];
+  e.slave_point.setZero();
+  e.slave_point.head(dim_) = surface_.position.row(p.g).transpose();
+  p.slave_rows.add_product(*at.q_slave, e.slave_point);
+  e.target_point = p.target_point;
+  if (at.q_target) p.target_rows.add_product(*at.q_target, e.target_point);
+  // a fixed target's frame is the world's (identity poses)
+  const Eigen::Vector3d x_target = at.r_target + at.A_target * e.target_point;
+  e.normal = at.A_target * p.normal;
+  const Eigen::Vector3d d = at.r_slave + at.A_slave * e.slave_point - x_target;
+  e.gap = e.normal.dot(d);
+  e.slip = (d - e.gap * e.normal).norm();
+}
+
+double GapPairing::min_gap(const double* y) const {
+  const Poses at = poses(y);
+  Evaluation e;
+  double smallest = INFINITY;
+  for (std::size_t k = 0; k < pairs_.size(); ++k) evaluate(at, k, e), smallest = std::min(smallest, e.gap);
+  return smallest;
+}
+
+void GapPairing::add_gradient(const double* y, std::size_t k, Eigen::Ref<Eigen::VectorXd> v) const {
+  const Pair& p = pairs_[k];
+  const FloatingBody* master = target_.body();
+  const Eigen::Matrix3d A_target = master ? master->orientation(y).toRotationMatrix() : Eigen::Matrix3d::Identity();
+  // the slave's displacement opens the gap along n, the target's closes it
+  auto add = [&](const FloatingBody& body, const SparseRows& rows, const Eigen::Vector3d& n_body, double sign) {
+    const Eigen::Index first = body.n_dynamic(), at = body.quasistatic_offset();
+    for (std::size_t i = 0; i < rows.columns.size(); ++i)
+      if (rows.columns[i] >= first) v(at + rows.columns[i] - first) += sign * n_body.dot(rows.values.col(Eigen::Index(i)));
+  };
+  if (slave_.n_quasistatic() > 0)
+    add(slave_, p.slave_rows, slave_.orientation(y).toRotationMatrix().transpose() * (A_target * p.normal), 1.0);
+  if (master && master->n_quasistatic() > 0) add(*master, p.target_rows, p.normal, -1.0);
+}
+
+bool GapPairing::slid(const double* y) const {
+  const Poses at = poses(y);
+  Evaluation e;
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    evaluate(at, k, e);
+    // a point far from the target may slide without harm: it counts from a spacing's distance on
+    if (e.gap < pairs_[k].spacing && e.slip > kSlipPerSpacing * pairs_[k].spacing) return true;
+  }
+  return false;
+}
+
+void GapPairing::target_point(const double* y, std::size_t k, const Evaluation& e, TargetPoint& t) const {
+  const Pair& p = pairs_[k];
+  const FloatingBody* master = target_.body();
+  t.gap = e.gap;
+  t.normal = e.normal;
+  t.body_point = e.target_point;
+  t.velocity.setZero();
+  if (!master) {
+    t.Psi.resize(dim_, 0);
+    return;
+  }
+  // the integrated columns only: a point load reads no others (FloatingBody::apply_force)
+  t.Psi = Eigen::MatrixXd::Zero(dim_, master->n_dynamic());
+  Eigen::Vector3d rate = Eigen::Vector3d::Zero();
+  const Eigen::VectorXd& qdot = master->qdot(y);
+  for (std::size_t i = 0; i < p.target_rows.columns.size(); ++i) {
+    const Eigen::Index j = p.target_rows.columns[i];
+    rate += p.target_rows.values.col(Eigen::Index(i)) * qdot(j);
+    if (j < master->n_dynamic()) t.Psi.col(j) = p.target_rows.values.col(Eigen::Index(i)).head(dim_);
+  }
+  t.velocity = master->v(y) + master->orientation(y).toRotationMatrix() * (master->omega(y).cross(e.target_point) + rate);
+}
+
+}  // namespace isosid::run

@@ -1,0 +1,106 @@
+// A contact's slave points paired once with target points, for the contact solved in gap space
+// (gap_space_solve.hpp). At pairing, every slave point is projected on the target; from then on
+// its target point is the same material point of the target (its body-frame reference point and
+// displacement rows), and its normal the target's normal there, turning with the target's frame.
+// Each gap is then linear in both bodies' elastic coordinates, with a constant gradient over
+// their quasistatic modes: what condenses a massless boundary onto the gaps. A pairing holds
+// while the points do not slide along the target by more than a quarter of their spacing
+// (slip()); beyond, the contact is paired again where it stands.
+#pragma once
+#include "body/floating_body.hpp"
+#include "contact/contact_target.hpp"
+
+#include <vector>
+
+namespace isosid::run {
+
+/// The non-zero columns of dim displacement rows (a point moves with the few control points
+/// whose basis functions cover it).
+struct SparseRows {
+  std::vector<Eigen::Index> columns;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> values;  ///< 3 x columns (unused rows zero)
+  /// Adds the rows' product with q (all the body's coordinates) to out.
+  void add_product(const Eigen::VectorXd& q, Eigen::Vector3d& out) const {
+    for (std::size_t i = 0; i < columns.size(); ++i) out += values.col(Eigen::Index(i)) * q(columns[i]);
+  }
+  /// The entries of a dense dim x nq block above a relative threshold of its largest.
+  static SparseRows from(const Eigen::Ref<const Eigen::MatrixXd>& rows);
+};
+
+class GapPairing {
+public:
+  /// One slave point and the target point it is paired with.
+  struct Pair {
+    Eigen::Index g = 0;                                   ///< the slave point
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitY();    ///< target normal: in the target body's frame, or world
+    Eigen::Vector3d target_point = Eigen::Vector3d::Zero();  ///< its undeformed position, same frame
+    SparseRows slave_rows, target_rows;                   ///< displacement rows (target: a flexible body's)
+    double spacing = 0;                                   ///< m: sqrt of the point's weight
+  };
+  /// Where a pair stands at a state.
+  struct Evaluation {
+    double gap = 0;                                         ///< m, along the target normal
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitY();      ///< world
+    Eigen::Vector3d slave_point = Eigen::Vector3d::Zero();  ///< slave body frame, deformed
+    Eigen::Vector3d target_point = Eigen::Vector3d::Zero(); ///< target body frame (world for a fixed target), deformed
+    double slip = 0;                                        ///< m, the points' distance along the target
+  };
+
+  /// Both bodies' frames and coordinates at one state, for evaluations there.
+  struct Poses {
+    Eigen::Vector3d r_slave = Eigen::Vector3d::Zero(), r_target = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d A_slave = Eigen::Matrix3d::Identity(), A_target = Eigen::Matrix3d::Identity();
+    const Eigen::VectorXd* q_slave = nullptr;
+    const Eigen::VectorXd* q_target = nullptr;  ///< null for a fixed or rigid target
+  };
+
+  GapPairing(const FloatingBody& slave, const format::ContactSurface& surface, const ContactTarget& target);
+
+  bool paired() const { return paired_; }
+  const std::vector<Pair>& pairs() const { return pairs_; }
+  /// Pairs every slave point that the target sees at y (its quasistatic coordinates as set).
+  void pair(const double* y);
+  void release() { paired_ = false; }
+  /// Times pair() was called, and how many of them replaced a pairing (one that slid).
+  long pairings() const { return pairings_; }
+  long repairings() const { return repairings_; }
+  /// The most pairs any pairing made.
+  std::size_t largest_pairing() const { return largest_; }
+
+  /// The poses at y (both bodies' coordinates as set now).
+  Poses poses(const double* y) const;
+  /// Pair k at the poses of some y.
+  void evaluate(const Poses& at, std::size_t k, Evaluation& e) const;
+  /// The smallest gap of the pairs at y (+inf without pairs).
+  double min_gap(const double* y) const;
+  /// d gap / d z of pair k over the stacked quasistatic coordinates (n entries; each body's
+  /// block at its quasistatic_offset()), with the frames' rotations at y.
+  void add_gradient(const double* y, std::size_t k, Eigen::Ref<Eigen::VectorXd> v) const;
+  /// Whether some pair has slid beyond a quarter of its spacing at y (the pairing no longer
+  /// holds).
+  bool slid(const double* y) const;
+  /// The target point of an evaluation as the loads need it: body point, normal, velocity
+  /// and the target's integrated rows.
+  void target_point(const double* y, std::size_t k, const Evaluation& e, TargetPoint& t) const;
+
+  /// The radius of the slave surface (its points around their centroid), m: the contact is
+  /// paired once it comes within a tenth of it (gap_space_solve.hpp).
+  double extent() const { return extent_; }
+
+  /// Slip allowed, as a fraction of a point's spacing.
+  static constexpr double kSlipPerSpacing = 0.25;
+
+private:
+  const FloatingBody& slave_;
+  const format::ContactSurface& surface_;
+  const ContactTarget& target_;
+  int dim_;
+  Eigen::VectorXd spacing_;  ///< per slave point: the distance to its nearest neighbour, m
+  double extent_ = 0;
+  std::vector<Pair> pairs_;
+  bool paired_ = false;
+  long pairings_ = 0, repairings_ = 0;
+  std::size_t largest_ = 0;
+};
+
+}  // namespace isosid::run

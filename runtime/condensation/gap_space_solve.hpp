@@ -1,0 +1,68 @@
+// The static contact problem of the quasistatic modes solved in gap space ([R3]'s formulation,
+// docs/design.md "Contact in gap space"). With every contact paired (gap_pairing.hpp), each
+// point's gap is linear in the stacked quasistatic coordinates z with a constant gradient, the
+// column k of V, and the equilibrium K z = h + V f (h the loads that do not depend on z, f >= 0
+// the points' normal forces) condenses onto the gaps:
+//   z = z_h + W f,  z_h = K^-1 h,  W = K^-1 V,
+//   g = g(z_h) + C f,  C = V^T W   (the compliance between the points, once per pairing).
+// Each solve then works on the points alone: the penalty law f = c_p w max(0, -g) by
+// semismooth Newton on the active points (their compliance block plus 1 / (c_p w) on its
+// diagonal, factored by Cholesky), warm-started from the last active set. Nothing per solve
+// grows with the boundary's coordinates but the two products with z.
+#pragma once
+#include "contact/quasistatic_jacobian.hpp"
+#include "contact/surface_contact.hpp"
+
+#include <vector>
+
+namespace isosid::run {
+
+class GapSpaceSolve {
+public:
+  /// Semismooth Newton iterations before the solve fails.
+  static constexpr int kMaxIterations = 50;
+
+  /// `contacts`: every contact on the quasistatic modes, each solved in gap space
+  /// (penalty, frictionless); `stiffness`: K of the stacked quasistatic modes.
+  GapSpaceSolve(const std::vector<const SurfaceContact*>& contacts, const QuasistaticJacobian& stiffness);
+
+  /// The quasistatic coordinates z at y under the loads `held` (which do not depend on z);
+  /// `scatter` sets them on the bodies. Pairs the contacts that come near, pairs again those
+  /// that slid, releases those that left. Returns the Newton iterations on the active set.
+  template <class Scatter>
+  int solve(const double* y, const Eigen::VectorXd& held, Eigen::VectorXd& z, Scatter&& scatter) {
+    stiffness_.solve_stiffness(held, z);
+    scatter(z);
+    if (update_pairings(y)) condense(y);
+    if (pairs_.empty()) return 0;
+    const int iterations = solve_forces(y);
+    for (const Eigen::Index a : active_index_) z.noalias() += forces_(a) * W_.col(a);
+    scatter(z);
+    return iterations;
+  }
+
+private:
+  /// One stacked pair: its contact and its index there.
+  struct StackedPair {
+    const SurfaceContact* contact = nullptr;
+    std::size_t k = 0;
+  };
+  /// Pairs, pairs again or releases each contact at y (z = z_h set); true if any changed.
+  bool update_pairings(const double* y);
+  /// V, W and C of the current pairs.
+  void condense(const double* y);
+  /// The forces at the free gaps of y (z = z_h set) into forces_; returns the iterations.
+  int solve_forces(const double* y);
+
+  std::vector<const SurfaceContact*> contacts_;
+  const QuasistaticJacobian& stiffness_;
+  std::vector<StackedPair> pairs_;
+  Eigen::MatrixXd W_, C_;
+  Eigen::VectorXd forces_, free_gaps_, gaps_, stiffness_per_point_;
+  std::vector<char> active_;
+  std::vector<Eigen::Index> active_index_;
+  Eigen::MatrixXd active_matrix_;
+  Eigen::VectorXd active_forces_;
+};
+
+}  // namespace isosid::run
