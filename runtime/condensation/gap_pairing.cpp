@@ -125,17 +125,6 @@ void GapPairing::add_gradient(const double* y, std::size_t k, Eigen::Ref<Eigen::
   if (master && master->n_quasistatic() > 0) add(*master, p.target_rows, p.normal, -1.0);
 }
 
-bool GapPairing::slid(const double* y) const {
-  const Poses at = poses(y);
-  Evaluation e;
-  for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    evaluate(at, k, e);
-    // a point far from the target may slide without harm: it counts from a spacing's distance on
-    if (e.gap < pairs_[k].spacing && e.slip > kSlipPerSpacing * pairs_[k].spacing) return true;
-  }
-  return false;
-}
-
 void GapPairing::target_point(const double* y, std::size_t k, const Evaluation& e, TargetPoint& t) const {
   const Pair& p = pairs_[k];
   const FloatingBody* master = target_.body();

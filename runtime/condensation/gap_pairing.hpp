@@ -76,18 +76,16 @@ public:
   /// d gap / d z of pair k over the stacked quasistatic coordinates (n entries; each body's
   /// block at its quasistatic_offset()), with the frames' rotations at y.
   void add_gradient(const double* y, std::size_t k, Eigen::Ref<Eigen::VectorXd> v) const;
-  /// Whether some pair has slid beyond a quarter of its spacing at y (the pairing no longer
-  /// holds).
-  bool slid(const double* y) const;
   /// The target point of an evaluation as the loads need it: body point, normal, velocity
   /// and the target's integrated rows.
   void target_point(const double* y, std::size_t k, const Evaluation& e, TargetPoint& t) const;
 
   /// The radius of the slave surface (its points around their centroid), m: the contact is
-  /// paired once it comes within a tenth of it (gap_space_solve.hpp).
+  /// paired once it comes within a fiftieth of it (gap_space_solve.cpp).
   double extent() const { return extent_; }
 
-  /// Slip allowed, as a fraction of a point's spacing.
+  /// Slip allowed, as a fraction of a point's spacing, for a point within a spacing of the
+  /// target: beyond, the pairing no longer holds.
   static constexpr double kSlipPerSpacing = 0.25;
 
 private:

@@ -10,9 +10,11 @@ namespace isosid::run {
 
 namespace {
 /// A contact is paired once its general gap is below this fraction of its slave surface's
-/// radius, and released once every pair is open by twice that: early enough that no step
-/// meets it unpaired, late enough that the points approach along their pairs.
-constexpr double kPairingDistancePerExtent = 0.1;
+/// radius (20 um for the seed sphere's), and released once every pair is open by twice that.
+/// A pairing made where the points already press is as good (they are projected where they
+/// stand), so this need not anticipate a large step; it bounds how long the pairs are
+/// evaluated around an impact.
+constexpr double kPairingDistancePerExtent = 0.02;
 }  // namespace
 
 GapSpaceSolve::GapSpaceSolve(const std::vector<const SurfaceContact*>& contacts, const QuasistaticJacobian& stiffness)
@@ -23,23 +25,48 @@ GapSpaceSolve::GapSpaceSolve(const std::vector<const SurfaceContact*>& contacts,
                              "gap-space contact condenses the quasistatic modes' stiffness, which is not positive definite here");
 }
 
-bool GapSpaceSolve::update_pairings(const double* y) {
-  bool changed = false;
+bool GapSpaceSolve::pair_approaching(const double* y) {
+  bool paired = false;
   for (const SurfaceContact* c : contacts_) {
     GapPairing& pairing = c->gap_pairing();
-    const double distance = kPairingDistancePerExtent * pairing.extent();
-    if (!pairing.paired()) {
-      if (c->min_gap(y) < distance) pairing.pair(y), changed = true;
-      continue;
-    }
-    if (pairing.slid(y)) {
-      pairing.pair(y);
-      changed = true;
-      continue;
-    }
-    if (pairing.min_gap(y) > 2 * distance) pairing.release(), changed = true;
+    if (!pairing.paired() && c->min_gap(y) < kPairingDistancePerExtent * pairing.extent()) pairing.pair(y), paired = true;
   }
-  return changed;
+  return paired;
+}
+
+bool GapSpaceSolve::evaluate_pairs(const double* y) {
+  const Eigen::Index m = Eigen::Index(pairs_.size());
+  free_gaps_.resize(m);
+  stiffness_per_point_.resize(m);
+  GapPairing::Evaluation e;
+  bool held = true;
+  // pairs are stacked contact by contact: each contact's run of them
+  for (Eigen::Index first = 0; first < m;) {
+    const SurfaceContact* c = pairs_[std::size_t(first)].contact;
+    GapPairing& pairing = c->gap_pairing();
+    const GapPairing::Poses at = pairing.poses(y);
+    double smallest = INFINITY;
+    bool slid = false;
+    Eigen::Index i = first;
+    for (; i < m && pairs_[std::size_t(i)].contact == c; ++i) {
+      const GapPairing::Pair& p = pairing.pairs()[pairs_[std::size_t(i)].k];
+      pairing.evaluate(at, pairs_[std::size_t(i)].k, e);
+      free_gaps_(i) = e.gap;
+      stiffness_per_point_(i) = c->penalty() * c->surface().weight(p.g);
+      smallest = std::min(smallest, e.gap);
+      // a point far from the target may slide without harm: it counts from a spacing's distance on
+      slid = slid || (e.gap < p.spacing && e.slip > GapPairing::kSlipPerSpacing * p.spacing);
+    }
+    if (slid) {
+      pairing.pair(y);
+      held = false;
+    } else if (smallest > 2 * kPairingDistancePerExtent * pairing.extent()) {
+      pairing.release();
+      held = false;
+    }
+    first = i;
+  }
+  return held;
 }
 
 void GapSpaceSolve::condense(const double* y) {
@@ -67,21 +94,8 @@ void GapSpaceSolve::condense(const double* y) {
   active_.assign(std::size_t(m), 0);
 }
 
-int GapSpaceSolve::solve_forces(const double* y) {
+int GapSpaceSolve::solve_forces() {
   const Eigen::Index m = Eigen::Index(pairs_.size());
-  free_gaps_.resize(m);
-  stiffness_per_point_.resize(m);
-  GapPairing::Evaluation e;
-  const SurfaceContact* posed = nullptr;  // the contact whose poses `at` holds (pairs are stacked contact by contact)
-  GapPairing::Poses at;
-  for (Eigen::Index i = 0; i < m; ++i) {
-    const StackedPair& p = pairs_[std::size_t(i)];
-    const GapPairing& pairing = p.contact->gap_pairing();
-    if (p.contact != posed) at = pairing.poses(y), posed = p.contact;
-    pairing.evaluate(at, p.k, e);
-    free_gaps_(i) = e.gap;
-    stiffness_per_point_(i) = p.contact->penalty() * p.contact->surface().weight(pairing.pairs()[p.k].g);
-  }
   // semismooth Newton on the active set: the active points' forces solve
   // (C_AA + diag(1 / (c_p w))) f_A = -g_free,A; a point leaves where its force would pull,
   // enters where its gap closes

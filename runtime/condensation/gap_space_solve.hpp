@@ -33,9 +33,11 @@ public:
   int solve(const double* y, const Eigen::VectorXd& held, Eigen::VectorXd& z, Scatter&& scatter) {
     stiffness_.solve_stiffness(held, z);
     scatter(z);
-    if (update_pairings(y)) condense(y);
+    if (pair_approaching(y)) condense(y);
+    // the pairs at z_h: their free gaps, and whether each pairing still holds
+    while (!pairs_.empty() && !evaluate_pairs(y)) condense(y);
     if (pairs_.empty()) return 0;
-    const int iterations = solve_forces(y);
+    const int iterations = solve_forces();
     for (const Eigen::Index a : active_index_) z.noalias() += forces_(a) * W_.col(a);
     scatter(z);
     return iterations;
@@ -47,12 +49,18 @@ private:
     const SurfaceContact* contact = nullptr;
     std::size_t k = 0;
   };
-  /// Pairs, pairs again or releases each contact at y (z = z_h set); true if any changed.
-  bool update_pairings(const double* y);
+  /// Pairs the unpaired contacts that came within their pairing distance at y (z = z_h set);
+  /// true if any was.
+  bool pair_approaching(const double* y);
   /// V, W and C of the current pairs.
   void condense(const double* y);
-  /// The forces at the free gaps of y (z = z_h set) into forces_; returns the iterations.
-  int solve_forces(const double* y);
+  /// The pairs' free gaps at y (z = z_h set) and their penalty stiffness c_p w, in one pass
+  /// that also checks each pairing: one that slid is paired again, one whose pairs are all
+  /// open by twice the pairing distance released. False if a pairing changed (the pairs must
+  /// then be condensed again).
+  bool evaluate_pairs(const double* y);
+  /// The forces at the free gaps into forces_; returns the Newton iterations.
+  int solve_forces();
 
   std::vector<const SurfaceContact*> contacts_;
   const QuasistaticJacobian& stiffness_;

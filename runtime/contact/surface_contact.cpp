@@ -403,8 +403,20 @@ double SurfaceContact::update_multipliers(const double* y) const {
 }
 
 double SurfaceContact::min_gap(const double* y) const {
-  double smallest = INFINITY;
   if (pairing_ && pairing_->paired() && !pairing_->pairs().empty()) return pairing_->min_gap(y);
+  // a gap-space contact's solve asks before the step's gap function does, at the same state
+  // while it is unpaired: the second asking is the first's answer
+  if (pairing_) {
+    solution_key(y, min_gap_key_);
+    if (min_gap_key_.size() == last_min_gap_key_.size() && min_gap_key_ == last_min_gap_key_) return last_min_gap_;
+    std::swap(min_gap_key_, last_min_gap_key_);
+    return last_min_gap_ = unpaired_min_gap(y);
+  }
+  return unpaired_min_gap(y);
+}
+
+double SurfaceContact::unpaired_min_gap(const double* y) const {
+  double smallest = INFINITY;
   // Exact contact presses a point at a gap that closes to round-off, of either sign: its
   // effective gap g - lambda / c_p is negative exactly while it carries pressure. A point whose
   // gap bound is at or beyond the smallest gap found so far cannot be the smallest: the bounds

@@ -140,12 +140,16 @@ private:
   Eigen::Vector3d sliding_velocity(const Eigen::Vector3d& P, const Eigen::Ref<const Eigen::MatrixXd>& Psi, const double* y,
                                    const TargetPoint& t) const;
 
+  /// min_gap() over the points as the general path finds them.
+  double unpaired_min_gap(const double* y) const;
   /// Calls f as for_each_pressed() does for the pressed pairs of the gap-space pairing.
   template <class F>
   void for_each_pressed_pair(const double* y, F&& f) const;
 
   ContactSpec spec_;
   std::unique_ptr<GapPairing> pairing_;  ///< gap-space contacts
+  mutable Eigen::VectorXd min_gap_key_, last_min_gap_key_;  ///< gap space: solution_key() of the last unpaired min_gap()
+  mutable double last_min_gap_ = 0;
   std::string penalty_source_;  ///< the spec's, or "derived: ..."
   bool derived_ = false;        ///< the penalty was derived here (none given)
   const FloatingBody& body_;
