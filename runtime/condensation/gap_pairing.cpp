@@ -43,6 +43,7 @@ void GapPairing::pair(const double* y) {
   pairs_.clear();
   ++pairings_;
   paired_ = true;
+  watching_ = false;
   target_.update(y);
   const FloatingBody* master = target_.body();
   const Eigen::Matrix3d A = slave_.orientation(y).toRotationMatrix();
@@ -100,6 +101,24 @@ void GapPairing::evaluate(const Poses& at, std::size_t k, Evaluation& e) const {
   const Eigen::Vector3d d = at.r_slave + at.A_slave * e.slave_point - x_target;
   e.gap = e.normal.dot(d);
   e.slip = (d - e.gap * e.normal).norm();
+}
+
+double GapPairing::watched_gap(const double* y) {
+  if (!watching_) return NAN;
+  const Poses at = poses(y);
+  Evaluation e;
+  double smallest = INFINITY;
+  const double distance = pairing_distance();
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    evaluate(at, k, e);
+    // a point that slid by d past its pair is off by about its target's curvature times d^2
+    // at most, far less than the 2 d kept in hand: beyond, the pairs no longer tell
+    if (e.slip > distance) return watching_ = false, NAN;
+    smallest = std::min(smallest, e.gap);
+  }
+  if (smallest > 2 * distance) return smallest;
+  watching_ = false;
+  return NAN;
 }
 
 double GapPairing::min_gap(const double* y) const {

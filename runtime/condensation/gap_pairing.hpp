@@ -60,7 +60,15 @@ public:
   const std::vector<Pair>& pairs() const { return pairs_; }
   /// Pairs every slave point that the target sees at y (its quasistatic coordinates as set).
   void pair(const double* y);
-  void release() { paired_ = false; }
+  /// Ends the pairing once the contact has left (every pair open by twice the pairing
+  /// distance). Its pairs are kept to watch the bodies: while no point has slid along the target
+  /// by the pairing distance, they tell the contact's gap far more cheaply than projecting.
+  void release() { paired_ = false, watching_ = true; }
+  bool watching() const { return watching_; }
+  /// While watching: the pairs' smallest gap at y if it stays beyond twice the pairing
+  /// distance and no point has slid by the pairing distance; otherwise watching ends here and
+  /// this returns NaN (the gap must then be found by projecting).
+  double watched_gap(const double* y);
   /// Times pair() was called, and how many of them replaced a pairing (one that slid).
   long pairings() const { return pairings_; }
   long repairings() const { return repairings_; }
@@ -80,9 +88,12 @@ public:
   /// and the target's integrated rows.
   void target_point(const double* y, std::size_t k, const Evaluation& e, TargetPoint& t) const;
 
-  /// The radius of the slave surface (its points around their centroid), m: the contact is
-  /// paired once it comes within a fiftieth of it (gap_space_solve.cpp).
-  double extent() const { return extent_; }
+  /// The contact is paired once its gap is below this, m: a fiftieth of the slave surface's
+  /// radius (its points around their centroid; 20 um for the seed sphere's). A pairing made
+  /// where the points already press is as good (they are projected where they stand), so this
+  /// need not anticipate a large step; it bounds how long the pairs are evaluated.
+  double pairing_distance() const { return kPairingDistancePerExtent * extent_; }
+  static constexpr double kPairingDistancePerExtent = 0.02;
 
   /// Slip allowed, as a fraction of a point's spacing, for a point within a spacing of the
   /// target: beyond, the pairing no longer holds.
@@ -96,7 +107,7 @@ private:
   Eigen::VectorXd spacing_;  ///< per slave point: the distance to its nearest neighbour, m
   double extent_ = 0;
   std::vector<Pair> pairs_;
-  bool paired_ = false;
+  bool paired_ = false, watching_ = false;
   long pairings_ = 0, repairings_ = 0;
   std::size_t largest_ = 0;
 };

@@ -5,17 +5,9 @@
 #include "isosid/format/error.hpp"
 
 #include <Eigen/SparseCore>
+#include <cmath>
 
 namespace isosid::run {
-
-namespace {
-/// A contact is paired once its general gap is below this fraction of its slave surface's
-/// radius (20 um for the seed sphere's), and released once every pair is open by twice that.
-/// A pairing made where the points already press is as good (they are projected where they
-/// stand), so this need not anticipate a large step; it bounds how long the pairs are
-/// evaluated around an impact.
-constexpr double kPairingDistancePerExtent = 0.02;
-}  // namespace
 
 GapSpaceSolve::GapSpaceSolve(const std::vector<const SurfaceContact*>& contacts, const QuasistaticJacobian& stiffness)
     : contacts_(contacts), stiffness_(stiffness) {
@@ -29,7 +21,10 @@ bool GapSpaceSolve::pair_approaching(const double* y) {
   bool paired = false;
   for (const SurfaceContact* c : contacts_) {
     GapPairing& pairing = c->gap_pairing();
-    if (!pairing.paired() && c->min_gap(y) < kPairingDistancePerExtent * pairing.extent()) pairing.pair(y), paired = true;
+    if (pairing.paired()) continue;
+    // watched from the last pairing while clearly apart (no projections), else projected
+    if (pairing.watching() && !std::isnan(pairing.watched_gap(y))) continue;
+    if (c->min_gap(y) < pairing.pairing_distance()) pairing.pair(y), paired = true;
   }
   return paired;
 }
@@ -60,7 +55,7 @@ bool GapSpaceSolve::evaluate_pairs(const double* y) {
     if (slid) {
       pairing.pair(y);
       held = false;
-    } else if (smallest > 2 * kPairingDistancePerExtent * pairing.extent()) {
+    } else if (smallest > 2 * pairing.pairing_distance()) {
       pairing.release();
       held = false;
     }

@@ -207,6 +207,8 @@ bool SurfaceContact::for_each_pressed(const double* y, F&& f) const {
     for_each_pressed_pair(y, f);
     return true;
   }
+  // a watched contact is open by twice its pairing distance (the static solve at y found it so)
+  if (pairing_ && pairing_->watching()) return true;
   solution_key(y, current_key_);
   if (!recorded_valid_ || current_key_ != recorded_key_) {
     for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A,
@@ -404,6 +406,10 @@ double SurfaceContact::update_multipliers(const double* y) const {
 
 double SurfaceContact::min_gap(const double* y) const {
   if (pairing_ && pairing_->paired() && !pairing_->pairs().empty()) return pairing_->min_gap(y);
+  if (pairing_ && pairing_->watching()) {
+    const double watched = pairing_->watched_gap(y);
+    if (!std::isnan(watched)) return watched;
+  }
   // a gap-space contact's solve asks before the step's gap function does, at the same state
   // while it is unpaired: the second asking is the first's answer
   if (pairing_) {
