@@ -534,7 +534,7 @@ TEST_CASE("contact elements sized from the expected contact radius", "[model][co
 }
 
 
-TEST_CASE("isosid-prep --refine-at moves a hierarchical refinement and its Craig-Bampton interface; malformed requests exit 2", "[model][thb]") {
+TEST_CASE("isosid-prep --refine-at moves a hierarchical refinement and its Craig-Bampton interface, malformed requests exit 2", "[model][thb]") {
   const std::string thb = std::string(ISOSID_MODELS_DIR) + "/sphere_axisym_thb.model.toml";
   auto spec = prep::read_model_file(thb);
   prep::set_refinement_point(spec, "contact", {0.05}, 0.5e-3, "test");

@@ -88,7 +88,7 @@ TEST_CASE("a results folder (-o) where the run would replace or remove an input 
   CHECK_NOTHROW(run::RunFolder(dir.path("out"), scene_in(dir, "results.h5")));
 }
 
-TEST_CASE("one run at a time writes a results folder; the second is refused naming the first's pid", "[runtime][run-folder]") {
+TEST_CASE("one run at a time writes a results folder, the second is refused naming the first's pid", "[runtime][run-folder]") {
   const test::ScratchDir dir("run-folder-lock");
   const run::Scene scene = scene_in(dir);
   const std::string out = dir.path("out");

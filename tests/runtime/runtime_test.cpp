@@ -474,7 +474,7 @@ TEST_CASE("scene A: sphere on sphere (Hertz) with the Craig-Bampton sphere", "[r
   CHECK(hertz["contact_radius_m"].get<double>() == Approx(0.168e-3).epsilon(3e-3));
 }
 
-TEST_CASE("a sphere sized from its contact radius is rebuilt for the scene's impact; a contact still closed at the end is flagged", "[runtime][contact]") {
+TEST_CASE("a sphere sized from its contact radius is rebuilt for the scene's impact, a contact still closed at the end is flagged", "[runtime][contact]") {
   // scene A at half the speed: Hertz gives a = 0.127 mm instead of the model's 0.168 mm, so
   // isosid-run runs on a SID built with elements of a/8 (the SID records the radius it was sized
   // for), kept in a cache beside the scene's own SID, which stays as it is; a second run reuses it

@@ -64,7 +64,7 @@ nlohmann::json row(const test::ScratchDir& dir, const std::string& out, int inde
 
 }  // namespace
 
-TEST_CASE("sweep: every case in one table; a case with a bad value is recorded and the rest run", "[sweep]") {
+TEST_CASE("sweep: every case in one table, a case with a bad value is recorded and the rest run", "[sweep]") {
   const test::ScratchDir dir("sweep_table");
   write_study(dir, "[-0.05, -0.1, \"fast\", -0.2]");
   const test::ProgramResult r = sweep(dir, "-o " + dir.path("out"));
