@@ -1,7 +1,7 @@
 // The quasistatic contact problem in gap space; see gap_space_solve.hpp.
 #include "condensation/gap_space_solve.hpp"
 
-#include "contact/quasistatic_modes.hpp"
+#include "condensation/quasistatic_modes.hpp"
 #include "isosid/format/error.hpp"
 
 #include <Eigen/SparseCore>

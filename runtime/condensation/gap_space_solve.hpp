@@ -10,7 +10,7 @@
 // diagonal, factored by Cholesky), warm-started from the last active set. Nothing per solve
 // grows with the boundary's coordinates but the two products with z.
 #pragma once
-#include "contact/quasistatic_jacobian.hpp"
+#include "condensation/quasistatic_jacobian.hpp"
 #include "contact/surface_contact.hpp"
 
 #include <vector>

@@ -11,7 +11,7 @@
 #include "condensation/gap_pairing.hpp"
 #include "contact/contact_target.hpp"
 #include "contact/gap_bounds.hpp"
-#include "contact/quasistatic_terms.hpp"
+#include "condensation/quasistatic_terms.hpp"
 #include "scene/scene.hpp"
 
 #include <algorithm>

@@ -6,7 +6,7 @@
 #include "contact/contact_target.hpp"
 #include "contact/hertz_contact.hpp"
 #include "contact/impact_estimate.hpp"
-#include "contact/quasistatic_modes.hpp"
+#include "condensation/quasistatic_modes.hpp"
 #include "contact/surface_contact.hpp"
 #include "contact/surface_touch.hpp"
 #include "joint/joint_constraints.hpp"

@@ -1,7 +1,7 @@
 // ARKODE wrappers; see time_integrator.hpp.
 #include "solve/time_integrator.hpp"
 
-#include "contact/quasistatic_modes.hpp"
+#include "condensation/quasistatic_modes.hpp"
 #include "isosid/common/number_text.hpp"
 #include "isosid/format/error.hpp"
 

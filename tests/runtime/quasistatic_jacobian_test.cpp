@@ -1,6 +1,6 @@
 // QuasistaticJacobian against dense solves of K + U V^T: Woodbury and the direct path, a
 // diagonal and a dense K, and its kept factorizations reused and replaced correctly.
-#include "contact/quasistatic_jacobian.hpp"
+#include "condensation/quasistatic_jacobian.hpp"
 
 #include <catch2/catch.hpp>
 

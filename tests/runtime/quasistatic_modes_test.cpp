@@ -1,7 +1,7 @@
 // In-process tests of QuasistaticModes: one static solve of the high modes under penalty
 // contact against a dense direct solve of the same equilibrium, and a partial contact against
 // the optimality conditions.
-#include "contact/quasistatic_modes.hpp"
+#include "condensation/quasistatic_modes.hpp"
 #include "contact/shape_target.hpp"
 #include "support/lumped_sid.hpp"
 

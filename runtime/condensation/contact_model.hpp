@@ -8,8 +8,8 @@
 // QuasistaticModes then needs one pass over the real contact points per step instead of one
 // per line-search trial: against a plane the model is exact and one step solves the problem.
 #pragma once
-#include "contact/quasistatic_jacobian.hpp"
-#include "contact/quasistatic_terms.hpp"
+#include "condensation/quasistatic_jacobian.hpp"
+#include "condensation/quasistatic_terms.hpp"
 
 #include <vector>
 

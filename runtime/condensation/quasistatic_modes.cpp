@@ -1,5 +1,5 @@
 // Newton solve of the quasistatic modes; see quasistatic_modes.hpp.
-#include "contact/quasistatic_modes.hpp"
+#include "condensation/quasistatic_modes.hpp"
 
 #include "isosid/format/error.hpp"
 

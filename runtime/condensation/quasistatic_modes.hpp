@@ -9,9 +9,9 @@
 #pragma once
 #include "body/floating_body.hpp"
 #include "condensation/gap_space_solve.hpp"
-#include "contact/contact_model.hpp"
-#include "contact/quasistatic_jacobian.hpp"
-#include "contact/quasistatic_terms.hpp"
+#include "condensation/contact_model.hpp"
+#include "condensation/quasistatic_jacobian.hpp"
+#include "condensation/quasistatic_terms.hpp"
 #include "contact/surface_contact.hpp"
 #include "isosid/format/error.hpp"
 

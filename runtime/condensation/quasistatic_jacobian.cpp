@@ -1,5 +1,5 @@
 // Stiffness of the quasistatic modes and its Newton Jacobian; see quasistatic_jacobian.hpp.
-#include "contact/quasistatic_jacobian.hpp"
+#include "condensation/quasistatic_jacobian.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Linear model of the quasistatic contact problem; see contact_model.hpp.
-#include "contact/contact_model.hpp"
+#include "condensation/contact_model.hpp"
 
 #include <cmath>
 
