@@ -73,6 +73,8 @@ void GapPairing::pair(const double* y) {
     pairs_.push_back(std::move(p));
   }
   largest_ = std::max(largest_, pairs_.size());
+  // no point found the target from where it stands: the contact stays unpaired (projected)
+  if (pairs_.empty()) paired_ = false;
 }
 
 GapPairing::Poses GapPairing::poses(const double* y) const {

@@ -64,6 +64,11 @@ bool GapSpaceSolve::evaluate_pairs(const double* y) {
   return held;
 }
 
+void GapSpaceSolve::throw_unsettled_pairing() const {
+  throw QuasistaticDivergence("the gap-space pairing of contact '" + contacts_.front()->name() + "' slid again as soon as it was made (" +
+                              std::to_string(kMaxRepairings) + " times at one state)");
+}
+
 void GapSpaceSolve::condense(const double* y) {
   pairs_.clear();
   for (const SurfaceContact* c : contacts_) {

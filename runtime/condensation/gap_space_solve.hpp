@@ -21,6 +21,8 @@ class GapSpaceSolve {
 public:
   /// Semismooth Newton iterations before the solve fails.
   static constexpr int kMaxIterations = 50;
+  /// Pairings made again at one state before the solve fails.
+  static constexpr int kMaxRepairings = 3;
 
   /// `contacts`: every contact on the quasistatic modes, each solved in gap space
   /// (penalty, frictionless); `stiffness`: K of the stacked quasistatic modes.
@@ -34,8 +36,12 @@ public:
     stiffness_.solve_stiffness(held, z);
     scatter(z);
     if (pair_approaching(y)) condense(y);
-    // the pairs at z_h: their free gaps, and whether each pairing still holds
-    while (!pairs_.empty() && !evaluate_pairs(y)) condense(y);
+    // the pairs at z_h: their free gaps, and whether each pairing still holds (a pairing made
+    // here holds here: its points were just projected)
+    for (int pass = 0; !pairs_.empty() && !evaluate_pairs(y); ++pass) {
+      if (pass == kMaxRepairings) throw_unsettled_pairing();
+      condense(y);
+    }
     if (pairs_.empty()) return 0;
     const int iterations = solve_forces();
     for (const Eigen::Index a : active_index_) z.noalias() += forces_(a) * W_.col(a);
@@ -61,6 +67,8 @@ private:
   bool evaluate_pairs(const double* y);
   /// The forces at the free gaps into forces_; returns the Newton iterations.
   int solve_forces();
+  /// Throws QuasistaticDivergence: the pairings at one state did not hold after kMaxRepairings.
+  [[noreturn]] void throw_unsettled_pairing() const;
 
   std::vector<const SurfaceContact*> contacts_;
   const QuasistaticJacobian& stiffness_;
