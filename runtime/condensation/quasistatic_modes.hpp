@@ -8,8 +8,8 @@
 // solved by Woodbury or directly, whichever is cheaper (QuasistaticJacobian).
 #pragma once
 #include "body/floating_body.hpp"
-#include "condensation/gap_space_solve.hpp"
 #include "condensation/contact_model.hpp"
+#include "condensation/gap_space_solve.hpp"
 #include "condensation/quasistatic_jacobian.hpp"
 #include "condensation/quasistatic_terms.hpp"
 #include "contact/surface_contact.hpp"

@@ -9,9 +9,9 @@
 #pragma once
 #include "body/floating_body.hpp"
 #include "condensation/gap_pairing.hpp"
+#include "condensation/quasistatic_terms.hpp"
 #include "contact/contact_target.hpp"
 #include "contact/gap_bounds.hpp"
-#include "condensation/quasistatic_terms.hpp"
 #include "scene/scene.hpp"
 
 #include <algorithm>

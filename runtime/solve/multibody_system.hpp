@@ -3,10 +3,10 @@
 // damping + friction), so that the energy balance can be checked to integration accuracy.
 #pragma once
 #include "body/floating_body.hpp"
+#include "condensation/quasistatic_modes.hpp"
 #include "contact/contact_target.hpp"
 #include "contact/hertz_contact.hpp"
 #include "contact/impact_estimate.hpp"
-#include "condensation/quasistatic_modes.hpp"
 #include "contact/surface_contact.hpp"
 #include "contact/surface_touch.hpp"
 #include "joint/joint_constraints.hpp"
