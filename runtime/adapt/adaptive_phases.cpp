@@ -11,6 +11,7 @@
 #include "output/run_report.hpp"
 #include "output/warning_list.hpp"
 #include "scene/sid_provider.hpp"
+#include "solve/observer_list.hpp"
 
 #include <cstdio>
 #include <exception>
@@ -84,10 +85,12 @@ PhaseRun AdaptivePhases::run_phase(Simulation& simulation, const PhaseRecorder::
     // accepted: the folder now holds this run, and no phases or frames of an earlier one
     folder_.start(scene_.file);
   }
-  if (series) recorder.draw_frames(&*series);
+  ObserverList observers;  // the recorder first: the frames draw the static solution its samples leave
+  observers.add(recorder);
+  if (series) observers.add(*series);
   const double start = simulation.time();
   PhaseRun out;
-  out.outcome = simulation.run(recorder);
+  out.outcome = simulation.run(observers);
   out.over = recorder.phase_over() && out.outcome.status == "interrupted";
   if (out.over) out.outcome.status = "completed";
   std::filesystem::create_directories(folder);

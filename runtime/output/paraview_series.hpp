@@ -6,6 +6,7 @@
 #pragma once
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
+#include "solve/simulation.hpp"
 
 #include "isosid/format/vtk_xml.hpp"
 
@@ -14,7 +15,9 @@
 
 namespace isosid::run {
 
-class ParaviewSeries {
+/// An observer of the run: after the recorder in an ObserverList (whose sample sets the
+/// quasistatic coordinates of y that the frames draw).
+class ParaviewSeries : public SimulationObserver {
 public:
   /// Refuses (InputError on the scene's [output].paraview) a flexible body whose SID has no
   /// viewing mesh. Writes nothing yet.
@@ -25,7 +28,9 @@ public:
 
   /// Writes a frame at the first sample at or after each frame time (the system's
   /// quasistatic coordinates must be those of y, as after MultibodySystem::contact_states).
-  void sample(double t, const double* y);
+  void sample(double t, const double* y) override;
+  void step(double, const double*) override {}
+  void contact_event(int, bool, double) override {}
   /// Writes paraview/scene.pvd listing the frames written so far (also after a failed or
   /// interrupted run) and returns its path.
   std::string write_collection() const;

@@ -7,7 +7,6 @@
 #include "isosid/format/hdf5_file.hpp"
 #include "contact/deformed_patch.hpp"
 #include "output/force_spectrum.hpp"
-#include "output/paraview_series.hpp"
 #include "output/velocity_events.hpp"
 
 #include <cmath>
@@ -133,7 +132,6 @@ void Recorder::sample(double t, const double* y) {
     if (first) monitor_events_[m].start(t, monitored[m]);
   }
   for (StressMonitor& s : stress_monitors_) s.sample(y);
-  if (frames_) frames_->sample(t, y);  // the quasistatic coordinates are y's (contact_states above)
 }
 
 void Recorder::step(double t, const double* y) {

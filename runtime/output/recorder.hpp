@@ -21,7 +21,6 @@
 
 namespace isosid::run {
 
-class ParaviewSeries;
 
 struct ContactInterval {
   double start = 0, end = -1;  ///< end < 0: still in contact
@@ -32,11 +31,9 @@ class Recorder : public SimulationObserver {
 public:
   Recorder(const MultibodySystem& system, const Scene& scene);
 
-  /// Time-series sample (called at output times and at events), and a ParaView frame where
-  /// one is due.
+  /// Time-series sample (called at output times and at events); it leaves the system's
+  /// quasistatic coordinates those of y (observers after it, the ParaView frames, draw them).
   void sample(double t, const double* y) override;
-  /// ParaView frames of this run's samples into `frames` (it must outlive the recorder).
-  void draw_frames(ParaviewSeries* frames) { frames_ = frames; }
   /// Per accepted step: peak force, impulse, monitor reversals.
   void step(double t, const double* y) override;
   /// A contact's gap changed sign at t: closing (onset) or opening (release).
@@ -115,7 +112,6 @@ private:
   std::vector<StressMonitor> stress_monitors_;
   std::vector<std::optional<ImpactModes>> impact_modes_;  ///< per contact with a flexible target
   double output_s_ = 0;  ///< time spent in sample() and step()
-  ParaviewSeries* frames_ = nullptr;
 
   /// Adds the time of its scope to a total.
   class OutputClock {

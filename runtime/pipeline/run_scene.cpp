@@ -9,6 +9,7 @@
 #include "output/warning_list.hpp"
 #include "scene/sid_provider.hpp"
 #include "solve/contact_resolution.hpp"
+#include "solve/observer_list.hpp"
 #include "solve/run_checks.hpp"
 
 #include <chrono>
@@ -19,14 +20,16 @@
 namespace isosid::run {
 namespace {
 
-/// The recorder, with its progress on stderr about once a second unless quiet (one updating
-/// line on a terminal), and the caller's stop request asked at every step.
-class ProgressRecorder : public Recorder {
+/// The run's progress on stderr about once a second unless quiet (one updating line on a
+/// terminal), and the caller's stop request asked at every step.
+class ProgressReport : public SimulationObserver {
 public:
-  ProgressRecorder(const Simulation& simulation, const RunOptions& options)
-      : Recorder(simulation.system(), simulation.scene()), options_(options) {}
+  explicit ProgressReport(const RunOptions& options) : options_(options) {}
   /// Ends the progress line before the run's report.
-  void end_progress() { line_.finish(); }
+  void end() { line_.finish(); }
+  void sample(double, const double*) override {}
+  void step(double, const double*) override {}
+  void contact_event(int, bool, double) override {}
   void progress(double t, double end_time, long steps) override {
     if (options_.quiet) return;
     const double fraction = t / end_time;
@@ -61,12 +64,16 @@ RunResult run_plain(Scene scene, RunFolder& folder, const RunOptions& options) {
   if (!options.quiet) announce_predictions(simulation);
   std::optional<ParaviewSeries> paraview;
   if (simulation.scene().output.paraview) paraview.emplace(simulation.system(), simulation.scene(), folder.path());
-  ProgressRecorder recorder(simulation, options);
-  if (paraview) recorder.draw_frames(&*paraview);
+  Recorder recorder(simulation.system(), simulation.scene());
+  ProgressReport progress(options);
+  ObserverList observers;  // the recorder first: the frames draw the static solution its samples leave
+  observers.add(recorder);
+  if (paraview) observers.add(*paraview);
+  observers.add(progress);
   if (options.stop_requested()) return {{"interrupted", ""}, {}, 0.0, false};
   folder.start(scene_file);  // only once the scene, its SIDs and monitors are accepted
-  const RunOutcome outcome = simulation.run(recorder);
-  recorder.end_progress();
+  const RunOutcome outcome = simulation.run(observers);
+  progress.end();
   RunResult result{outcome, write_run_report(folder.path(), recorder, simulation, outcome), simulation.time(), true};
   if (paraview) {
     const std::string collection = paraview->write_collection();
