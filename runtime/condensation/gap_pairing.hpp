@@ -35,7 +35,7 @@ public:
     Eigen::Vector3d normal = Eigen::Vector3d::UnitY();    ///< target normal: in the target body's frame, or world
     Eigen::Vector3d target_point = Eigen::Vector3d::Zero();  ///< its undeformed position, same frame
     SparseRows slave_rows, target_rows;                   ///< displacement rows (target: a flexible body's)
-    double spacing = 0;                                   ///< m: sqrt of the point's weight
+    double spacing = 0;                                   ///< m: the slave point's distance to its nearest neighbour
   };
   /// Where a pair stands at a state.
   struct Evaluation {
@@ -89,7 +89,7 @@ public:
   void target_point(const double* y, std::size_t k, const Evaluation& e, TargetPoint& t) const;
 
   /// The contact is paired once its gap is below this, m: a fiftieth of the slave surface's
-  /// radius (its points around their centroid; 20 um for the seed sphere's). A pairing made
+  /// radius (its points around their centroid; 9 um for the seed sphere's). A pairing made
   /// where the points already press is as good (they are projected where they stand), so this
   /// need not anticipate a large step; it bounds how long the pairs are evaluated.
   double pairing_distance() const { return kPairingDistancePerExtent * extent_; }
