@@ -5,14 +5,12 @@
 #include "isosid/format/error.hpp"
 
 #include <Eigen/SparseCore>
-#include <cmath>
 
 namespace isosid::run {
 
 GapSpaceSolve::GapSpaceSolve(const std::vector<const SurfaceContact*>& contacts, const QuasistaticJacobian& stiffness)
     : contacts_(contacts), stiffness_(stiffness) {
-  Eigen::MatrixXd probe;
-  if (!stiffness_.solve_stiffness(Eigen::SparseMatrix<double>(stiffness_.size(), 0), probe))
+  if (!stiffness_.stiffness_solvable())
     throw format::InputError(contacts_.front()->name(), "formulation",
                              "gap-space contact condenses the quasistatic modes' stiffness, which is not positive definite here");
 }
@@ -21,10 +19,8 @@ bool GapSpaceSolve::pair_approaching(const double* y) {
   bool paired = false;
   for (const SurfaceContact* c : contacts_) {
     GapPairing& pairing = c->gap_pairing();
-    if (pairing.paired()) continue;
-    // watched from the last pairing while clearly apart (no projections), else projected
-    if (pairing.watching() && !std::isnan(pairing.watched_gap(y))) continue;
-    if (c->min_gap(y) < pairing.pairing_distance()) pairing.pair(y), paired = true;
+    // an unpaired contact's gap: watched from its last pairing while clearly apart, else projected
+    if (!pairing.paired() && c->min_gap(y) < pairing.pairing_distance()) pairing.pair(y), paired = true;
   }
   return paired;
 }
@@ -32,7 +28,6 @@ bool GapSpaceSolve::pair_approaching(const double* y) {
 bool GapSpaceSolve::evaluate_pairs(const double* y) {
   const Eigen::Index m = Eigen::Index(pairs_.size());
   free_gaps_.resize(m);
-  stiffness_per_point_.resize(m);
   GapPairing::Evaluation e;
   bool held = true;
   // pairs are stacked contact by contact: each contact's run of them
@@ -47,7 +42,6 @@ bool GapSpaceSolve::evaluate_pairs(const double* y) {
       const GapPairing::Pair& p = pairing.pairs()[pairs_[std::size_t(i)].k];
       pairing.evaluate(at, pairs_[std::size_t(i)].k, e);
       free_gaps_(i) = e.gap;
-      stiffness_per_point_(i) = c->penalty() * c->surface().weight(p.g);
       smallest = std::min(smallest, e.gap);
       // a point far from the target may slide without harm: it counts from a spacing's distance on
       slid = slid || (e.gap < p.spacing && e.slip > GapPairing::kSlipPerSpacing * p.spacing);
@@ -90,6 +84,11 @@ void GapSpaceSolve::condense(const double* y) {
   V.setFromTriplets(entries.begin(), entries.end());
   stiffness_.solve_stiffness(V, W_);
   C_.noalias() = V.transpose() * W_;
+  stiffness_per_point_.resize(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const StackedPair& p = pairs_[std::size_t(i)];
+    stiffness_per_point_(i) = p.contact->penalty() * p.contact->surface().weight(p.contact->gap_pairing().pairs()[p.k].g);
+  }
   forces_.setZero(m);
   active_.assign(std::size_t(m), 0);
 }

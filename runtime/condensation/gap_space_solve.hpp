@@ -58,12 +58,11 @@ private:
   /// Pairs the unpaired contacts that came within their pairing distance at y (z = z_h set);
   /// true if any was.
   bool pair_approaching(const double* y);
-  /// V, W and C of the current pairs.
+  /// V, W and C of the current pairs, and their penalty stiffness c_p w.
   void condense(const double* y);
-  /// The pairs' free gaps at y (z = z_h set) and their penalty stiffness c_p w, in one pass
-  /// that also checks each pairing: one that slid is paired again, one whose pairs are all
-  /// open by twice the pairing distance released. False if a pairing changed (the pairs must
-  /// then be condensed again).
+  /// The pairs' free gaps at y (z = z_h set), in one pass that also checks each pairing: one
+  /// that slid is paired again, one whose pairs are all open by twice the pairing distance
+  /// released. False if a pairing changed (the pairs must then be condensed again).
   bool evaluate_pairs(const double* y);
   /// The forces at the free gaps into forces_; returns the Newton iterations.
   int solve_forces();

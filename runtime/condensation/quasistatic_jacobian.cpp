@@ -163,14 +163,11 @@ void QuasistaticJacobian::solve_stiffness(const Eigen::VectorXd& b, Eigen::Vecto
   }
 }
 
-bool QuasistaticJacobian::solve_stiffness(const Eigen::SparseMatrix<double>& B, Eigen::MatrixXd& X) const {
-  if (dense_stiffness_.size()) {
-    if (dense_inverse_.size() == 0) return false;
+void QuasistaticJacobian::solve_stiffness(const Eigen::SparseMatrix<double>& B, Eigen::MatrixXd& X) const {
+  if (dense_stiffness_.size())
     X.noalias() = dense_inverse_ * B;  // K^-1 is symmetric: the columns B selects
-    return true;
-  }
-  X = stiffness_.cwiseInverse().asDiagonal() * Eigen::MatrixXd(B);
-  return true;
+  else
+    X = stiffness_.cwiseInverse().asDiagonal() * Eigen::MatrixXd(B);
 }
 
 void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::MatrixXd& V_all, Eigen::Index r, const Eigen::VectorXd* weights,

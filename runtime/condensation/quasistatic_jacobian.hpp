@@ -40,11 +40,14 @@ public:
   void solve(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V, Eigen::Index r, const Eigen::VectorXd& b, Eigen::VectorXd& x,
              const Eigen::VectorXd* weights = nullptr) const;
 
-  /// x = K_h^-1 b.
+  /// Whether solve_stiffness() can be used: K_h is diagonal, or dense and positive definite
+  /// (its inverse is kept).
+  bool stiffness_solvable() const { return dense_stiffness_.size() == 0 || dense_inverse_.size() > 0; }
+  /// x = K_h^-1 b (where stiffness_solvable()).
   void solve_stiffness(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
-  /// X = K_h^-1 B for a sparse B (gap gradients: each column a few control points' rows).
-  /// False where K_h is dense and not positive definite (no inverse is kept then).
-  bool solve_stiffness(const Eigen::SparseMatrix<double>& B, Eigen::MatrixXd& X) const;
+  /// X = K_h^-1 B for a sparse B (gap gradients: each column a few control points' rows),
+  /// where stiffness_solvable().
+  void solve_stiffness(const Eigen::SparseMatrix<double>& B, Eigen::MatrixXd& X) const;
 
   /// Factorizations kept.
   static constexpr std::size_t kKeptFactorizations = 8;

@@ -405,20 +405,16 @@ double SurfaceContact::update_multipliers(const double* y) const {
 }
 
 double SurfaceContact::min_gap(const double* y) const {
-  if (pairing_ && pairing_->paired() && !pairing_->pairs().empty()) return pairing_->min_gap(y);
-  if (pairing_ && pairing_->watching()) {
-    const double watched = pairing_->watched_gap(y);
-    if (!std::isnan(watched)) return watched;
-  }
-  // a gap-space contact's solve asks before the step's gap function does, at the same state
-  // while it is unpaired: the second asking is the first's answer
-  if (pairing_) {
-    solution_key(y, min_gap_key_);
-    if (min_gap_key_.size() == last_min_gap_key_.size() && min_gap_key_ == last_min_gap_key_) return last_min_gap_;
-    std::swap(min_gap_key_, last_min_gap_key_);
-    return last_min_gap_ = unpaired_min_gap(y);
-  }
-  return unpaired_min_gap(y);
+  if (!pairing_) return unpaired_min_gap(y);
+  if (pairing_->paired() && !pairing_->pairs().empty()) return pairing_->min_gap(y);
+  // an unpaired gap-space contact: its solve asks before the step's gap function does, at the
+  // same state; the second asking is the first's answer
+  solution_key(y, min_gap_key_);
+  if (min_gap_key_.size() == last_min_gap_key_.size() && min_gap_key_ == last_min_gap_key_) return last_min_gap_;
+  std::swap(min_gap_key_, last_min_gap_key_);
+  // watched from its last pairing's pairs while clearly apart, else projected
+  const double watched = pairing_->watching() ? pairing_->watched_gap(y) : NAN;
+  return last_min_gap_ = std::isnan(watched) ? unpaired_min_gap(y) : watched;
 }
 
 double SurfaceContact::unpaired_min_gap(const double* y) const {
