@@ -312,10 +312,15 @@ void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, co
 }
 
 void FloatingBody::add_quasistatic_loads(const double* y, const Vector3d& gravity, Eigen::Ref<VectorXd> out) const {
-  const VectorXd& qv = q(y);
-  add_rotation_loads(qv, qdot(y), omega(y), n_dynamic_, out);
-  if (quasistatic_coupling_.size()) out.noalias() -= quasistatic_coupling_ * qv.head(n_dynamic_);
+  add_uncoupled_quasistatic_loads(y, gravity, out);
+  if (quasistatic_coupling_.size()) out.noalias() -= quasistatic_coupling_ * q(y).head(n_dynamic_);
+}
+
+bool FloatingBody::add_uncoupled_quasistatic_loads(const double* y, const Vector3d& gravity, Eigen::Ref<VectorXd> out) const {
+  const bool rotation = rotates_ && n_inertial_ > n_dynamic_;  // add_rotation_loads' rows
+  if (rotation) add_rotation_loads(q(y), qdot(y), omega(y), n_dynamic_, out);
   if (held_gravity_rows_.size()) out.noalias() += held_gravity_rows_ * (orientation(y).toRotationMatrix().transpose() * gravity);
+  return rotation || held_gravity_rows_.size() > 0;
 }
 
 Eigen::VectorXd FloatingBody::modal_energies(const VectorXd& qv, const VectorXd& qd) const {

@@ -1,11 +1,30 @@
 // Slave points paired once with target points; see gap_pairing.hpp.
 #include "condensation/gap_pairing.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace isosid::run {
 
 namespace {
+/// |a - b| over the given entries (b empty: |a|).
+double norm_over(const std::vector<Eigen::Index>& entries, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  double sum = 0;
+  for (const Eigen::Index i : entries) {
+    const double d = b.size() ? a(i) - b(i) : a(i);
+    sum += d * d;
+  }
+  return std::sqrt(sum);
+}
+
+/// Adds the columns to a sorted set of them.
+void merge_columns(std::vector<Eigen::Index>& set, const std::vector<Eigen::Index>& columns) {
+  std::vector<Eigen::Index> merged;
+  std::set_union(set.begin(), set.end(), columns.begin(), columns.end(), std::back_inserter(merged));
+  set.swap(merged);
+}
+
 /// Entries below this fraction of a point's largest displacement row entry are round-off of the
 /// reduction (a massless boundary's surface points have 1e-17 in the columns of the normal modes).
 constexpr double kDroppedEntry = 1e-13;
@@ -44,6 +63,9 @@ void GapPairing::pair(const double* y) {
   ++pairings_;
   paired_ = true;
   watching_ = false;
+  watched_.valid = false;
+  slave_reach_ = slave_rows_norm_ = target_reach_ = target_rows_norm_ = 0;
+  slave_columns_.clear(), target_columns_.clear();
   target_.update(y);
   const FloatingBody* master = target_.body();
   const Eigen::Matrix3d A = slave_.orientation(y).toRotationMatrix();
@@ -70,6 +92,12 @@ void GapPairing::pair(const double* y) {
       p.target_point -= displacement;
     }
     p.spacing = spacing_(g);
+    slave_reach_ = std::max(slave_reach_, surface_.position.row(g).norm());
+    slave_rows_norm_ = std::max(slave_rows_norm_, p.slave_rows.values.norm());
+    target_reach_ = std::max(target_reach_, p.target_point.norm());
+    target_rows_norm_ = std::max(target_rows_norm_, p.target_rows.values.norm());
+    merge_columns(slave_columns_, p.slave_rows.columns);
+    merge_columns(target_columns_, p.target_rows.columns);
     pairs_.push_back(std::move(p));
   }
   largest_ = std::max(largest_, pairs_.size());
@@ -105,22 +133,51 @@ void GapPairing::evaluate(const Poses& at, std::size_t k, Evaluation& e) const {
   e.slip = (d - e.gap * e.normal).norm();
 }
 
+std::pair<double, double> GapPairing::watched_change(const Poses& at) const {
+  const WatchedState& w = watched_;
+  // a pair's separation d = r_s + A_s (X + S q_s) - r_t - A_t (Y + T q_t) moves by at most
+  // |dr| + |dA_s| |X + S q_s| + |S dq_s| + (the same for the target), each |S x| <= |S|_F |x|
+  // (the rows read only their columns: a massless boundary's, not the modes')
+  const double slave_rows = slave_rows_norm_ * norm_over(slave_columns_, *at.q_slave, w.q_slave);
+  double target_rows = 0, target_point = target_reach_;
+  if (at.q_target) {
+    target_rows = target_rows_norm_ * norm_over(target_columns_, *at.q_target, w.q_target);
+    target_point += target_rows_norm_ * norm_over(target_columns_, *at.q_target, Eigen::VectorXd());
+  }
+  const double turn_target = (at.A_target - w.A_target).norm();  // Frobenius, >= the spectral norm
+  const double separation_change = ((at.r_slave - w.r_slave) - (at.r_target - w.r_target)).norm() +
+                                   (at.A_slave - w.A_slave).norm() * (slave_reach_ + slave_rows_norm_ * norm_over(slave_columns_, *at.q_slave, Eigen::VectorXd())) +
+                                   slave_rows + turn_target * target_point + target_rows;
+  // gap = n . d with the normal n = A_t n0 turning by |dA_t|; the slip, d less its normal
+  // part, turns with it from both sides
+  const double turned = turn_target * (w.separation + separation_change);
+  return {separation_change + turned, separation_change + 2 * turned};
+}
+
 double GapPairing::watched_gap(const double* y) {
   if (!watching_) return NAN;
   const Poses at = poses(y);
-  Evaluation e;
-  double smallest = INFINITY;
   const double distance = pairing_distance();
+  if (watched_.valid) {
+    const auto [gap_change, slip_change] = watched_change(at);
+    // the bound has the gap's sign, and the gap is evaluated before it could come within 2 d
+    if (watched_.gap - gap_change > 2 * distance && watched_.slip + slip_change <= distance) return watched_.gap - gap_change;
+  }
+  Evaluation e;
+  double smallest = INFINITY, slip = 0, separation = 0;
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
     evaluate(at, k, e);
     // a point that slid by d past its pair is off by about its target's curvature times d^2
     // at most, far less than the 2 d kept in hand: beyond, the pairs no longer tell
     if (e.slip > distance) return watching_ = false, NAN;
     smallest = std::min(smallest, e.gap);
+    slip = std::max(slip, e.slip);
+    separation = std::max(separation, std::hypot(e.gap, e.slip));
   }
-  if (smallest > 2 * distance) return smallest;
-  watching_ = false;
-  return NAN;
+  if (!(smallest > 2 * distance)) return watching_ = false, NAN;
+  watched_ = {true, at.r_slave, at.r_target, at.A_slave, at.A_target, *at.q_slave,
+              at.q_target ? *at.q_target : Eigen::VectorXd(), smallest, slip, separation};
+  return smallest;
 }
 
 double GapPairing::min_gap(const double* y) const {

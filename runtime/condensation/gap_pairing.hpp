@@ -63,11 +63,13 @@ public:
   /// Ends the pairing once the contact has left (every pair open by twice the pairing
   /// distance). Its pairs are kept to watch the bodies: while no point has slid along the target
   /// by the pairing distance, they tell the contact's gap far more cheaply than projecting.
-  void release() { paired_ = false, watching_ = true; }
+  void release() { paired_ = false, watching_ = true, watched_.valid = false; }
   bool watching() const { return watching_; }
-  /// While watching: the pairs' smallest gap at y if it stays beyond twice the pairing
-  /// distance and no point has slid by the pairing distance; otherwise watching ends here and
-  /// this returns NaN (the gap must then be found by projecting).
+  /// While watching: the pairs' smallest gap at y, or a lower bound of it, if it stays beyond
+  /// twice the pairing distance and no point has slid by the pairing distance; otherwise
+  /// watching ends here and this returns NaN (the gap must then be found by projecting). The
+  /// pairs are evaluated only when the bodies' motion since their last evaluation could have
+  /// brought a pair that close (or slid it that far): in free flight mostly not at all.
   double watched_gap(const double* y);
   /// Times pair() was called, and how many of them replaced a pairing (one that slid).
   long pairings() const { return pairings_; }
@@ -100,6 +102,20 @@ public:
   static constexpr double kSlipPerSpacing = 0.25;
 
 private:
+  /// The state at the pairs' last evaluation while watching: the poses (coordinates copied),
+  /// their smallest gap, largest slip and largest distance between paired points.
+  struct WatchedState {
+    bool valid = false;
+    Eigen::Vector3d r_slave, r_target;
+    Eigen::Matrix3d A_slave, A_target;
+    Eigen::VectorXd q_slave, q_target;
+    double gap = 0, slip = 0, separation = 0;
+  };
+  /// How much any pair's gap (first) and slip (second) can have changed from the watched state
+  /// to `at`, m: bounds from the frames' moves and the coordinates' change, through the largest
+  /// reference point and displacement rows of the pairs.
+  std::pair<double, double> watched_change(const Poses& at) const;
+
   const FloatingBody& slave_;
   const format::ContactSurface& surface_;
   const ContactTarget& target_;
@@ -107,6 +123,12 @@ private:
   Eigen::VectorXd spacing_;  ///< per slave point: the distance to its nearest neighbour, m
   double extent_ = 0;
   std::vector<Pair> pairs_;
+  /// Over the pairs: the largest reference point (slave: its surface point, target: its
+  /// point) from the body's frame origin, m, and the largest Frobenius norm of the rows
+  double slave_reach_ = 0, slave_rows_norm_ = 0, target_reach_ = 0, target_rows_norm_ = 0;
+  /// The coordinates that any pair's rows read (slave, target), ascending
+  std::vector<Eigen::Index> slave_columns_, target_columns_;
+  WatchedState watched_;
   bool paired_ = false, watching_ = false;
   long pairings_ = 0, repairings_ = 0;
   std::size_t largest_ = 0;

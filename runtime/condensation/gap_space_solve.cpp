@@ -83,53 +83,26 @@ void GapSpaceSolve::condense(const double* y) {
   Eigen::SparseMatrix<double> V(n, m);
   V.setFromTriplets(entries.begin(), entries.end());
   stiffness_.solve_stiffness(V, W_);
-  C_.noalias() = V.transpose() * W_;
-  stiffness_per_point_.resize(m);
+  Eigen::VectorXd penalty_stiffness(m);
   for (Eigen::Index i = 0; i < m; ++i) {
     const StackedPair& p = pairs_[std::size_t(i)];
-    stiffness_per_point_(i) = p.contact->penalty() * p.contact->surface().weight(p.contact->gap_pairing().pairs()[p.k].g);
+    penalty_stiffness(i) = p.contact->penalty() * p.contact->surface().weight(p.contact->gap_pairing().pairs()[p.k].g);
   }
-  forces_.setZero(m);
-  active_.assign(std::size_t(m), 0);
+  points_.set(V.transpose() * W_, std::move(penalty_stiffness));
 }
 
 int GapSpaceSolve::solve_forces() {
-  const Eigen::Index m = Eigen::Index(pairs_.size());
-  // semismooth Newton on the active set: the active points' forces solve
-  // (C_AA + diag(1 / (c_p w))) f_A = -g_free,A; a point leaves where its force would pull,
-  // enters where its gap closes
-  for (int iteration = 1; iteration <= kMaxIterations; ++iteration) {
-    active_index_.clear();
-    for (Eigen::Index i = 0; i < m; ++i)
-      if (active_[std::size_t(i)]) active_index_.push_back(i);
-    const Eigen::Index r = Eigen::Index(active_index_.size());
-    forces_.setZero();
-    if (r > 0) {
-      active_matrix_.resize(r, r);
-      active_forces_.resize(r);
-      for (Eigen::Index b = 0; b < r; ++b) {
-        for (Eigen::Index a = b; a < r; ++a) active_matrix_(a, b) = C_(active_index_[std::size_t(a)], active_index_[std::size_t(b)]);
-        active_matrix_(b, b) += 1.0 / stiffness_per_point_(active_index_[std::size_t(b)]);
-        active_forces_(b) = -free_gaps_(active_index_[std::size_t(b)]);
-      }
-      Eigen::LLT<Eigen::MatrixXd, Eigen::Lower> llt(active_matrix_);
-      if (llt.info() != Eigen::Success)
-        throw QuasistaticDivergence("the gap-space compliance of contact '" + contacts_.front()->name() + "' is not positive definite");
-      llt.solveInPlace(active_forces_);
-      for (Eigen::Index b = 0; b < r; ++b) forces_(active_index_[std::size_t(b)]) = active_forces_(b);
-    }
-    gaps_ = free_gaps_;
-    for (const Eigen::Index a : active_index_) gaps_.noalias() += forces_(a) * C_.col(a);
-    bool changed = false;
-    for (Eigen::Index i = 0; i < m; ++i) {
-      const char now = active_[std::size_t(i)] ? forces_(i) > 0 : gaps_(i) < 0;
-      changed = changed || now != active_[std::size_t(i)];
-      active_[std::size_t(i)] = now;
-    }
-    if (!changed) return iteration;
+  int iterations = 0;
+  switch (points_.solve(free_gaps_, iterations)) {
+    case PenaltyComplementarity::Outcome::Solved:
+      return iterations;
+    case PenaltyComplementarity::Outcome::NotPositiveDefinite:
+      throw QuasistaticDivergence("the gap-space compliance of contact '" + contacts_.front()->name() + "' is not positive definite");
+    case PenaltyComplementarity::Outcome::NoActiveSet:
+      break;
   }
   throw QuasistaticDivergence("the gap-space contact of '" + contacts_.front()->name() + "' found no active set in " +
-                              std::to_string(kMaxIterations) + " Newton iterations");
+                              std::to_string(iterations) + " iterations");
 }
 
 }  // namespace isosid::run

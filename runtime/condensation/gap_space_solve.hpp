@@ -5,11 +5,11 @@
 // the points' normal forces) condenses onto the gaps:
 //   z = z_h + W f,  z_h = K^-1 h,  W = K^-1 V,
 //   g = g(z_h) + C f,  C = V^T W   (the compliance between the points, once per pairing).
-// Each solve then works on the points alone: the penalty law f = c_p w max(0, -g) by
-// semismooth Newton on the active points (their compliance block plus 1 / (c_p w) on its
-// diagonal, factored by Cholesky), warm-started from the last active set. Nothing per solve
-// grows with the boundary's coordinates but the two products with z.
+// Each solve then works on the points alone: the penalty law f = c_p w max(0, -g), a linear
+// complementarity problem (penalty_complementarity.hpp), warm-started from the last active
+// set. Nothing per solve grows with the boundary's coordinates but the product W f.
 #pragma once
+#include "condensation/penalty_complementarity.hpp"
 #include "condensation/quasistatic_jacobian.hpp"
 #include "contact/surface_contact.hpp"
 
@@ -19,8 +19,6 @@ namespace isosid::run {
 
 class GapSpaceSolve {
 public:
-  /// Semismooth Newton iterations before the solve fails.
-  static constexpr int kMaxIterations = 50;
   /// Pairings made again at one state before the solve fails.
   static constexpr int kMaxRepairings = 3;
 
@@ -28,12 +26,12 @@ public:
   /// (penalty, frictionless); `stiffness`: K of the stacked quasistatic modes.
   GapSpaceSolve(const std::vector<const SurfaceContact*>& contacts, const QuasistaticJacobian& stiffness);
 
-  /// The quasistatic coordinates z at y under the loads `held` (which do not depend on z);
-  /// `scatter` sets them on the bodies. Pairs the contacts that come near, pairs again those
-  /// that slid, releases those that left. Returns the Newton iterations on the active set.
+  /// The quasistatic coordinates z at y, given in z their response to the loads that do not
+  /// depend on them, z_h = K^-1 h; `scatter` sets them on the bodies. Pairs the contacts that
+  /// come near, pairs again those that slid, releases those that left. Returns the points'
+  /// problem's iterations.
   template <class Scatter>
-  int solve(const double* y, const Eigen::VectorXd& held, Eigen::VectorXd& z, Scatter&& scatter) {
-    stiffness_.solve_stiffness(held, z);
+  int solve(const double* y, Eigen::VectorXd& z, Scatter&& scatter) {
     scatter(z);
     if (pair_approaching(y)) condense(y);
     // the pairs at z_h: their free gaps, and whether each pairing still holds (a pairing made
@@ -44,7 +42,7 @@ public:
     }
     if (pairs_.empty()) return 0;
     const int iterations = solve_forces();
-    for (const Eigen::Index a : active_index_) z.noalias() += forces_(a) * W_.col(a);
+    for (const Eigen::Index a : points_.pressed()) z.noalias() += points_.forces()(a) * W_.col(a);
     scatter(z);
     return iterations;
   }
@@ -64,7 +62,7 @@ private:
   /// that slid is paired again, one whose pairs are all open by twice the pairing distance
   /// released. False if a pairing changed (the pairs must then be condensed again).
   bool evaluate_pairs(const double* y);
-  /// The forces at the free gaps into forces_; returns the Newton iterations.
+  /// The points' forces at the free gaps; returns the iterations.
   int solve_forces();
   /// Throws QuasistaticDivergence: the pairings at one state did not hold after kMaxRepairings.
   [[noreturn]] void throw_unsettled_pairing() const;
@@ -72,12 +70,9 @@ private:
   std::vector<const SurfaceContact*> contacts_;
   const QuasistaticJacobian& stiffness_;
   std::vector<StackedPair> pairs_;
-  Eigen::MatrixXd W_, C_;
-  Eigen::VectorXd forces_, free_gaps_, gaps_, stiffness_per_point_;
-  std::vector<char> active_;
-  std::vector<Eigen::Index> active_index_;
-  Eigen::MatrixXd active_matrix_;
-  Eigen::VectorXd active_forces_;
+  Eigen::MatrixXd W_;
+  Eigen::VectorXd free_gaps_;
+  PenaltyComplementarity points_;  ///< the compliance C = V^T W and the penalty law on the points
 };
 
 }  // namespace isosid::run

@@ -170,6 +170,15 @@ void QuasistaticJacobian::solve_stiffness(const Eigen::SparseMatrix<double>& B, 
     X = stiffness_.cwiseInverse().asDiagonal() * Eigen::MatrixXd(B);
 }
 
+void QuasistaticJacobian::solve_stiffness_block(Eigen::Index offset, const Eigen::Ref<const Eigen::MatrixXd>& B,
+                                                Eigen::Ref<Eigen::MatrixXd> X) const {
+  const Eigen::Index nb = B.rows();
+  if (dense_stiffness_.size())
+    X.noalias() = dense_inverse_.block(offset, offset, nb, nb) * B;
+  else
+    X = stiffness_.segment(offset, nb).cwiseInverse().asDiagonal() * B;
+}
+
 void QuasistaticJacobian::factor(const Eigen::MatrixXd& U_all, const Eigen::MatrixXd& V_all, Eigen::Index r, const Eigen::VectorXd* weights,
                                  Factorization& f) const {
   const auto V = V_all.leftCols(r);

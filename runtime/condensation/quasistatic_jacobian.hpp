@@ -48,6 +48,9 @@ public:
   /// X = K_h^-1 B for a sparse B (gap gradients: each column a few control points' rows),
   /// where stiffness_solvable().
   void solve_stiffness(const Eigen::SparseMatrix<double>& B, Eigen::MatrixXd& X) const;
+  /// X = K_b^-1 B for the block K_b of one body, whose rows start at `offset` (B has its
+  /// rows), where stiffness_solvable(). K_h has no entries between bodies.
+  void solve_stiffness_block(Eigen::Index offset, const Eigen::Ref<const Eigen::MatrixXd>& B, Eigen::Ref<Eigen::MatrixXd> X) const;
 
   /// Factorizations kept.
   static constexpr std::size_t kKeptFactorizations = 8;

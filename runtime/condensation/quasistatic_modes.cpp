@@ -53,6 +53,12 @@ QuasistaticModes::QuasistaticModes(const std::vector<std::unique_ptr<FloatingBod
         throw format::InputError(c->name(), "formulation",
                                  "must be gap-space like the other contacts on the quasistatic modes of " + names_);
     gap_space_ = std::make_unique<GapSpaceSolve>(contacts_, jacobian_);
+    for (const FloatingBody* b : bodies_) {
+      const Eigen::MatrixXd& coupling = b->quasistatic_coupling();
+      Eigen::MatrixXd response(coupling.rows(), coupling.cols());
+      if (coupling.size()) jacobian_.solve_stiffness_block(b->quasistatic_offset(), coupling, response);
+      coupled_response_.push_back(std::move(response));
+    }
   }
 }
 
@@ -94,11 +100,27 @@ void QuasistaticModes::update_held_loads(const double* y) const {
   for (FloatingBody* b : bodies_) b->add_quasistatic_loads(y, gravity_, held_loads_.segment(b->quasistatic_offset(), b->n_quasistatic()));
 }
 
+void QuasistaticModes::solve_held_response(const double* y) const {
+  held_loads_.resize(size());
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const FloatingBody& b = *bodies_[i];
+    auto z = z_.segment(b.quasistatic_offset(), b.n_quasistatic());
+    auto loads = held_loads_.segment(b.quasistatic_offset(), b.n_quasistatic());
+    loads.setZero();
+    if (b.add_uncoupled_quasistatic_loads(y, gravity_, loads)) jacobian_.solve_stiffness_block(b.quasistatic_offset(), loads, z);
+    else z.setZero();
+    if (coupled_response_[i].size()) z.noalias() -= coupled_response_[i] * b.q(y).head(b.n_dynamic());
+  }
+}
+
 int QuasistaticModes::solve(const double* y) const {
   if (size() == 0) return 0;
+  if (gap_space_) {
+    solve_held_response(y);
+    return gap_space_->solve(y, z_, [&](const Eigen::VectorXd& z) { scatter(z); });
+  }
   for (FloatingBody* b : bodies_) z_.segment(b->quasistatic_offset(), b->n_quasistatic()) = b->quasistatic_modes();
   update_held_loads(y);
-  if (gap_space_) return gap_space_->solve(y, held_loads_, z_, [&](const Eigen::VectorXd& z) { scatter(z); });
   int iterations = newton(y);
   if (!exact_) return iterations;
   // exact contact: Uzawa passes on the multipliers, each followed by Newton, until the forces

@@ -59,6 +59,10 @@ private:
   /// The loads on z at state y that do not depend on z (held while Newton iterates): centrifugal
   /// and Coriolis loads, and the stiffness coupling to the integrated modes.
   void update_held_loads(const double* y) const;
+  /// z_ = K_h^-1 times the held loads at y, each body's coupling to its integrated modes
+  /// through K_h^-1 K_hd formed once (gap space: nothing in free flight then grows with the
+  /// square of a massless boundary's coordinates).
+  void solve_held_response(const double* y) const;
   /// Records the contact points' linearization at the current z_ and the residual
   /// K z - f(z) - held loads into R.
   void residual(const double* y, Eigen::VectorXd& R) const;
@@ -75,6 +79,7 @@ private:
   QuasistaticJacobian jacobian_;
   ContactModel model_;
   std::unique_ptr<GapSpaceSolve> gap_space_;     ///< every contact in gap space: solves in place of Newton
+  std::vector<Eigen::MatrixXd> coupled_response_;  ///< gap space, per body: K_b^-1 K_hd (empty without coupling)
   bool conservative_ = true;
   bool flat_ = true;                             ///< every contact's target is a fixed plane
   bool exact_ = false;                           ///< some contact is exact: Uzawa passes around Newton

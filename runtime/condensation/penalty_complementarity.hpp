@@ -1,0 +1,65 @@
+// The penalty contact problem of points whose gaps respond linearly to their forces: with the
+// compliance C between the points (g = g_free + C f) and each point's penalty stiffness k_i,
+// the forces f_i = k_i max(0, -g_i). It is the linear complementarity problem
+//   f >= 0,  w = g_free + (C + K^-1) f >= 0,  f^T w = 0,
+// whose matrix is positive definite: one solution, the minimum of 1/2 f^T (C + K^-1) f +
+// g_free^T f over f >= 0. Gap space (gap_space_solve.hpp) solves it at every static solve.
+#pragma once
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace isosid::run {
+
+class PenaltyComplementarity {
+public:
+  /// Semismooth Newton iterations before the active-set method takes over.
+  static constexpr int kNewtonIterations = 20;
+  /// The active-set method's iterations before the solve gives up (it ends in far fewer: each
+  /// point is freed a few times at most).
+  static constexpr int active_set_iterations(Eigen::Index points) { return int(10 * points + 10); }
+
+  enum class Outcome { Solved, NotPositiveDefinite, NoActiveSet };
+
+  /// The points' compliance (symmetric, positive semidefinite) and penalty stiffness k_i > 0;
+  /// forgets the last active set.
+  void set(Eigen::MatrixXd compliance, Eigen::VectorXd stiffness);
+  Eigen::Index size() const { return stiffness_.size(); }
+  const Eigen::MatrixXd& compliance() const { return compliance_; }
+
+  /// The forces at these free gaps, from the last solve's active set; `iterations` counts both
+  /// methods' iterations.
+  Outcome solve(const Eigen::VectorXd& free_gaps, int& iterations);
+  /// The last solution: every point's force, the pressed points, and whether Newton cycled and
+  /// the active-set method found it.
+  const Eigen::VectorXd& forces() const { return forces_; }
+  const std::vector<Eigen::Index>& pressed() const { return pressed_; }
+  bool by_active_set() const { return by_active_set_; }
+
+private:
+  /// Semismooth Newton on the active set: the pressed points' forces solve
+  /// (C + K^-1)_PP f_P = -g_free,P; a point leaves where its force would pull, enters where its
+  /// gap closes. Fast from the last solve's active set, but it can cycle where many points
+  /// close together under a compliance of low rank (a flat face on a plane). False then.
+  bool newton(const Eigen::VectorXd& free_gaps, int& iterations, Outcome& outcome);
+  /// The primal active-set method (as Lawson and Hanson's for NNLS), from no force: it keeps f
+  /// feasible and lowers the energy at every point it frees, so it ends.
+  bool active_set(const Eigen::VectorXd& free_gaps, int& iterations, Outcome& outcome);
+  /// The forces of the points in pressed_ with the others' zero, into `forces`; false if their
+  /// matrix is not positive definite.
+  bool pressed_forces(const Eigen::VectorXd& free_gaps, Eigen::VectorXd& forces);
+  /// gaps_ = g_free + C f for forces_.
+  void update_gaps(const Eigen::VectorXd& free_gaps);
+  void list_pressed();
+
+  Eigen::MatrixXd compliance_;
+  Eigen::VectorXd stiffness_;
+  std::vector<char> is_pressed_;
+  std::vector<Eigen::Index> pressed_;
+  Eigen::VectorXd forces_, trial_forces_, gaps_;
+  Eigen::MatrixXd pressed_matrix_;
+  Eigen::VectorXd pressed_rhs_;
+  bool by_active_set_ = false;
+};
+
+}  // namespace isosid::run
