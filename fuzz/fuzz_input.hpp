@@ -5,6 +5,7 @@
 #include "isosid/format/error.hpp"
 
 #include <cstddef>
+#include <cstdio>
 #include <cstdint>
 #include <fstream>
 #include <string>
@@ -12,10 +13,15 @@
 
 namespace isosid::fuzz {
 
-/// Writes the input to `path` and loads it.
+/// Writes the input to `path` and loads it; the file is removed after (a finding aborts first
+/// and leaves it).
 template <class Load>
 int load_input_at(const std::uint8_t* data, std::size_t size, const std::string& path, Load load) {
   std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data), std::streamsize(size));
+  struct Remove {
+    const std::string& path;
+    ~Remove() { std::remove(path.c_str()); }
+  } remove{path};
   try {
     load(path);
   } catch (const format::InputError&) {

@@ -16,17 +16,24 @@
 
 namespace {
 
-/// A folder of this process with copies of the golden SIDs and models.
-std::string scene_folder() {
-  static const std::string folder = [] {
-    const std::filesystem::path dir = "/tmp/isosid-fuzz-system-" + std::to_string(::getpid());
+/// A folder of this process with copies of the golden SIDs and models, removed at its exit.
+struct SceneFolder {
+  std::filesystem::path dir = "/tmp/isosid-fuzz-system-" + std::to_string(::getpid());
+  SceneFolder() {
     std::filesystem::create_directories(dir);
     for (const char* file : {"sphere_small.sid.h5", "sphere_small.model.toml", "beam_small.sid.h5", "beam_small.model.toml"})
       std::filesystem::copy_file(std::filesystem::path(ISOSID_GOLDEN_DIR) / file, dir / file,
                                  std::filesystem::copy_options::overwrite_existing);
-    return dir.string();
-  }();
-  return folder;
+  }
+  ~SceneFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir, ignored);
+  }
+};
+
+std::string scene_folder() {
+  static const SceneFolder folder;
+  return folder.dir.string();
 }
 
 }  // namespace
