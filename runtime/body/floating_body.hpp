@@ -103,7 +103,8 @@ public:
   /// the two cancel (and its free-free normal modes have Ct = 0 besides).
   void add_quasistatic_loads(const double* y, const Eigen::Vector3d& gravity, Eigen::Ref<Eigen::VectorXd> out) const;
   /// The same loads but the coupling: the rotation and held-gravity loads. False (and out
-  /// untouched) where the body has none: it does not rotate and no gravity is held.
+  /// untouched) where the body has neither: its frame cannot turn or its quasistatic
+  /// coordinates carry no inertia (a massless boundary), and no gravity is held.
   bool add_uncoupled_quasistatic_loads(const double* y, const Eigen::Vector3d& gravity, Eigen::Ref<Eigen::VectorXd> out) const;
   /// Ke's block that couples the quasistatic modes to the integrated ones (quasistatic rows,
   /// integrated columns): the loads -K_hd q_d; empty where it is zero (normal form).

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 
 namespace isosid::run {
 
@@ -18,11 +17,10 @@ double norm_over(const std::vector<Eigen::Index>& entries, const Eigen::VectorXd
   return std::sqrt(sum);
 }
 
-/// Adds the columns to a sorted set of them.
-void merge_columns(std::vector<Eigen::Index>& set, const std::vector<Eigen::Index>& columns) {
-  std::vector<Eigen::Index> merged;
-  std::set_union(set.begin(), set.end(), columns.begin(), columns.end(), std::back_inserter(merged));
-  set.swap(merged);
+/// Sorts the columns and drops the repeated ones.
+void make_set(std::vector<Eigen::Index>& columns) {
+  std::sort(columns.begin(), columns.end());
+  columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
 }
 
 /// Entries below this fraction of a point's largest displacement row entry are round-off of the
@@ -96,10 +94,11 @@ void GapPairing::pair(const double* y) {
     slave_rows_norm_ = std::max(slave_rows_norm_, p.slave_rows.values.norm());
     target_reach_ = std::max(target_reach_, p.target_point.norm());
     target_rows_norm_ = std::max(target_rows_norm_, p.target_rows.values.norm());
-    merge_columns(slave_columns_, p.slave_rows.columns);
-    merge_columns(target_columns_, p.target_rows.columns);
+    slave_columns_.insert(slave_columns_.end(), p.slave_rows.columns.begin(), p.slave_rows.columns.end());
+    target_columns_.insert(target_columns_.end(), p.target_rows.columns.begin(), p.target_rows.columns.end());
     pairs_.push_back(std::move(p));
   }
+  make_set(slave_columns_), make_set(target_columns_);
   largest_ = std::max(largest_, pairs_.size());
   // no point found the target from where it stands: the contact stays unpaired (projected)
   if (pairs_.empty()) paired_ = false;
@@ -135,22 +134,24 @@ void GapPairing::evaluate(const Poses& at, std::size_t k, Evaluation& e) const {
 
 std::pair<double, double> GapPairing::watched_change(const Poses& at) const {
   const WatchedState& w = watched_;
-  // a pair's separation d = r_s + A_s (X + S q_s) - r_t - A_t (Y + T q_t) moves by at most
+  // A pair's separation d = r_s + A_s (X + S q_s) - r_t - A_t (Y + T q_t) moves by at most
   // |dr| + |dA_s| |X + S q_s| + |S dq_s| + (the same for the target), each |S x| <= |S|_F |x|
-  // (the rows read only their columns: a massless boundary's, not the modes')
-  const double slave_rows = slave_rows_norm_ * norm_over(slave_columns_, *at.q_slave, w.q_slave);
-  double target_rows = 0, target_point = target_reach_;
+  // over the columns the rows read. For the difference of two rotations the Frobenius norm is
+  // sqrt(2) times the spectral norm.
+  const double slave_deformation_change = slave_rows_norm_ * norm_over(slave_columns_, *at.q_slave, w.q_slave);
+  double target_deformation_change = 0, target_radius = target_reach_;
   if (at.q_target) {
-    target_rows = target_rows_norm_ * norm_over(target_columns_, *at.q_target, w.q_target);
-    target_point += target_rows_norm_ * norm_over(target_columns_, *at.q_target, Eigen::VectorXd());
+    target_deformation_change = target_rows_norm_ * norm_over(target_columns_, *at.q_target, w.q_target);
+    target_radius += target_rows_norm_ * norm_over(target_columns_, *at.q_target, Eigen::VectorXd());
   }
-  const double turn_target = (at.A_target - w.A_target).norm();  // Frobenius, >= the spectral norm
-  const double separation_change = ((at.r_slave - w.r_slave) - (at.r_target - w.r_target)).norm() +
-                                   (at.A_slave - w.A_slave).norm() * (slave_reach_ + slave_rows_norm_ * norm_over(slave_columns_, *at.q_slave, Eigen::VectorXd())) +
-                                   slave_rows + turn_target * target_point + target_rows;
-  // gap = n . d with the normal n = A_t n0 turning by |dA_t|; the slip, d less its normal
-  // part, turns with it from both sides
-  const double turned = turn_target * (w.separation + separation_change);
+  const double slave_radius = slave_reach_ + slave_rows_norm_ * norm_over(slave_columns_, *at.q_slave, Eigen::VectorXd());
+  const double slave_turn = (at.A_slave - w.A_slave).norm() / std::sqrt(2.0);
+  const double target_turn = (at.A_target - w.A_target).norm() / std::sqrt(2.0);
+  const double separation_change = ((at.r_slave - w.r_slave) - (at.r_target - w.r_target)).norm() + slave_turn * slave_radius +
+                                   slave_deformation_change + target_turn * target_radius + target_deformation_change;
+  // gap' - gap = n' . (d' - d) + (n' - n) . d with the normal n = A_t n0 turning by |dA_t|; the
+  // slip, d less its normal part, changes by |d' - d| and by the projection's turn, 2 |dn| |d|
+  const double turned = target_turn * w.separation;
   return {separation_change + turned, separation_change + 2 * turned};
 }
 
@@ -175,8 +176,13 @@ double GapPairing::watched_gap(const double* y) {
     separation = std::max(separation, std::hypot(e.gap, e.slip));
   }
   if (!(smallest > 2 * distance)) return watching_ = false, NAN;
-  watched_ = {true, at.r_slave, at.r_target, at.A_slave, at.A_target, *at.q_slave,
-              at.q_target ? *at.q_target : Eigen::VectorXd(), smallest, slip, separation};
+  // in place: the vectors keep their storage from one evaluation to the next
+  watched_.valid = true;
+  watched_.r_slave = at.r_slave, watched_.r_target = at.r_target;
+  watched_.A_slave = at.A_slave, watched_.A_target = at.A_target;
+  watched_.q_slave = *at.q_slave;
+  if (at.q_target) watched_.q_target = *at.q_target;
+  watched_.gap = smallest, watched_.slip = slip, watched_.separation = separation;
   return smallest;
 }
 

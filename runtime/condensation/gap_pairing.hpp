@@ -126,7 +126,8 @@ private:
   /// Over the pairs: the largest reference point (slave: its surface point, target: its
   /// point) from the body's frame origin, m, and the largest Frobenius norm of the rows
   double slave_reach_ = 0, slave_rows_norm_ = 0, target_reach_ = 0, target_rows_norm_ = 0;
-  /// The coordinates that any pair's rows read (slave, target), ascending
+  /// The coordinates that any pair's rows read (slave, target), ascending: a massless
+  /// boundary's, or all modes' where the rows fill them (Craig-Bampton)
   std::vector<Eigen::Index> slave_columns_, target_columns_;
   WatchedState watched_;
   bool paired_ = false, watching_ = false;

@@ -98,6 +98,8 @@ int GapSpaceSolve::solve_forces() {
       return iterations;
     case PenaltyComplementarity::Outcome::NotPositiveDefinite:
       throw QuasistaticDivergence("the gap-space compliance of contact '" + contacts_.front()->name() + "' is not positive definite");
+    case PenaltyComplementarity::Outcome::NotFinite:
+      throw QuasistaticDivergence("the gap-space contact of '" + contacts_.front()->name() + "' has gaps that are not finite numbers");
     case PenaltyComplementarity::Outcome::NoActiveSet:
       break;
   }

@@ -7,7 +7,8 @@
 //   g = g(z_h) + C f,  C = V^T W   (the compliance between the points, once per pairing).
 // Each solve then works on the points alone: the penalty law f = c_p w max(0, -g), a linear
 // complementarity problem (penalty_complementarity.hpp), warm-started from the last active
-// set. Nothing per solve grows with the boundary's coordinates but the product W f.
+// set. Per solve, what grows with the boundary's coordinates is the product W f and z_h's
+// (the coupling response times the modes, quasistatic_modes.hpp).
 #pragma once
 #include "condensation/penalty_complementarity.hpp"
 #include "condensation/quasistatic_jacobian.hpp"

@@ -1,20 +1,30 @@
 // The points' penalty contact problem; see penalty_complementarity.hpp.
 #include "condensation/penalty_complementarity.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace isosid::run {
 
 void PenaltyComplementarity::set(Eigen::MatrixXd compliance, Eigen::VectorXd stiffness) {
   compliance_ = std::move(compliance);
   stiffness_ = std::move(stiffness);
   forces_.setZero(size());
+  trial_forces_.setZero(size());
+  gaps_.setZero(size());
   is_pressed_.assign(std::size_t(size()), 0);
+  left_out_.assign(std::size_t(size()), 0);
   pressed_.clear();
+  pressed_.reserve(std::size_t(size()));
+  pressed_matrix_.resize(size(), size());  // the pressed points' block is factored in its corner
+  pressed_rhs_.resize(size());
 }
 
 PenaltyComplementarity::Outcome PenaltyComplementarity::solve(const Eigen::VectorXd& free_gaps, int& iterations) {
   iterations = 0;
-  Outcome outcome = Outcome::Solved;
   by_active_set_ = false;
+  if (!free_gaps.allFinite()) return Outcome::NotFinite;
+  Outcome outcome = Outcome::Solved;
   if (newton(free_gaps, iterations, outcome) || outcome != Outcome::Solved) return outcome;
   by_active_set_ = true;
   if (active_set(free_gaps, iterations, outcome) || outcome != Outcome::Solved) return outcome;
@@ -29,19 +39,20 @@ void PenaltyComplementarity::list_pressed() {
 
 bool PenaltyComplementarity::pressed_forces(const Eigen::VectorXd& free_gaps, Eigen::VectorXd& forces) {
   const Eigen::Index r = Eigen::Index(pressed_.size());
-  forces.setZero(size());
+  forces.setZero();
   if (r == 0) return true;
-  pressed_matrix_.resize(r, r);
-  pressed_rhs_.resize(r);
   for (Eigen::Index b = 0; b < r; ++b) {
     for (Eigen::Index a = b; a < r; ++a) pressed_matrix_(a, b) = compliance_(pressed_[std::size_t(a)], pressed_[std::size_t(b)]);
     pressed_matrix_(b, b) += 1.0 / stiffness_(pressed_[std::size_t(b)]);
     pressed_rhs_(b) = -free_gaps(pressed_[std::size_t(b)]);
   }
-  Eigen::LLT<Eigen::MatrixXd, Eigen::Lower> llt(pressed_matrix_);
+  // factored in place (an LLT of its own would allocate at every solve)
+  Eigen::Ref<Eigen::MatrixXd> block = pressed_matrix_.topLeftCorner(r, r);
+  Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower> llt(block);
   if (llt.info() != Eigen::Success) return false;
-  llt.solveInPlace(pressed_rhs_);
-  for (Eigen::Index b = 0; b < r; ++b) forces(pressed_[std::size_t(b)]) = pressed_rhs_(b);
+  auto rhs = pressed_rhs_.head(r);
+  llt.solveInPlace(rhs);
+  for (Eigen::Index b = 0; b < r; ++b) forces(pressed_[std::size_t(b)]) = rhs(b);
   return true;
 }
 
@@ -68,36 +79,57 @@ bool PenaltyComplementarity::newton(const Eigen::VectorXd& free_gaps, int& itera
 }
 
 bool PenaltyComplementarity::active_set(const Eigen::VectorXd& free_gaps, int& iterations, Outcome& outcome) {
-  // Each iteration minimizes the energy over the free points with the others held at zero
-  // force. A free point whose force would pull stops the move toward that minimum and is held;
-  // at a minimum whose forces all push, the held point whose gap is most closed is freed.
-  forces_.setZero(size());
-  is_pressed_.assign(std::size_t(size()), 0);
-  for (int iteration = 1; iteration <= active_set_iterations(size()); ++iteration) {
+  // Each iteration minimizes the energy over the pressed points with the open ones at zero
+  // force. A pressed point whose force would pull stops the move toward that minimum and is
+  // opened; at a minimum whose forces all push, the open point whose gap is most closed is
+  // pressed. A gap closed by round-off only does not count, and a point pressed whose first
+  // force would pull is opened again and left out until the forces move (Lawson and Hanson's
+  // guard): without both, points whose gaps are zero to round-off (a flat face's, evenly
+  // pressed) would be pressed and opened in turn.
+  const double eps = std::numeric_limits<double>::epsilon(), largest_free_gap = free_gaps.cwiseAbs().maxCoeff();
+  forces_.setZero();
+  std::fill(is_pressed_.begin(), is_pressed_.end(), 0);
+  std::vector<char>& left_out = left_out_;
+  std::fill(left_out.begin(), left_out.end(), 0);
+  Eigen::Index entered = -1;
+  for (int iteration = 1; iteration <= kActiveSetIterationsPerPoint * int(size()) + 10; ++iteration) {
     ++iterations;
     list_pressed();
     if (!pressed_forces(free_gaps, trial_forces_)) return outcome = Outcome::NotPositiveDefinite, false;
-    double step = 1;
-    Eigen::Index blocking = -1;
-    for (const Eigen::Index a : pressed_) {
-      if (trial_forces_(a) > 0) continue;
-      const double reach = forces_(a) > 0 ? forces_(a) / (forces_(a) - trial_forces_(a)) : 0.0;
-      if (reach < step) step = reach, blocking = a;
+    if (entered >= 0 && trial_forces_(entered) <= 0) {
+      is_pressed_[std::size_t(entered)] = 0, left_out[std::size_t(entered)] = 1, entered = -1;
+    } else {
+      entered = -1;
+      double step = 1;
+      Eigen::Index blocking = -1;
+      for (const Eigen::Index a : pressed_) {
+        if (trial_forces_(a) > 0) continue;
+        const double reach = forces_(a) > 0 ? forces_(a) / (forces_(a) - trial_forces_(a)) : 0.0;
+        if (blocking < 0 || reach < step) step = reach, blocking = a;
+      }
+      if (blocking >= 0) {
+        forces_ += step * (trial_forces_ - forces_);
+        forces_(blocking) = 0;  // exactly, whatever the round-off of the move
+        for (const Eigen::Index a : pressed_)
+          if (forces_(a) <= 0) forces_(a) = 0, is_pressed_[std::size_t(a)] = 0;
+        if (step > 0) std::fill(left_out.begin(), left_out.end(), 0);
+        continue;
+      }
+      if (forces_ != trial_forces_) std::fill(left_out.begin(), left_out.end(), 0);
+      forces_ = trial_forces_;
     }
-    if (blocking >= 0) {
-      forces_ += step * (trial_forces_ - forces_);
-      forces_(blocking) = 0;  // exactly, whatever the round-off of the move
-      for (const Eigen::Index a : pressed_)
-        if (forces_(a) <= 0) forces_(a) = 0, is_pressed_[std::size_t(a)] = 0;
-      continue;
-    }
-    forces_ = trial_forces_;
+    list_pressed();
     update_gaps(free_gaps);
+    // the gaps' resolution: round-off of g_free + C f
+    const double closed = 16 * eps * (largest_free_gap + (gaps_ - free_gaps).cwiseAbs().maxCoeff());
     Eigen::Index most_closed = -1;
     for (Eigen::Index i = 0; i < size(); ++i)
-      if (!is_pressed_[std::size_t(i)] && gaps_(i) < 0 && (most_closed < 0 || gaps_(i) < gaps_(most_closed))) most_closed = i;
-    if (most_closed < 0) return list_pressed(), true;
+      if (!is_pressed_[std::size_t(i)] && !left_out[std::size_t(i)] && gaps_(i) < -closed &&
+          (most_closed < 0 || gaps_(i) < gaps_(most_closed)))
+        most_closed = i;
+    if (most_closed < 0) return true;
     is_pressed_[std::size_t(most_closed)] = 1;
+    entered = most_closed;
   }
   return false;
 }

@@ -15,20 +15,19 @@ class PenaltyComplementarity {
 public:
   /// Semismooth Newton iterations before the active-set method takes over.
   static constexpr int kNewtonIterations = 20;
-  /// The active-set method's iterations before the solve gives up (it ends in far fewer: each
-  /// point is freed a few times at most).
-  static constexpr int active_set_iterations(Eigen::Index points) { return int(10 * points + 10); }
+  /// The active-set method's iterations per point before the solve gives up (measured: under
+  /// two per pressed point on the unit test's flat faces).
+  static constexpr int kActiveSetIterationsPerPoint = 10;
 
-  enum class Outcome { Solved, NotPositiveDefinite, NoActiveSet };
+  enum class Outcome { Solved, NotPositiveDefinite, NoActiveSet, NotFinite };
 
   /// The points' compliance (symmetric, positive semidefinite) and penalty stiffness k_i > 0;
   /// forgets the last active set.
   void set(Eigen::MatrixXd compliance, Eigen::VectorXd stiffness);
   Eigen::Index size() const { return stiffness_.size(); }
-  const Eigen::MatrixXd& compliance() const { return compliance_; }
 
-  /// The forces at these free gaps, from the last solve's active set; `iterations` counts both
-  /// methods' iterations.
+  /// The forces at these free gaps (the gaps without force), from the last solve's active
+  /// set; `iterations` counts both methods' iterations. NotFinite: a free gap is not finite.
   Outcome solve(const Eigen::VectorXd& free_gaps, int& iterations);
   /// The last solution: every point's force, the pressed points, and whether Newton cycled and
   /// the active-set method found it.
@@ -43,7 +42,8 @@ private:
   /// close together under a compliance of low rank (a flat face on a plane). False then.
   bool newton(const Eigen::VectorXd& free_gaps, int& iterations, Outcome& outcome);
   /// The primal active-set method (as Lawson and Hanson's for NNLS), from no force: it keeps f
-  /// feasible and lowers the energy at every point it frees, so it ends.
+  /// feasible and lowers the energy whenever it presses a point (in exact arithmetic it ends;
+  /// its iterations are capped against round-off).
   bool active_set(const Eigen::VectorXd& free_gaps, int& iterations, Outcome& outcome);
   /// The forces of the points in pressed_ with the others' zero, into `forces`; false if their
   /// matrix is not positive definite.
@@ -54,10 +54,10 @@ private:
 
   Eigen::MatrixXd compliance_;
   Eigen::VectorXd stiffness_;
-  std::vector<char> is_pressed_;
+  std::vector<char> is_pressed_, left_out_;  ///< per point; left_out_: the active-set method's guard
   std::vector<Eigen::Index> pressed_;
   Eigen::VectorXd forces_, trial_forces_, gaps_;
-  Eigen::MatrixXd pressed_matrix_;
+  Eigen::MatrixXd pressed_matrix_;  ///< points x points; the pressed points' block in its corner
   Eigen::VectorXd pressed_rhs_;
   bool by_active_set_ = false;
 };

@@ -91,7 +91,7 @@ private:
   mutable long passes_ = 0;
   mutable double window_ = 0;                    ///< QuasistaticTerms::window of the next solve, m
   mutable double penalty_energy_ = 0;           ///< of the contacts at the last residual
-  mutable Eigen::VectorXd held_loads_;           ///< update_held_loads()
+  mutable Eigen::VectorXd held_loads_;           ///< update_held_loads(); in gap space the loads besides the coupling
   Eigen::Vector3d gravity_ = Eigen::Vector3d::Zero();
   mutable Eigen::VectorXd shifted_y_, friction_, z_rate_;  ///< friction_power's buffers
 };

@@ -1,7 +1,8 @@
 // The right-hand side and the gap functions run millions of times per simulation: after the
 // first evaluations have sized every buffer they must not touch the heap. This executable
 // counts malloc calls (it interposes malloc, so it holds only this test) around evaluations
-// of scenes that exercise every path: quasistatic modes with plane contact and friction,
+// of scenes that exercise every path: quasistatic modes with plane contact and friction or in
+// gap space,
 // flexible-flexible contact on a master patch, a rigid body, a spinning 3D body with
 // first-order SID terms, and joints.
 #include "isosid/format/sid_io.hpp"
@@ -82,6 +83,12 @@ TEST_CASE("the right-hand side and the gaps do not allocate", "[runtime][allocat
     const std::string scene = kAxisymmetric + sphere("sphere", "0.0100001", "-0.1") +
                               "[[fixed_plane]]\nname = \"ground\"\n[[contact]]\nname = \"c\"\nbody = \"sphere\"\nsurface = "
                               "\"contact\"\ntarget = \"ground\"\npenalty = 5e17\nfriction = 0.2\n";
+    CHECK(allocations_per_sweep(scene, dir) == 0);
+  }
+  SECTION("quasistatic modes against a plane, the contact in gap space") {
+    const std::string scene = kAxisymmetric + sphere("sphere", "0.0100001", "-0.1") +
+                              "[[fixed_plane]]\nname = \"ground\"\n[[contact]]\nname = \"c\"\nbody = \"sphere\"\nsurface = "
+                              "\"contact\"\ntarget = \"ground\"\npenalty = 5e17\nformulation = \"gap-space\"\n";
     CHECK(allocations_per_sweep(scene, dir) == 0);
   }
   SECTION("two flexible spheres (master patch) and a rigid ball") {
