@@ -131,7 +131,7 @@ std::vector<int> side_nodes(const BodyModel& body, int patch, PatchSide side) {
 ModelSpec coarse_model_spec(const ModelSpec& spec) {
   ModelSpec coarse = spec;
   for (PatchSpec& p : coarse.patches) p.refinement.hierarchical.reset();
-  coarse.reduction.method = "modal";
+  coarse.reduction.method = format::ReductionMethod::Modal;
   return coarse;
 }
 

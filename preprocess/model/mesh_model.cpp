@@ -152,14 +152,17 @@ void read_mesh_model(const TomlView& top, ModelSpec& m, const format::Material& 
   if (auto r = top.optional_table("reduction")) {
     r->allow_only({"method", "normal_modes", "interface_surface", "interface_points", "interface_point"});
     ReductionSpec& red = m.reduction;
-    red.method = r->string("method");
-    if (red.method != "modal" && red.method != "craig-bampton")
-      r->fail("method", "a meshed body is reduced by modal or craig-bampton reduction");
+    const std::optional<format::ReductionMethod> named = format::reduction_method_named(r->string("method"));
+    const std::string offered = format::reduction_method_names([](const auto& t) { return t.meshed_bodies; });
+    if (!named || !format::traits(*named).meshed_bodies) r->fail("method", "a meshed body is reduced by " + offered + " reduction");
+    red.method = *named;
     red.normal_modes = r->integer_in("normal_modes", 1, 100000, 10);
-    if (red.method != "craig-bampton")
+    const bool interface_nodes = format::traits(red.method).interface_nodes;
+    if (!interface_nodes)
       for (const char* key : {"interface_surface", "interface_points", "interface_point"})
-        if (r->has(key)) r->fail(key, "only used by method = \"craig-bampton\"");
-    if (red.method == "craig-bampton") {
+        if (r->has(key))
+          r->fail(key, "only used by method = " + format::reduction_method_names([](const auto& t) { return t.interface_nodes && t.meshed_bodies; }, "\""));
+    if (interface_nodes) {
       red.interface_surface = r->string("interface_surface");
       if (std::none_of(m.contact_surfaces.begin(), m.contact_surfaces.end(), [&](const ContactSurfaceSpec& c) { return c.name == red.interface_surface; }))
         r->fail("interface_surface", "no contact_surface named '" + red.interface_surface + "'");

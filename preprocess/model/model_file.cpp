@@ -381,13 +381,14 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
   if (auto r = top.optional_table("reduction")) {
     r->allow_only({"method", "normal_modes", "interface_surface", "interface_points", "interface_center", "boundary_surface"});
     ReductionSpec& red = m.reduction;
-    red.method = r->string("method");
-    const bool massless = red.method == "macneal" || red.method == "craig-bampton-massless";
-    if (red.method != "modal" && red.method != "craig-bampton" && red.method != "full" && !massless)
-      r->fail("method", "unknown method '" + red.method + "' (modal, craig-bampton, full, macneal, craig-bampton-massless)");
-    const int n = r->integer_in("normal_modes", 0, 100000, red.method == "full" ? 0 : 10);
-    if ((red.method == "modal" || massless) && n < 1) r->fail("normal_modes", "must be a positive count");
-    if (massless) {
+    const std::string method = r->string("method");
+    const std::optional<format::ReductionMethod> named = format::reduction_method_named(method);
+    if (!named) r->fail("method", "unknown method '" + method + "' (" + format::reduction_method_names() + ")");
+    red.method = *named;
+    const format::ReductionMethodTraits& kind = format::traits(red.method);
+    const int n = r->integer_in("normal_modes", 0, 100000, red.method == format::ReductionMethod::Full ? 0 : 10);
+    if (kind.needs_normal_modes && n < 1) r->fail("normal_modes", "must be a positive count");
+    if (kind.massless_boundary) {
       red.boundary_surface = r->string("boundary_surface");
       const auto surface = std::find_if(m.contact_surfaces.begin(), m.contact_surfaces.end(),
                                         [&](const ContactSurfaceSpec& s) { return s.name == red.boundary_surface; });
@@ -396,12 +397,13 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
       // the massless coordinates are the fine model's control points: a THB body's coarse
       // modes (its transfer operator) would not carry them
       if (std::any_of(m.patches.begin(), m.patches.end(), [](const PatchSpec& p) { return p.refinement.hierarchical.has_value(); }))
-        r->fail("method", red.method + " is not available for hierarchically refined bodies (refine with subdivisions or graded knots)");
+        r->fail("method", method + " is not available for hierarchically refined bodies (refine with subdivisions or graded knots)");
     } else if (r->has("boundary_surface")) {
-      r->fail("boundary_surface", "only used by the massless-boundary methods (macneal, craig-bampton-massless)");
+      r->fail("boundary_surface", "only used by the massless-boundary methods (" +
+                                      format::reduction_method_names([](const auto& t) { return t.massless_boundary; }) + ")");
     }
     red.normal_modes = n;
-    if (red.method == "craig-bampton") {
+    if (kind.interface_nodes) {
       red.interface_surface = r->string("interface_surface");
       if (std::find(surfaces.begin(), surfaces.end(), red.interface_surface) == surfaces.end())
         r->fail("interface_surface", "no contact_surface named '" + red.interface_surface + "'");
@@ -425,7 +427,7 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
       red.interface_center = Eigen::Map<const Eigen::VectorXd>(c.data(), Eigen::Index(c.size()));
     } else {
       for (const char* key : {"interface_surface", "interface_points", "interface_center"})
-        if (r->has(key)) r->fail(key, "only used by method = \"craig-bampton\"");
+        if (r->has(key)) r->fail(key, "only used by method = " + format::reduction_method_names([](const auto& t) { return t.interface_nodes; }, "\""));
     }
   }
   read_visual(top, m);

@@ -41,7 +41,7 @@ struct RefinementSpec {
 
 /// How the body is reduced (the [reduction] table).
 struct ReductionSpec {
-  std::string method = "modal";          ///< modal | craig-bampton | full | macneal | craig-bampton-massless
+  format::ReductionMethod method = format::ReductionMethod::Modal;
   int normal_modes = 10;
   std::string interface_surface;         ///< contact surface whose side holds the interface nodes
   std::string boundary_surface;          ///< massless-boundary methods: the contact surface whose control points are the boundary

@@ -117,7 +117,7 @@ nlohmann::json sid_report(const PreparedBody& prepared, const std::string& outpu
   j["nq"] = sid.nq();
   j["n_low"] = sid.refmod.n_low;
   j["n_high"] = sid.refmod.n_high();
-  j["reduction"] = prepared.basis.method;
+  j["reduction"] = format::name(prepared.basis.method);
   j["removed_rigid_directions"] = prepared.basis.removed_rigid;
   j["frequencies_hz"] = as_vector(sid.refmod.frequencies_hz);
   j["contact_points"] = nlohmann::json::object();
@@ -168,7 +168,7 @@ void print_sid_report(const PreparedBody& prepared, const std::string& output, b
     return;
   }
   std::printf("%s: %s reduction, nq = %lld (%d low + %d high), %d free DOFs -> %s\n", body.spec.body_name.c_str(),
-              prepared.basis.method.c_str(), static_cast<long long>(sid.nq()), sid.refmod.n_low, sid.refmod.n_high(),
+              format::name(prepared.basis.method).c_str(), static_cast<long long>(sid.nq()), sid.refmod.n_low, sid.refmod.n_high(),
               body.dofs.free_count(), output.c_str());
   std::printf("%s%s", levels_text.c_str(), placement_text.c_str());
 }

@@ -58,7 +58,7 @@ PreparedBody prepare_body(const ModelSpec& spec, const PrepareOptions& options, 
       nodal = nodal_transfer(coarse->body, a.body);
       coarse_modes = prolongated_modes({coarse->body, coarse->system, coarse->basis}, a.body, *nodal);
     });
-  ReducedBasis basis = clock.run("reduction", spec.reduction.method + " reduction", [&] { return reduce_body(a.body, a.system, coarse_modes); });
+  ReducedBasis basis = clock.run("reduction", format::name(spec.reduction.method) + " reduction", [&] { return reduce_body(a.body, a.system, coarse_modes); });
   PreparedBody out{std::move(a.body), std::move(a.system), std::move(a.scalar_mass), std::move(basis), {}, {}};
   if (options.build_sid) {
     out.sid = clock.run("sid_terms", "SID terms, contact data, nodes and stress rows",

@@ -86,8 +86,8 @@ ReductionRequest reduction_request(const BodyModel& body) {
   ReductionRequest q;
   q.method = body.spec.reduction.method;
   q.normal_modes = body.spec.reduction.normal_modes;
-  if (q.method == "craig-bampton") q.interface_dofs = interface_dofs(body, q.interface_description);
-  if (q.method == "macneal" || q.method == "craig-bampton-massless") q.interface_dofs = massless_boundary_dofs(body, q.interface_description);
+  if (format::traits(q.method).interface_nodes) q.interface_dofs = interface_dofs(body, q.interface_description);
+  if (format::traits(q.method).massless_boundary) q.interface_dofs = massless_boundary_dofs(body, q.interface_description);
   return q;
 }
 
@@ -100,14 +100,16 @@ ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system, co
   request.extra_vectors = extra;
   // more modes than the refined model has: a model-file problem, not a failed computation
   const Eigen::Index free = system.K.rows();
-  const Eigen::Index needed = request.normal_modes + (request.method == "modal" ? rigid.cols() : Eigen::Index(request.interface_dofs.size())) +
-                              (request.method == "macneal" ? rigid.cols() : 0);
-  if (request.method != "full" && needed > free)
+  using format::ReductionMethod;
+  const bool modal = request.method == ReductionMethod::Modal;
+  const Eigen::Index needed = request.normal_modes + (modal ? rigid.cols() : Eigen::Index(request.interface_dofs.size())) +
+                              (request.method == ReductionMethod::MacNeal ? rigid.cols() : 0);
+  if (request.method != ReductionMethod::Full && needed > free)
     throw format::InputError(body.spec.file, "reduction.normal_modes",
                              std::to_string(request.normal_modes) + " modes need " + std::to_string(needed) +
-                                 " free DOFs with the " + (request.method == "modal" ? "rigid-body modes" : "interface DOFs") +
+                                 " free DOFs with the " + (modal ? "rigid-body modes" : "interface DOFs") +
                                  ", but the refined model has " + std::to_string(free));
-  if (request.method == "craig-bampton-massless" && rigid.cols() > 0)
+  if (request.method == ReductionMethod::CraigBamptonMassless && rigid.cols() > 0)
     throw format::InputError(body.spec.file, "reduction.method",
                              "craig-bampton-massless needs a body that its [boundary] holds (this one has " + std::to_string(rigid.cols()) +
                                  " rigid-body motions); use macneal for a free body");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "isosid/format/analysis_type.hpp"
+#include "isosid/format/reduction_method.hpp"
 
 namespace isosid::prep {
 
@@ -14,7 +15,7 @@ struct ReducedBasis {
   Eigen::MatrixXd Phi;        ///< free DOFs x nq: Phi^T M Phi = I, Phi^T K Phi = diag(omega2); MacNeal: see `massless`
   Eigen::VectorXd omega2;     ///< ascending squared angular frequencies (0 for massless coordinates)
   int n_low = 0;              ///< leading normal (low-frequency) modes
-  std::string method;         ///< modal, craig-bampton, full, macneal
+  format::ReductionMethod method = format::ReductionMethod::Modal;
   std::string interface;      ///< description of the interface (Craig-Bampton) or massless boundary (MacNeal)
   int removed_rigid = 0;      ///< basis directions dropped as rigid-body content
   /// Craig-Bampton: the free DOFs of its interface, whose constraint modes make the reduction

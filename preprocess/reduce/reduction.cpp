@@ -12,10 +12,10 @@ namespace isosid::prep {
 ReducedBasis reduce(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, const Eigen::MatrixXd& rigid,
                     const ReductionRequest& r, double lambda_scale) {
   const int n_rigid = int(rigid.cols());
-  if (r.method == "macneal" || r.method == "craig-bampton-massless") {
+  if (format::traits(r.method).massless_boundary) {
     // not M-orthonormal bases by design: their boundary is massless, their stiffness coupled
     if (r.extra_vectors.cols() > 0) throw format::ComputationError("a massless-boundary reduction cannot carry a coarse model's modes");
-    ReducedBasis out = massless_boundary_basis(r.method == "macneal"
+    ReducedBasis out = massless_boundary_basis(r.method == format::ReductionMethod::MacNeal
                                                    ? macneal_reduction(K, M, rigid, r.interface_dofs, r.normal_modes, lambda_scale)
                                                    : massless_craig_bampton(K, M, rigid, r.interface_dofs, r.normal_modes, lambda_scale));
     out.method = r.method;
@@ -25,17 +25,23 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMat
   ReducedBasis out;
   out.method = r.method;
   out.interface = r.interface_description;
-  if (r.method == "modal") {
-    if (r.normal_modes < 1) throw format::ComputationError("modal reduction needs at least one mode");
-    const ModalResult m = lowest_modes(K, M, r.normal_modes + n_rigid, lambda_scale);
-    out.Phi = m.modes.rightCols(r.normal_modes);
-  } else if (r.method == "craig-bampton") {
-    out.Phi = craig_bampton_basis(K, M, r.interface_dofs, r.normal_modes, lambda_scale);
-    out.interface_dofs = r.interface_dofs;
-  } else if (r.method == "full") {
-    out.Phi = lowest_modes(K, M, int(K.rows()), lambda_scale).modes;
-  } else {
-    throw format::ComputationError("unknown reduction method '" + r.method + "'");
+  switch (r.method) {
+    case format::ReductionMethod::Modal: {
+      if (r.normal_modes < 1) throw format::ComputationError("modal reduction needs at least one mode");
+      const ModalResult m = lowest_modes(K, M, r.normal_modes + n_rigid, lambda_scale);
+      out.Phi = m.modes.rightCols(r.normal_modes);
+      break;
+    }
+    case format::ReductionMethod::CraigBampton:
+      out.Phi = craig_bampton_basis(K, M, r.interface_dofs, r.normal_modes, lambda_scale);
+      out.interface_dofs = r.interface_dofs;
+      break;
+    case format::ReductionMethod::Full:
+      out.Phi = lowest_modes(K, M, int(K.rows()), lambda_scale).modes;
+      break;
+    case format::ReductionMethod::MacNeal:
+    case format::ReductionMethod::CraigBamptonMassless:
+      break;  // above
   }
   if (r.extra_vectors.cols() > 0) {
     out.Phi.conservativeResize(Eigen::NoChange, out.Phi.cols() + r.extra_vectors.cols());
@@ -45,7 +51,7 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMat
   remove_rigid_content(out.Phi, M, rigid);
   out.omega2 = orthonormalize(out.Phi, K, M);
   out.removed_rigid = int(raw - out.Phi.cols());
-  out.n_low = r.method == "craig-bampton" ? std::min<int>(r.normal_modes, int(out.Phi.cols())) : int(out.Phi.cols());
+  out.n_low = format::traits(r.method).interface_nodes ? std::min<int>(r.normal_modes, int(out.Phi.cols())) : int(out.Phi.cols());
   return out;
 }
 

@@ -2,6 +2,7 @@
 // modal basis, or a massless boundary (MacNeal, massless Craig-Bampton). Every result is a Buckens-frame basis;
 // all but the massless-boundary ones are M-orthonormal and K-diagonal.
 #pragma once
+#include "isosid/format/reduction_method.hpp"
 #include "reduce/mode_basis.hpp"
 
 #include <Eigen/Sparse>
@@ -11,7 +12,7 @@
 namespace isosid::prep {
 
 struct ReductionRequest {
-  std::string method = "modal";      ///< modal | craig-bampton | full | macneal | craig-bampton-massless
+  format::ReductionMethod method = format::ReductionMethod::Modal;
   int normal_modes = 10;             ///< modal, macneal: elastic modes kept; craig-bampton(-massless): fixed-interface modes
   std::vector<int> interface_dofs;   ///< free DOF indices (craig-bampton: interface; massless methods: the boundary)
   std::string interface_description;

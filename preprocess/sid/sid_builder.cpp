@@ -71,7 +71,7 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   format::RefMod& r = sid.refmod;
   r.frequencies_hz = basis.omega2.cwiseMax(0.0).cwiseSqrt() / (2 * M_PI);
   r.n_low = basis.n_low;
-  r.reduction_method = basis.method;
+  r.reduction_method = format::name(basis.method);
   r.interface_description = basis.interface;
   const Eigen::Index first_massless = basis.Phi.cols() - basis.massless();
   for (Eigen::Index k = 0; k < first_massless; ++k)
@@ -87,7 +87,7 @@ format::Sid build_sid(const BodyModel& body, const SystemMatrices& system, const
   sid.De.M0 = sid.damping.alpha1 * sid.Me.M0 + sid.damping.alpha2 * sid.Ke.M0;
 
   // a Craig-Bampton SID marks its points always (the runtime rebuilds one without the marks)
-  const std::vector<int>* interface = basis.method == "craig-bampton" ? &basis.interface_dofs : nullptr;
+  const std::vector<int>* interface = format::traits(basis.method).interface_nodes ? &basis.interface_dofs : nullptr;
   for (const ContactSurfaceSpec& c : spec.contact_surfaces) {
     if (c.continued.empty()) {
       sid.contact_surfaces.push_back(contact_surface(body, c, Phi, interface));

@@ -20,7 +20,7 @@ namespace {
 /// A Craig-Bampton SID from before isosid-prep marked the contact points its interface covers
 /// (/contact/<name>/in_interface): without them a contact beyond the interface goes unreported.
 bool lacks_interface_coverage(const format::Sid& sid) {
-  if (sid.refmod.reduction_method != "craig-bampton") return false;
+  if (format::reduction_method_named(sid.refmod.reduction_method) != format::ReductionMethod::CraigBampton) return false;
   return std::any_of(sid.contact_surfaces.begin(), sid.contact_surfaces.end(), [](const format::ContactSurface& c) { return c.in_interface.size() == 0; });
 }
 

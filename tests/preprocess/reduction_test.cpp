@@ -47,16 +47,16 @@ TEST_CASE("modal, Craig-Bampton and full bases are orthonormal, diagonal and in 
     const Fixture f = test::assembled(test::spec_for(prep::primitives::disk(0.1), AnalysisType::PlaneStrain, 2.1e11, 0.3, 7850,
                                              test::uniform({3, 3}, {3, 3})));
     REQUIRE(f.rigid.cols() == 3);
-    prep::ReductionRequest modal{"modal", 8, {}, "", {}};
+    prep::ReductionRequest modal{format::ReductionMethod::Modal, 8, {}, "", {}};
     const auto m = prep::reduce(f.sys.K, f.sys.M, f.rigid, modal, f.scale);
     CHECK(m.Phi.cols() == 8);
     check_basis(f, m);
-    prep::ReductionRequest cb{"craig-bampton", 6, interface_of(f.body, "bottom"), "", {}};
+    prep::ReductionRequest cb{format::ReductionMethod::CraigBampton, 6, interface_of(f.body, "bottom"), "", {}};
     const auto c = prep::reduce(f.sys.K, f.sys.M, f.rigid, cb, f.scale);
     CHECK(c.removed_rigid == 3);
     CHECK(c.Phi.cols() == 6 + Eigen::Index(cb.interface_dofs.size()) - 3);
     check_basis(f, c);
-    const auto full = prep::reduce(f.sys.K, f.sys.M, f.rigid, {"full", 0, {}, "", {}}, f.scale);
+    const auto full = prep::reduce(f.sys.K, f.sys.M, f.rigid, {format::ReductionMethod::Full, 0, {}, "", {}}, f.scale);
     CHECK(full.Phi.cols() == f.body.dofs.free_count() - 3);
     check_basis(f, full);
     // the full basis holds the free-free elastic modes: its frequencies equal the modal ones
@@ -66,7 +66,7 @@ TEST_CASE("modal, Craig-Bampton and full bases are orthonormal, diagonal and in 
     const Fixture f = test::assembled(test::spec_for(prep::primitives::half_disk(0.01), AnalysisType::Axisymmetric, 7.28e10, 0.33,
                                              2789, test::uniform({3, 2}, {3, 3})));
     REQUIRE(f.rigid.cols() == 1);
-    prep::ReductionRequest cb{"craig-bampton", 4, interface_of(f.body, "lower"), "", {}};
+    prep::ReductionRequest cb{format::ReductionMethod::CraigBampton, 4, interface_of(f.body, "lower"), "", {}};
     const auto c = prep::reduce(f.sys.K, f.sys.M, f.rigid, cb, f.scale);
     CHECK(c.removed_rigid == 1);
     check_basis(f, c);
@@ -80,7 +80,7 @@ TEST_CASE("Craig-Bampton reproduces the full static deflection under interface l
   const Fixture f = test::assembled(spec);
   REQUIRE(f.rigid.cols() == 0);  // clamped: no rigid-body field is admissible
   const std::vector<int> interface = interface_of(f.body, "right");
-  prep::ReductionRequest cb{"craig-bampton", 3, interface, "", {}};
+  prep::ReductionRequest cb{format::ReductionMethod::CraigBampton, 3, interface, "", {}};
   const auto c = prep::reduce(f.sys.K, f.sys.M, f.rigid, cb, f.scale);
   std::mt19937 gen(4);
   std::normal_distribution<double> n01;
@@ -104,10 +104,10 @@ TEST_CASE("Craig-Bampton eigenvalues bound the full ones from above and become e
   const Eigen::VectorXd exact = dense.eigenvalues();
   const std::vector<int> interface = interface_of(f.body, "right");
   const int interior = f.body.dofs.free_count() - int(interface.size());
-  const auto partial = prep::reduce(f.sys.K, f.sys.M, f.rigid, {"craig-bampton", 4, interface, "", {}}, f.scale);
+  const auto partial = prep::reduce(f.sys.K, f.sys.M, f.rigid, {format::ReductionMethod::CraigBampton, 4, interface, "", {}}, f.scale);
   for (Eigen::Index i = 0; i < partial.omega2.size(); ++i) CHECK(partial.omega2(i) >= exact(i) * (1 - 1e-10));
   CHECK(partial.omega2(0) == Approx(exact(0)).epsilon(1e-3));  // and close for the lowest
-  const auto complete = prep::reduce(f.sys.K, f.sys.M, f.rigid, {"craig-bampton", interior, interface, "", {}}, f.scale);
+  const auto complete = prep::reduce(f.sys.K, f.sys.M, f.rigid, {format::ReductionMethod::CraigBampton, interior, interface, "", {}}, f.scale);
   CHECK(complete.Phi.cols() == f.body.dofs.free_count());
   // the basis spans the whole space: the spectrum is the full model's (relative 1e-8:
   // two dense solves whose round-off grows with the spread of the spectrum, ~1e9 here)

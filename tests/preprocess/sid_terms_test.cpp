@@ -45,7 +45,7 @@ prep::ModelSpec modal_spec(prep::NurbsPatch patch, AnalysisType type, std::vecto
   r.degrees = std::move(degrees);
   r.subdivisions = std::move(parts);
   auto s = test::spec_for(std::move(patch), type, 7.28e10, 0.33, 2789, r);
-  s.reduction.method = "modal";
+  s.reduction.method = format::ReductionMethod::Modal;
   s.reduction.normal_modes = modes;
   s.extra_quadrature_points = extra;
   return s;

@@ -5,6 +5,7 @@
 // contact, master-patch and stress-point data use the analysis dimension `dim` (2 or 3).
 #pragma once
 #include "isosid/format/analysis_type.hpp"
+#include "isosid/format/reduction_method.hpp"
 #include "isosid/format/taylor.hpp"
 
 #include <Eigen/Dense>
@@ -27,7 +28,7 @@ struct RefMod {
   std::vector<std::string> mode_names;   ///< nq names
   Eigen::VectorXd frequencies_hz;        ///< nq natural frequencies of the reduced body
   int n_low = 0;                         ///< leading normal (low-frequency) modes; the rest are high
-  std::string reduction_method;          ///< "modal", "craig-bampton", "full", "macneal", "craig-bampton-massless"
+  std::string reduction_method;          ///< a name of reduction_method.hpp's table (or another SID writer's)
   std::string interface_description;     ///< e.g. the contact surface and interval of the constraint modes
   /// nq x 3 (empty: not recorded): share of each coordinate's kinetic energy carried by the
   /// mean translation of cross-sections across `long_axis`, per body-frame axis
@@ -38,7 +39,10 @@ struct RefMod {
   /// Massless-boundary SIDs (MacNeal and the massless Craig-Bampton variant): the high
   /// coordinates are the displacements of the boundary's DOFs (no mass: their rows of Me are
   /// zero, their frequency is listed as 0).
-  bool massless_boundary() const { return reduction_method == "macneal" || reduction_method == "craig-bampton-massless"; }
+  bool massless_boundary() const {
+    const std::optional<ReductionMethod> method = reduction_method_named(reduction_method);
+    return method && traits(*method).massless_boundary;
+  }
   int n_massless() const { return massless_boundary() ? n_high() : 0; }
 };
 
