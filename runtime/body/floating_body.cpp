@@ -284,10 +284,10 @@ void FloatingBody::load_response(const GeneralizedForce& load, double* ydot) con
   accelerations_from(hr, load.elastic.head(n_dynamic_), ydot + offset_);
 }
 
-void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, const Vector3d& w, Index first, Eigen::Ref<VectorXd> out) const {
+bool FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, const Vector3d& w, Index first, Eigen::Ref<VectorXd> out) const {
   // rows beyond n_inertial_ (a massless boundary) carry no inertia
   const Index ni = n_inertial_, rows = std::min(first + out.size(), ni) - first;
-  if (!rotates_ || rows <= 0) return;
+  if (!rotates_ || rows <= 0) return false;
   auto part = out.head(rows);
   // Ge(qdot) w = sum_a w_a sum_j Ge_j(:, a) qdot_j: the SID's nq x 3 blocks Ge_j lie one after
   // the other, so column a of all of them is a 3nq-strided matrix; the sum runs over the
@@ -309,6 +309,7 @@ void FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, co
                                                                      Eigen::OuterStride<>(6 * oe1_.rows()));
     part.noalias() -= w2(c) * (column.middleRows(first, rows) * qv.head(m));
   }
+  return true;
 }
 
 void FloatingBody::add_quasistatic_loads(const double* y, const Vector3d& gravity, Eigen::Ref<VectorXd> out) const {
@@ -317,8 +318,7 @@ void FloatingBody::add_quasistatic_loads(const double* y, const Vector3d& gravit
 }
 
 bool FloatingBody::add_uncoupled_quasistatic_loads(const double* y, const Vector3d& gravity, Eigen::Ref<VectorXd> out) const {
-  const bool rotation = rotates_ && n_inertial_ > n_dynamic_;  // add_rotation_loads' rows
-  if (rotation) add_rotation_loads(q(y), qdot(y), omega(y), n_dynamic_, out);
+  const bool rotation = add_rotation_loads(q(y), qdot(y), omega(y), n_dynamic_, out);
   if (held_gravity_rows_.size()) out.noalias() += held_gravity_rows_ * (orientation(y).toRotationMatrix().transpose() * gravity);
   return rotation || held_gravity_rows_.size() > 0;
 }

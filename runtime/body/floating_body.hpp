@@ -142,9 +142,10 @@ public:
   const ModalMatrix& stiffness() const { return stiffness_; }
 
 private:
-  /// out -= rows [first, first + out.size()) of Ge(qdot) w + Oe(q) w^2 (no-op for bodies that
-  /// cannot rotate): the integrated modes need their rows, the static solve the others.
-  void add_rotation_loads(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, const Eigen::Vector3d& w, Eigen::Index first,
+  /// out -= rows [first, first + out.size()) of Ge(qdot) w + Oe(q) w^2: the integrated modes
+  /// need their rows, the static solve the others. False (a no-op) where those rows carry no
+  /// rotation loads: the body cannot rotate, or they are a massless boundary's.
+  bool add_rotation_loads(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, const Eigen::Vector3d& w, Eigen::Index first,
                           Eigen::Ref<Eigen::VectorXd> out) const;
 
   std::string name_;

@@ -7,13 +7,17 @@
 namespace isosid::run {
 
 namespace {
-/// |a - b| over the given entries (b empty: |a|).
-double norm_over(const std::vector<Eigen::Index>& entries, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+/// |a| over the given entries.
+double norm_over(const std::vector<Eigen::Index>& entries, const Eigen::VectorXd& a) {
   double sum = 0;
-  for (const Eigen::Index i : entries) {
-    const double d = b.size() ? a(i) - b(i) : a(i);
-    sum += d * d;
-  }
+  for (const Eigen::Index i : entries) sum += a(i) * a(i);
+  return std::sqrt(sum);
+}
+
+/// |a - b| over the given entries.
+double distance_over(const std::vector<Eigen::Index>& entries, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  double sum = 0;
+  for (const Eigen::Index i : entries) sum += (a(i) - b(i)) * (a(i) - b(i));
   return std::sqrt(sum);
 }
 
@@ -138,13 +142,13 @@ std::pair<double, double> GapPairing::watched_change(const Poses& at) const {
   // |dr| + |dA_s| |X + S q_s| + |S dq_s| + (the same for the target), each |S x| <= |S|_F |x|
   // over the columns the rows read. For the difference of two rotations the Frobenius norm is
   // sqrt(2) times the spectral norm.
-  const double slave_deformation_change = slave_rows_norm_ * norm_over(slave_columns_, *at.q_slave, w.q_slave);
+  const double slave_deformation_change = slave_rows_norm_ * distance_over(slave_columns_, *at.q_slave, w.q_slave);
   double target_deformation_change = 0, target_radius = target_reach_;
   if (at.q_target) {
-    target_deformation_change = target_rows_norm_ * norm_over(target_columns_, *at.q_target, w.q_target);
-    target_radius += target_rows_norm_ * norm_over(target_columns_, *at.q_target, Eigen::VectorXd());
+    target_deformation_change = target_rows_norm_ * distance_over(target_columns_, *at.q_target, w.q_target);
+    target_radius += target_rows_norm_ * norm_over(target_columns_, *at.q_target);
   }
-  const double slave_radius = slave_reach_ + slave_rows_norm_ * norm_over(slave_columns_, *at.q_slave, Eigen::VectorXd());
+  const double slave_radius = slave_reach_ + slave_rows_norm_ * norm_over(slave_columns_, *at.q_slave);
   const double slave_turn = (at.A_slave - w.A_slave).norm() / std::sqrt(2.0);
   const double target_turn = (at.A_target - w.A_target).norm() / std::sqrt(2.0);
   const double separation_change = ((at.r_slave - w.r_slave) - (at.r_target - w.r_target)).norm() + slave_turn * slave_radius +

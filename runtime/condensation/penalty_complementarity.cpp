@@ -89,15 +89,14 @@ bool PenaltyComplementarity::active_set(const Eigen::VectorXd& free_gaps, int& i
   const double eps = std::numeric_limits<double>::epsilon(), largest_free_gap = free_gaps.cwiseAbs().maxCoeff();
   forces_.setZero();
   std::fill(is_pressed_.begin(), is_pressed_.end(), 0);
-  std::vector<char>& left_out = left_out_;
-  std::fill(left_out.begin(), left_out.end(), 0);
+  std::fill(left_out_.begin(), left_out_.end(), 0);
   Eigen::Index entered = -1;
   for (int iteration = 1; iteration <= kActiveSetIterationsPerPoint * int(size()) + 10; ++iteration) {
     ++iterations;
     list_pressed();
     if (!pressed_forces(free_gaps, trial_forces_)) return outcome = Outcome::NotPositiveDefinite, false;
     if (entered >= 0 && trial_forces_(entered) <= 0) {
-      is_pressed_[std::size_t(entered)] = 0, left_out[std::size_t(entered)] = 1, entered = -1;
+      is_pressed_[std::size_t(entered)] = 0, left_out_[std::size_t(entered)] = 1, entered = -1;
     } else {
       entered = -1;
       double step = 1;
@@ -112,10 +111,10 @@ bool PenaltyComplementarity::active_set(const Eigen::VectorXd& free_gaps, int& i
         forces_(blocking) = 0;  // exactly, whatever the round-off of the move
         for (const Eigen::Index a : pressed_)
           if (forces_(a) <= 0) forces_(a) = 0, is_pressed_[std::size_t(a)] = 0;
-        if (step > 0) std::fill(left_out.begin(), left_out.end(), 0);
+        if (step > 0) std::fill(left_out_.begin(), left_out_.end(), 0);
         continue;
       }
-      if (forces_ != trial_forces_) std::fill(left_out.begin(), left_out.end(), 0);
+      if (forces_ != trial_forces_) std::fill(left_out_.begin(), left_out_.end(), 0);
       forces_ = trial_forces_;
     }
     list_pressed();
@@ -124,7 +123,7 @@ bool PenaltyComplementarity::active_set(const Eigen::VectorXd& free_gaps, int& i
     const double closed = 16 * eps * (largest_free_gap + (gaps_ - free_gaps).cwiseAbs().maxCoeff());
     Eigen::Index most_closed = -1;
     for (Eigen::Index i = 0; i < size(); ++i)
-      if (!is_pressed_[std::size_t(i)] && !left_out[std::size_t(i)] && gaps_(i) < -closed &&
+      if (!is_pressed_[std::size_t(i)] && !left_out_[std::size_t(i)] && gaps_(i) < -closed &&
           (most_closed < 0 || gaps_(i) < gaps_(most_closed)))
         most_closed = i;
     if (most_closed < 0) return true;
