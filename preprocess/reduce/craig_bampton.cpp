@@ -44,7 +44,7 @@ Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const 
   std::unique_ptr<SparseCholesky> interior;
   try {
     common::set_work_step("constraint modes: factorizing the interior stiffness (" + std::to_string(Koo.rows()) + " DOFs)");
-    interior = std::make_unique<SparseCholesky>(Koo);
+    interior = std::make_unique<SparseCholesky>(Koo, "the interior stiffness's factorization");
   } catch (const format::ComputationError&) {
     throw format::ComputationError("Craig-Bampton: the " + std::to_string(interface_dofs.size()) +
                                    " interface DOFs do not fix the body (the interior stiffness is singular); "
@@ -52,7 +52,10 @@ Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const 
   }
   Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(n, n_normal + Eigen::Index(interface_dofs.size()));
   if (n_normal > 0) {
-    const ModalResult fixed = lowest_modes(Koo, Moo, n_normal, lambda_scale);
+    // the fixed-interface modes through the same factor (models too small for Lanczos's room: dense)
+    const Eigen::MatrixXd none;
+    const ModalResult fixed = n_normal < Koo.rows() - 1 ? lowest_elastic_modes(*interior, Moo, none, n_normal)
+                                                        : lowest_modes(Koo, Moo, n_normal, lambda_scale);
     for (std::size_t i = 0; i < inner.size(); ++i) basis.row(inner[i]).head(n_normal) = fixed.modes.row(Eigen::Index(i));
   }
   common::set_work_step("constraint modes: " + std::to_string(interface_dofs.size()) + " interface DOFs' solves");

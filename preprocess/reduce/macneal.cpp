@@ -12,6 +12,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
 #include <algorithm>
+#include <memory>
 
 namespace isosid::prep {
 
@@ -41,11 +42,9 @@ Eigen::SparseMatrix<double> supported(const Eigen::SparseMatrix<double>& K, cons
 
 }  // namespace
 
-Eigen::MatrixXd elastic_unit_load_response(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+Eigen::MatrixXd elastic_unit_load_response(const SparseCholesky& stiffness, const Eigen::SparseMatrix<double>& M,
                                            const Eigen::MatrixXd& rigid, const std::vector<int>& dofs) {
-  const Eigen::Index n = K.rows(), nb = Eigen::Index(dofs.size()), nr = rigid.cols();
-  common::set_work_step("boundary statics: factorizing the stiffness (" + std::to_string(n) + " DOFs)");
-  const SparseCholesky factor(nr > 0 ? supported(K, rigid) : K);
+  const Eigen::Index n = M.rows(), nb = Eigen::Index(dofs.size()), nr = rigid.cols();
   // P = I - M R (R^T M R)^-1 R^T removes the loads' rigid-body resultants (inertia relief)
   const Eigen::MatrixXd MR = nr > 0 ? sparse_times(M, rigid) : Eigen::MatrixXd(n, 0);
   const Eigen::LDLT<Eigen::MatrixXd> gram(rigid.transpose() * MR);
@@ -57,10 +56,15 @@ Eigen::MatrixXd elastic_unit_load_response(const Eigen::SparseMatrix<double>& K,
     Eigen::MatrixXd loads = Eigen::MatrixXd::Zero(n, width);
     for (Eigen::Index k = 0; k < width; ++k) loads(dofs[std::size_t(first + k)], k) = 1.0;
     if (nr > 0) loads.noalias() -= MR * gram.solve(rigid.transpose() * loads);
-    u.middleCols(first, width) = factor.solve(loads);
+    u.middleCols(first, width) = stiffness.solve(loads);
   }
   remove_rigid_content(u, M, rigid);  // the one solution without rigid content (R^T M u = 0)
   return u;
+}
+
+std::unique_ptr<SparseCholesky> stiffness_factor(const Eigen::SparseMatrix<double>& K, const Eigen::MatrixXd& rigid) {
+  common::set_work_step("factorizing the stiffness (" + std::to_string(K.rows()) + " DOFs)");
+  return std::make_unique<SparseCholesky>(rigid.cols() > 0 ? supported(K, rigid) : K, "the stiffness's factorization");
 }
 
 MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
@@ -71,7 +75,11 @@ MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, co
   // the basis T and the modes, with a block of loads and solutions in flight
   check_memory("reduction.boundary_surface", "the MacNeal basis of " + std::to_string(nb) + " boundary DOFs on " + std::to_string(n) + " DOFs",
                double(n) * double(nb + 2 * n_modes + 3 * std::min(kBlock, nb)) * sizeof(double));
-  const ModalResult modes = lowest_modes(K, M, n_modes + int(nr), lambda_scale);
+  // one factorization serves the eigen solve and the boundary statics; models too small for
+  // Lanczos's room take the dense solve
+  const std::unique_ptr<SparseCholesky> stiffness = stiffness_factor(K, rigid);
+  const bool lanczos = n_modes < n - nr - 1;
+  const ModalResult modes = lanczos ? lowest_elastic_modes(*stiffness, M, rigid, n_modes) : lowest_modes(K, M, n_modes + int(nr), lambda_scale);
   // the elastic modes in normal form within their span: on finely graded bodies the Lanczos
   // vectors of close or repeated frequencies leave M-orthogonality errors far above the
   // runtime's 1e-8 check on Me = diag(I, 0)
@@ -88,7 +96,7 @@ MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, co
   // residual flexibility dF: the static response to unit boundary loads less the retained
   // modes' share, formed in place of the attachment modes it becomes
   auto attachment = out.T.leftCols(nb);
-  attachment = elastic_unit_load_response(K, M, rigid, boundary_dofs);
+  attachment = elastic_unit_load_response(*stiffness, M, rigid, boundary_dofs);
   common::set_work_step("attachment modes");
   attachment.noalias() -= Phi * (omega2.cwiseInverse().asDiagonal() * Phi_b.transpose());
   Eigen::MatrixXd dF_bb(nb, nb);

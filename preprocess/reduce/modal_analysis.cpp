@@ -1,4 +1,4 @@
-// Shift-invert Lanczos with CHOLMOD on a symmetric form of the pencil; see modal_analysis.hpp.
+// Lanczos with a CHOLMOD factor on a symmetric form of the inverted pencil; see modal_analysis.hpp.
 #include "reduce/modal_analysis.hpp"
 
 #include "isosid/common/progress_line.hpp"
@@ -6,55 +6,39 @@
 #include "isosid/format/error.hpp"
 #include "reduce/blas_threads.hpp"
 #include "reduce/memory_budget.hpp"
+#include "reduce/sparse_cholesky.hpp"
+#include "reduce/sparse_products.hpp"
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/Eigenvalues>
 #include <Spectra/SymEigsSolver.h>
 #include <algorithm>
-#include <cholmod.h>
 #include <cmath>
+#include <memory>
 
 namespace isosid::prep {
 namespace {
 
-/// The shift-inverted pencil as an operator symmetric in the Euclidean inner product:
-/// C = L^-1 P M P^T L^-T with P (K - sigma M) P^T = L L^T (CHOLMOD, supernodal). Its
-/// eigenpairs are mu = 1 / (lambda - sigma) and chi = L^T P phi. Spectra's generalized solver
-/// works with M-inner products instead and spent three quarters of the rod's eigen solve on
-/// about twelve M products per Krylov vector; here a vector costs one M product and the two
-/// triangular solves of one factor solve.
-class ShiftedPencil {
+/// The pencil (K, M) inverted through a factorization of A, as an operator symmetric in the
+/// Euclidean inner product: C = L^-1 P Q^T M Q P^T L^-T with P A P^T = L L^T. Its eigenpairs are
+/// mu = 1 / (lambda - sigma) and chi = L^T P phi, with phi = Q P^T L^-T chi.
+/// - Shift-invert: A = K - sigma M and Q = I.
+/// - A free body's elastic modes: A = K with supports that hold its rigid fields R (sigma = 0),
+///   whose solution of a balanced load differs from the elastic one by a rigid field, and
+///   Q = I - R (R^T M R)^-1 R^T M, which removes it. Q A^-1 Q^T is then the inverse of K on the
+///   elastic fields, and the rigid fields have mu = 0, below every elastic one.
+/// Spectra's generalized solver works with M-inner products instead and spent three quarters of
+/// the rod's eigen solve on about twelve M products per Krylov vector; here a vector costs one M
+/// product and the two triangular solves of one factor solve.
+class FactoredPencil {
 public:
   using Scalar = double;
-  ShiftedPencil(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double sigma) : M_(M) {
-    use_single_threaded_blas();
-    cholmod_start(&common_);
-    common_.supernodal = CHOLMOD_SUPERNODAL;
-    common_.print = 0;  // failures become the exception below, not text on stdout (which may be JSON)
-    const Eigen::SparseMatrix<double> A = K - sigma * M;
-    cholmod_sparse a = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
-    common::set_work_step("eigen solve: factorizing K - sigma M (" + std::to_string(K.rows()) + " DOFs)");
-    factor_ = cholmod_analyze(&a, &common_);
-    if (factor_) {
-      try {
-        check_memory("refinement", "the eigen solve's factorization of " + std::to_string(K.rows()) + " DOFs",
-                     double(factor_->xsize) * sizeof(double));
-      } catch (...) {
-        release();
-        throw;
-      }
-      cholmod_factorize(&a, factor_, &common_);
+  FactoredPencil(const SparseCholesky& A, const Eigen::SparseMatrix<double>& M, const Eigen::MatrixXd& rigid)
+      : A_(A), M_(M), R_(rigid), work_(M.rows()) {
+    if (R_.cols() > 0) {
+      MR_ = sparse_times(M, R_);
+      gram_.compute(R_.transpose() * MR_);
     }
-    if (!factor_ || common_.status != CHOLMOD_OK || factor_->minor < factor_->n) {
-      release();
-      throw format::ComputationError("CHOLMOD factorization of K - sigma M failed (sigma = " + std::to_string(sigma) +
-                                     "): the matrices are not positive definite after the shift");
-    }
-    work_.resize(K.rows());
   }
-  ShiftedPencil(const ShiftedPencil&) = delete;
-  ShiftedPencil& operator=(const ShiftedPencil&) = delete;
-  ~ShiftedPencil() { release(); }
 
   Eigen::Index rows() const { return M_.rows(); }
   Eigen::Index cols() const { return M_.rows(); }
@@ -63,54 +47,54 @@ public:
     common::set_work_step("eigen solve: Lanczos, solve " + std::to_string(++solves_));
     Eigen::Map<Eigen::VectorXd> y(y_out, rows());
     y = Eigen::Map<const Eigen::VectorXd>(x_in, rows());
-    solve_in_place(CHOLMOD_Lt, y);
-    solve_in_place(CHOLMOD_Pt, y);
+    A_.solve_upper(y);
+    remove_rigid(y);
     work_.noalias() = M_ * y;
-    solve_in_place(CHOLMOD_P, work_);
-    solve_in_place(CHOLMOD_L, work_);
+    if (R_.cols() > 0) work_.noalias() -= MR_ * gram_.solve(R_.transpose() * work_);  // Q^T
+    A_.solve_lower(work_);
     y = work_;
   }
-  /// phi = P^T L^-T chi for orthonormal chi, scaled to unit M-norm: phi^T (K - sigma M) phi
-  /// = chi^T chi = 1 and M phi = mu (K - sigma M) phi, so phi^T M phi = mu (> 0).
+  /// phi = Q P^T L^-T chi for orthonormal chi, scaled to unit M-norm: phi^T M phi = chi^T C chi = mu.
   Eigen::MatrixXd mass_normalized_modes(Eigen::MatrixXd chi, const Eigen::VectorXd& mu) const {
-    solve_in_place(CHOLMOD_Lt, chi);
-    solve_in_place(CHOLMOD_Pt, chi);
+    A_.solve_upper(chi);
+    remove_rigid(chi);
     for (Eigen::Index c = 0; c < chi.cols(); ++c) chi.col(c) /= std::sqrt(mu(c));
     return chi;
   }
 
 private:
-  /// b <- the solution of CHOLMOD's system `sys` (a triangular solve or a permutation) for b.
+  /// u <- Q u
   template <class Dense>
-  void solve_in_place(int sys, Dense& b) const {
-    cholmod_dense rhs{};
-    rhs.nrow = std::size_t(b.rows());
-    rhs.ncol = std::size_t(b.cols());
-    rhs.nzmax = rhs.nrow * rhs.ncol;
-    rhs.d = rhs.nrow;
-    rhs.x = b.data();
-    rhs.xtype = CHOLMOD_REAL;
-    rhs.dtype = CHOLMOD_DOUBLE;
-    // X, Y and E are CHOLMOD's reused workspaces: no allocation per Krylov vector
-    if (!cholmod_solve2(sys, factor_, &rhs, nullptr, &x_, nullptr, &y_, &e_, &common_))
-      throw format::ComputationError("CHOLMOD solve failed in the eigen solver");
-    std::copy_n(static_cast<const double*>(x_->x), rhs.nzmax, b.data());
-  }
-  void release() {
-    cholmod_free_dense(&x_, &common_);
-    cholmod_free_dense(&y_, &common_);
-    cholmod_free_dense(&e_, &common_);
-    cholmod_free_factor(&factor_, &common_);
-    cholmod_finish(&common_);
+  void remove_rigid(Dense& u) const {
+    if (R_.cols() > 0) u.noalias() -= R_ * gram_.solve(MR_.transpose() * u);
   }
 
+  const SparseCholesky& A_;
   const Eigen::SparseMatrix<double>& M_;
-  mutable cholmod_common common_;
-  cholmod_factor* factor_ = nullptr;
-  mutable cholmod_dense *x_ = nullptr, *y_ = nullptr, *e_ = nullptr;
+  const Eigen::MatrixXd& R_;
+  Eigen::MatrixXd MR_;
+  Eigen::LDLT<Eigen::MatrixXd> gram_;
   mutable Eigen::VectorXd work_;
   mutable long solves_ = 0;
 };
+
+/// The n largest mu of the pencil's operator by Lanczos; eigenvalues sigma + 1/mu, ascending.
+ModalResult lanczos_largest(FactoredPencil& op, int n, Eigen::Index room, double sigma) {
+  const Eigen::Index ncv = std::min<Eigen::Index>(room, std::max<Eigen::Index>(2 * n + 1, n + 20));
+  Spectra::SymEigsSolver<FactoredPencil> solver(op, n, ncv);
+  solver.init();
+  solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-12, Spectra::SortRule::SmallestAlge);
+  if (solver.info() != Spectra::CompInfo::Successful)
+    throw format::ComputationError("eigen solver did not converge for " + std::to_string(n) + " modes");
+  // SmallestAlge sorts mu ascending, which is lambda descending: reverse to ascending lambda
+  const Eigen::VectorXd mu = solver.eigenvalues().reverse();
+  const Eigen::MatrixXd chi = solver.eigenvectors().rowwise().reverse();
+  ModalResult r;
+  r.eigenvalues = (sigma + mu.array().inverse()).matrix();
+  r.modes = op.mass_normalized_modes(chi, mu);
+  r.iterations = int(solver.num_iterations());
+  return r;
+}
 
 }  // namespace
 
@@ -142,22 +126,18 @@ ModalResult dense_lowest(const Eigen::SparseMatrix<double>& K, const Eigen::Spar
 /// with rigid-body modes.
 ModalResult lanczos_lowest(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, int n,
                            double sigma) {
-  ShiftedPencil op(K, M, sigma);
-  const Eigen::Index ncv = std::min<Eigen::Index>(K.rows(), std::max<Eigen::Index>(2 * n + 1, n + 20));
-  Spectra::SymEigsSolver<ShiftedPencil> solver(op, n, ncv);
-  solver.init();
+  common::set_work_step("eigen solve: factorizing K - sigma M (" + std::to_string(K.rows()) + " DOFs)");
+  std::unique_ptr<SparseCholesky> shifted;
+  try {
+    shifted = std::make_unique<SparseCholesky>(K - sigma * M, "the eigen solve's factorization");
+  } catch (const format::ComputationError&) {
+    throw format::ComputationError("CHOLMOD factorization of K - sigma M failed (sigma = " + std::to_string(sigma) +
+                                   "): the matrices are not positive definite after the shift");
+  }
+  const Eigen::MatrixXd none;
   // the largest mu = 1 / (lambda - sigma) are the lowest lambda (sigma lies below them all)
-  solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-12, Spectra::SortRule::SmallestAlge);
-  if (solver.info() != Spectra::CompInfo::Successful)
-    throw format::ComputationError("eigen solver did not converge for " + std::to_string(n) + " modes");
-  // SmallestAlge sorts mu ascending, which is lambda descending: reverse to ascending lambda
-  const Eigen::VectorXd mu = solver.eigenvalues().reverse();
-  const Eigen::MatrixXd chi = solver.eigenvectors().rowwise().reverse();
-  ModalResult r;
-  r.eigenvalues = (sigma + mu.array().inverse()).matrix();
-  r.modes = op.mass_normalized_modes(chi, mu);
-  r.iterations = int(solver.num_iterations());
-  return r;
+  FactoredPencil op(*shifted, M, none);
+  return lanczos_largest(op, n, K.rows(), sigma);
 }
 
 }  // namespace
@@ -173,6 +153,18 @@ ModalResult lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::Spar
   ModalResult r = n >= size - 1 ? dense_lowest(K, M, n) : lanczos_lowest(K, M, n, -0.1 * lambda_scale);
   for (Eigen::Index i = 0; i < r.eigenvalues.size(); ++i)
     if (std::abs(r.eigenvalues(i)) < 1e-4 * lambda_scale) ++r.rigid_body_modes;
+  return r;
+}
+
+ModalResult lowest_elastic_modes(const SparseCholesky& stiffness, const Eigen::SparseMatrix<double>& M, const Eigen::MatrixXd& rigid,
+                                 int n) {
+  const Eigen::Index size = M.rows(), elastic = size - rigid.cols();
+  if (n < 1 || n >= elastic - 1)
+    throw format::ComputationError("requested " + std::to_string(n) + " elastic modes of a model with " + std::to_string(elastic) +
+                                   " elastic DOFs (need 1 <= n < elastic DOFs - 1)");
+  FactoredPencil op(stiffness, M, rigid);
+  ModalResult r = lanczos_largest(op, n, elastic, 0.0);
+  r.rigid_body_modes = 0;
   return r;
 }
 

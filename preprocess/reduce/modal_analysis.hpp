@@ -1,6 +1,6 @@
-// Lowest eigenpairs of K phi = lambda M phi: Spectra's shift-invert Lanczos with a CHOLMOD
-// factorization of K - sigma M. A negative shift keeps K - sigma M positive definite for
-// free bodies, whose K is singular.
+// Lowest eigenpairs of K phi = lambda M phi by Spectra's Lanczos on a CHOLMOD factor: of
+// K - sigma M (shift-invert; a negative shift keeps it positive definite for free bodies, whose K
+// is singular), or of a stiffness factor the caller also uses for its static solves.
 #pragma once
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -21,6 +21,17 @@ struct ModalResult {
 /// are returned as computed: round-off around zero).
 ModalResult lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, int n,
                          double lambda_scale);
+
+class SparseCholesky;
+
+/// The n lowest elastic modes through a factor of the stiffness that the caller holds for its
+/// own solves as well: of K itself for a body held in place (`rigid` without columns), or for a
+/// free body of K with supports on its rigid fields `rigid` (columns), whose solution of a load
+/// balanced against R differs from the elastic one by a rigid field (macneal.cpp's `supported`).
+/// The modes are mass-normalized and free of rigid content (R^T M phi = 0); no rigid-body modes
+/// are returned. Needs n < elastic DOFs - 1 (Lanczos's room).
+ModalResult lowest_elastic_modes(const SparseCholesky& stiffness, const Eigen::SparseMatrix<double>& M, const Eigen::MatrixXd& rigid,
+                                 int n);
 
 /// (pi c / L)^2 with c = sqrt(E / rho) and L the body's size: the order of its first elastic eigenvalue.
 double eigenvalue_scale(double youngs_modulus, double density, double size);

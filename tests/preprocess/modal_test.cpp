@@ -1,7 +1,10 @@
 // Modal analysis: rigid-body modes of free bodies, the longitudinal spectrum of a free bar
-// against its exact and discrete (quadratic C1) dispersion, and Spectra against a dense solver.
+// against its exact and discrete (quadratic C1) dispersion, and Spectra against a dense solver,
+// shift-inverted or through a stiffness factor that a reduction shares with its statics.
 #include "geometry/primitives.hpp"
+#include "reduce/macneal.hpp"
 #include "reduce/modal_analysis.hpp"
+#include "reduce/sparse_cholesky.hpp"
 #include "preprocess/body_fixtures.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -145,4 +148,40 @@ TEST_CASE("Spectra shift-invert with CHOLMOD agrees with a dense generalized eig
   // mass-normalized: Phi^T M Phi = I
   const Eigen::MatrixXd G = s.modes.modes.transpose() * sys.M * s.modes.modes;
   CHECK((G - Eigen::MatrixXd::Identity(12, 12)).cwiseAbs().maxCoeff() < 1e-10);
+}
+
+TEST_CASE("elastic modes through a stiffness factor agree with a dense generalized eigen solver", "[modal]") {
+  // the factor that a reduction also solves its statics with: of a free body's stiffness with
+  // springs on its rigid fields (the fields removed from the operator), or of a held body's
+  const auto check = [](const test::AssembledBody& f, int n, int rigid) {
+    const auto factor = prep::stiffness_factor(f.sys.K, f.rigid);
+    const prep::ModalResult s = prep::lowest_elastic_modes(*factor, f.sys.M, f.rigid, n);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Eigen::MatrixXd(f.sys.K), Eigen::MatrixXd(f.sys.M));
+    REQUIRE(s.eigenvalues.size() == n);
+    CHECK(s.rigid_body_modes == 0);
+    for (int i = 0; i < n; ++i)  // relative 1e-9: Lanczos tolerance 1e-12, dense LAPACK-level
+      CHECK(s.eigenvalues(i) == Approx(dense.eigenvalues()(rigid + i)).epsilon(1e-9));
+    // mass-normalized, and free of rigid content (the springs' share removed)
+    const Eigen::MatrixXd G = s.modes.transpose() * f.sys.M * s.modes;
+    CHECK((G - Eigen::MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff() < 1e-10);
+    if (rigid > 0) CHECK((f.rigid.transpose() * f.sys.M * s.modes).cwiseAbs().maxCoeff() < 1e-10 * (f.rigid.transpose() * f.sys.M * f.rigid).norm());
+    // each an eigenvector: K phi = lambda M phi to the solver's accuracy
+    for (int i = 0; i < n; ++i) {
+      const Eigen::VectorXd r = f.sys.K * s.modes.col(i) - s.eigenvalues(i) * (f.sys.M * s.modes.col(i));
+      CHECK(r.norm() < 1e-7 * s.eigenvalues(i) * (f.sys.M * s.modes.col(i)).norm());
+    }
+  };
+  SECTION("free 3D block: six rigid fields held by springs") {
+    const prep::ModelSpec spec = test::spec_for(prep::primitives::box(0.04, 0.02, 0.01), AnalysisType::Solid, 2.1e11, 0.3, 7800,
+                                                test::uniform({2, 2, 2}, {3, 2, 1}));
+    check(test::assembled(spec), 12, 6);
+  }
+  SECTION("plane-stress strip clamped at one end") {
+    prep::ModelSpec spec = test::spec_for(prep::primitives::rectangle(0.2, 0.02, 0.0, 0.0), AnalysisType::PlaneStress, 2.1e11, 0.3,
+                                          7800, test::uniform({2, 2}, {10, 2}));
+    spec.fixed = {{"xi0", {0, 1}}};
+    const test::AssembledBody f = test::assembled(spec);
+    REQUIRE(f.rigid.cols() == 0);
+    check(f, 8, 0);
+  }
 }
