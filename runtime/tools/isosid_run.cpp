@@ -1,6 +1,7 @@
 // isosid-run: simulates a scene of reduced flexible bodies (SIDs) and writes results.h5 and
 // summary.json (the work is run::run_scene's); this file is the command line and the report.
 #include "isosid/common/cli_parse.hpp"
+#include "output/output_layout.hpp"
 #include "output/run_folder.hpp"
 #include "output/run_report.hpp"
 #include "pipeline/run_scene.hpp"
@@ -61,15 +62,24 @@ int main(int argc, char** argv) {
   return common::run_guarded("isosid-run", [&] {
     CLI::App app{"Simulates impacts of reduced flexible bodies (SIDs) described by a scene file.", "isosid-run"};
     std::string scene_file, out_dir;
-    bool as_json = false, quiet = false, paraview_flag = false;
+    bool as_json = false, quiet = false, paraview_flag = false, describe_outputs = false;
     std::vector<std::string> settings;
-    app.add_option("scene", scene_file, "scene file (*.scene.toml)")->required();
+    app.add_option("scene", scene_file, "scene file (*.scene.toml)");
+    app.add_flag("--describe-outputs", describe_outputs, "print what results.h5 and summary.json hold (docs/outputs.md) and exit");
     app.add_option("--set", settings, "KEY=VALUE: a value over the scene file's, by dotted key (flexible_body.0.velocity=[0,-0.2,0])");
     app.add_option("-o,--output", out_dir, "results folder (default: out/<scene name>)");
     app.add_flag("--json", as_json, "print summary.json to stdout");
     app.add_flag("-q,--quiet", quiet, "no progress on stderr");
     app.add_flag("--paraview", paraview_flag, "write ParaView frames as with [output] paraview = true");
     if (auto status = common::parse_command_line(app, argc, argv)) return *status;
+    if (describe_outputs) {
+      std::cout << run::outputs::markdown();
+      return 0;
+    }
+    if (scene_file.empty()) {
+      std::cerr << "isosid-run: error: scene is required (see --help)\n";
+      return common::kExitBadInput;
+    }
     for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, request_stop);  // stop at a step, keep results
 
     run::Scene scene = run::read_scene_file(scene_file, common::parse_overrides(settings, "--set"));
