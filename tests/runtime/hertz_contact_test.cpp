@@ -3,6 +3,7 @@
 // bad input; and the static start of a rigid ball hanging from a flexible rod (scene E's
 // pendulum), whose frame follows the rod's sag.
 #include "scene_runner.hpp"
+#include "support/impact_scene.hpp"
 
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
@@ -14,38 +15,7 @@
 
 using nlohmann::json;
 using isosid::test::run_scene;
-
-namespace {
-/// `steps`: the integrator's tolerances and step limit.
-std::string two_spheres(double v, const std::string& extra = "",
-                        const std::string& steps = "rtol = 1e-10\natol = 1e-14\nmax_step = 2e-8\n") {
-  return R"([simulation]
-dimension = "3d"
-end_time = 2e-4
-)" + steps + R"(output_interval = 1e-6
-[[rigid_body]]
-name = "a"
-shape = "sphere"
-radius = 0.01
-density = 7850.0
-position = [-0.0100001, 0.0, 0.0]
-velocity = [)" + std::to_string(v) + R"(, 0.0, 0.0]
-[[rigid_body]]
-name = "b"
-shape = "sphere"
-radius = 0.01
-density = 7850.0
-position = [0.0100001, 0.0, 0.0]
-velocity = [)" + std::to_string(-v) + R"(, 0.0, 0.0]
-[[hertz_contact]]
-name = "ab"
-body = "a"
-target = "b"
-youngs_modulus = 2.1e11
-poisson_ratio = 0.3
-)" + extra;
-}
-}  // namespace
+using isosid::test::two_spheres;
 
 TEST_CASE("hertz contact: two rigid spheres meet head-on as Hertz's solution says", "[runtime][hertz]") {
   // Equal steel spheres r = 10 mm closing at 2 v: m* = m/2, R* = r/2, K = 4/3 E* sqrt(R*).

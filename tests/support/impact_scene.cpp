@@ -94,4 +94,32 @@ target_surface = "impact"
 )" + contact_lines;
 }
 
+std::string two_spheres(double v, const std::string& extra, const std::string& steps) {
+  return R"([simulation]
+dimension = "3d"
+end_time = 2e-4
+)" + steps + R"(output_interval = 1e-6
+[[rigid_body]]
+name = "a"
+shape = "sphere"
+radius = 0.01
+density = 7850.0
+position = [-0.0100001, 0.0, 0.0]
+velocity = [)" + std::to_string(v) + R"(, 0.0, 0.0]
+[[rigid_body]]
+name = "b"
+shape = "sphere"
+radius = 0.01
+density = 7850.0
+position = [0.0100001, 0.0, 0.0]
+velocity = [)" + std::to_string(-v) + R"(, 0.0, 0.0]
+[[hertz_contact]]
+name = "ab"
+body = "a"
+target = "b"
+youngs_modulus = 2.1e11
+poisson_ratio = 0.3
+)" + extra;
+}
+
 }  // namespace isosid::test

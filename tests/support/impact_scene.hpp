@@ -1,5 +1,6 @@
 // Test support: impact scenes shared by tests: the golden sphere's on a plane (in-process and
-// isosid-run tests), and the seed sphere's on a short free beam (impact modes, gap space).
+// isosid-run tests), the seed sphere's on a short free beam (impact modes, gap space), and two
+// rigid spheres meeting by Hertz's law.
 #pragma once
 #include <string>
 
@@ -18,5 +19,11 @@ std::string sphere_on_free_beam_scene(const std::string& contact_lines, const st
 /// The golden sphere (sphere_small, quasistatic high modes) dropped on a plane at 0.1 m/s for
 /// 100 us, its SID at `sid`.
 std::string golden_impact_scene(const std::string& sid);
+
+/// Two rigid steel spheres (r = 10 mm) 0.2 um apart, closing head-on along x at v each, their
+/// contact by Hertz's law ("ab"), for 200 us; `steps`: the integrator's tolerances and step
+/// limit, `extra`: tables after the contact's.
+std::string two_spheres(double v, const std::string& extra = "",
+                        const std::string& steps = "rtol = 1e-10\natol = 1e-14\nmax_step = 2e-8\n");
 
 }  // namespace isosid::test
