@@ -74,11 +74,14 @@ PrepProcess start_prep(const std::string& model, const std::string& sid, const s
   std::vector<const char*> args;
   for (const std::string& a : arguments) args.push_back(a.c_str());
   args.push_back(nullptr);
-  // this program's environment, plus OMP_NUM_THREADS where asked for and the user set none
+  // this program's environment, plus OMP_NUM_THREADS and OPENBLAS_NUM_THREADS (the assembly's
+  // threads, a large factorization's) where asked for and the user set none
   const std::string omp_threads = "OMP_NUM_THREADS=" + std::to_string(threads);
+  const std::string blas_threads = "OPENBLAS_NUM_THREADS=" + std::to_string(threads);
   std::vector<const char*> env;
   for (char** v = environ; *v; ++v) env.push_back(*v);
   if (threads > 0 && !std::getenv("OMP_NUM_THREADS")) env.push_back(omp_threads.c_str());
+  if (threads > 0 && !std::getenv("OPENBLAS_NUM_THREADS")) env.push_back(blas_threads.c_str());
   env.push_back(nullptr);
   const std::string cannot = "isosid-prep: failed: cannot execute " + prep + " (set ISOSID_PREP)\n";
 

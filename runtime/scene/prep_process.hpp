@@ -29,8 +29,8 @@ struct PrepProcess {
 int usable_cores();
 
 /// Starts isosid-prep on `model`, writing `sid`, with further options `extra` (e.g. --coarse);
-/// `threads` > 0 limits its OpenMP assembly to that many threads (for builds side by side),
-/// unless the user set OMP_NUM_THREADS.
+/// `threads` > 0 limits its OpenMP assembly and its BLAS to that many threads (for builds side
+/// by side), unless the user set OMP_NUM_THREADS or OPENBLAS_NUM_THREADS.
 PrepProcess start_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,
                        const std::string& what, int threads = 0);
 
