@@ -4,7 +4,11 @@
 #include "isosid/format/error.hpp"
 #include "isosid/format/skew.hpp"
 
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace isosid::run {
 
@@ -105,6 +109,7 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
     for (Index j = 0; j < ni; ++j) oe1_.middleCols(6 * j, 6) = sid_.Oe.M1[std::size_t(j)].topRows(n_inertial_);
   }
   q_high_ = VectorXd::Zero(n - n_dynamic_);
+  form_rotation_bound();
   // in the normal form Ke's off-diagonal entries are round-off, dropped as ModalMatrix drops them
   const MatrixXd coupling = sid_.Ke.M0.bottomLeftCorner(n - n_dynamic_, n_dynamic_);
   if (!stiffness_.is_diagonal() && !coupling.isZero(0.0)) quasistatic_coupling_ = coupling;
@@ -284,10 +289,61 @@ void FloatingBody::load_response(const GeneralizedForce& load, double* ydot) con
   accelerations_from(hr, load.elastic.head(n_dynamic_), ydot + offset_);
 }
 
+void FloatingBody::form_rotation_bound() {
+  const Index first = n_dynamic_, rows = n_inertial_ - n_dynamic_, n = nq();
+  double size = 0;  // the largest reference coordinate of a point the body reports or contacts with
+  double shape = 0;  // the largest displacement of such a point per unit quasistatic coordinate
+  auto point_rows = [&](const MatrixXd& modes, Index dim) {
+    for (Index r = 0; r + dim <= modes.rows(); r += dim)
+      shape = std::max(shape, modes.block(r, first, dim, n - first).norm());
+  };
+  for (const format::Node& node : sid_.nodes) {
+    size = std::max(size, node.origin.M0.cwiseAbs().maxCoeff());
+    point_rows(node.phi, 3);
+  }
+  for (const format::ContactSurface& c : sid_.contact_surfaces) {
+    if (c.position.size()) size = std::max(size, c.position.cwiseAbs().maxCoeff());
+    point_rows(c.Psi, c.position.cols());
+  }
+  for (const format::MasterPatch& m : sid_.master_patches) {
+    if (m.control_points.size()) size = std::max(size, m.control_points.cwiseAbs().maxCoeff());
+    point_rows(m.Phi, m.control_points.cols());
+  }
+  rotation_bound_.resolution = std::numeric_limits<double>::epsilon() * size;
+  if (!rotates_ || rows <= 0) return;
+  // the held coordinates' softest stiffness: the smallest eigenvalue of Ke's held block (its
+  // diagonal in the normal form; dense where a massless boundary is held with the modes)
+  const MatrixXd held = sid_.Ke.M0.bottomRightCorner(n - first, n - first);
+  const double softest = stiffness_.is_diagonal() ? held.diagonal().minCoeff()
+                                                  : Eigen::SelfAdjointEigenSolver<MatrixXd>(held, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  if (!(softest > 0)) return;
+  const Index nv = std::min(n_inertial_, n_dynamic_);
+  const Eigen::Map<const MatrixXd> ge(sid_.Ge.M0.data(), 3 * n, nv);
+  for (int a = 0; a < 3; ++a) rotation_bound_.ge += ge.middleRows(a * n + first, rows).squaredNorm();
+  rotation_bound_.ge = std::sqrt(rotation_bound_.ge);
+  rotation_bound_.oe0 = sid_.Oe.M0.middleRows(first, rows).norm();
+  rotation_bound_.oe1 = oe1_.size() ? oe1_.middleRows(first, rows).norm() : 0.0;
+  rotation_bound_.per_load = shape / softest;
+}
+
+double FloatingBody::rotation_response_bound(const VectorXd& qv, const VectorXd& qd, const Vector3d& w) const {
+  const RotationBound& b = rotation_bound_;
+  if (!(b.per_load > 0)) return std::numeric_limits<double>::infinity();
+  // |Ge(qdot) w| <= |w| |Ge rows|_F |qdot|, |Oe(q) w^2| <= |w^2| (|Oe0 rows|_F + |Oe1 rows|_F |q|)
+  const Index nv = std::min(n_inertial_, n_dynamic_), m = oe1_.cols() / 6;
+  Eigen::Matrix<double, 6, 1> w2;
+  w2 << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
+  const double load = w.norm() * b.ge * qd.head(nv).norm() + w2.norm() * (b.oe0 + b.oe1 * qv.head(m).norm());
+  return b.per_load * load;
+}
+
 bool FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, const Vector3d& w, Index first, Eigen::Ref<VectorXd> out) const {
   // rows beyond n_inertial_ (a massless boundary) carry no inertia
   const Index ni = n_inertial_, rows = std::min(first + out.size(), ni) - first;
   if (!rotates_ || rows <= 0) return false;
+  // the quasistatic modes' loads of a spin too slow to move any point by a rounding of its
+  // position (a centric impact leaves the bodies turning at 1e-11 rad/s) are not formed
+  if (first == n_dynamic_ && rotation_response_bound(qv, qd, w) <= rotation_bound_.resolution) return false;
   auto part = out.head(rows);
   // Ge(qdot) w = sum_a w_a sum_j Ge_j(:, a) qdot_j: the SID's nq x 3 blocks Ge_j lie one after
   // the other, so column a of all of them is a 3nq-strided matrix; the sum runs over the

@@ -106,6 +106,15 @@ public:
   /// untouched) where the body has neither: its frame cannot turn or its quasistatic
   /// coordinates carry no inertia (a massless boundary), and no gravity is held.
   bool add_uncoupled_quasistatic_loads(const double* y, const Eigen::Vector3d& gravity, Eigen::Ref<Eigen::VectorXd> out) const;
+  /// An upper bound on how far the rotation loads on the quasistatic modes at (q, qdot, w) can
+  /// move any point of the body (m): their size through the Frobenius norms of Ge's and Oe's
+  /// quasistatic rows, over the smallest eigenvalue of Ke's held block (contact only stiffens
+  /// it), times the largest displacement per unit coordinate of a node, contact point or
+  /// control point. Infinity where the body carries no such loads.
+  double rotation_response_bound(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, const Eigen::Vector3d& w) const;
+  /// What a displacement must exceed to change a point's position: the rounding of the body's
+  /// largest reference coordinate (m).
+  double position_resolution() const { return rotation_bound_.resolution; }
   /// Ke's block that couples the quasistatic modes to the integrated ones (quasistatic rows,
   /// integrated columns): the loads -K_hd q_d; empty where it is zero (normal form).
   const Eigen::MatrixXd& quasistatic_coupling() const { return quasistatic_coupling_; }
@@ -174,6 +183,13 @@ private:
   void accelerations_from(const Eigen::Matrix<double, 6, 1>& hr, const Eigen::Ref<const Eigen::VectorXd>& hd, double* d) const;
   mutable MassFactor mass_;
   mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
+  /// The terms of rotation_response_bound, formed once: the Frobenius norms of Ge's, Oe0's
+  /// and Oe1's quasistatic rows, the largest displacement per unit load (m/N: the largest
+  /// point's mode rows over the smallest quasistatic stiffness; 0: no bound), the resolution.
+  struct RotationBound {
+    double ge = 0, oe0 = 0, oe1 = 0, per_load = 0, resolution = 0;
+  } rotation_bound_;
+  void form_rotation_bound();
   /// Oe's first-order terms side by side, [Oe1_0 ... Oe1_(n_inertial - 1)], their leading
   /// n_inertial rows (n_inertial x 6 n_inertial): column c of all of them is then a matrix
   /// with a stride of six columns, and Oe1(q) w^2 a product of those for w^2's non-zero c with q
