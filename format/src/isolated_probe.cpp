@@ -82,6 +82,10 @@ void probe_in_child(const std::string& path, const std::function<void()>& read_f
   }
   if (child == 0) {
     close(message[0]);
+    // none of the parent's descriptors but the pipe: a lock the parent holds (a results folder's,
+    // a study's) must end with the parent, not with a probe still reading when the parent was killed
+    if (message[1] > 3) close_range(3, unsigned(message[1]) - 1, 0);
+    close_range(unsigned(message[1]) + 1, ~0U, 0);
     // silent: a crash report (a sanitizer's) must not add lines to the program's one-line message
     const int null = open("/dev/null", O_WRONLY);
     if (null >= 0) dup2(null, STDERR_FILENO), dup2(null, STDOUT_FILENO);

@@ -342,7 +342,8 @@ bool FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, co
   const Index ni = n_inertial_, rows = std::min(first + out.size(), ni) - first;
   if (!rotates_ || rows <= 0) return false;
   // the quasistatic modes' loads of a spin too slow to move any point by a rounding of its
-  // position (a centric impact leaves the bodies turning at 1e-11 rad/s) are not formed
+  // position (a centric impact leaves the sphere on the beam turning at about 4e-10 rad/s) are
+  // not formed
   if (first == n_dynamic_ && rotation_response_bound(qv, qd, w) <= rotation_bound_.resolution) return false;
   auto part = out.head(rows);
   // Ge(qdot) w = sum_a w_a sum_j Ge_j(:, a) qdot_j: the SID's nq x 3 blocks Ge_j lie one after
