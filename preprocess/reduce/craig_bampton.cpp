@@ -29,7 +29,7 @@ Eigen::SparseMatrix<double> submatrix(const Eigen::SparseMatrix<double>& A, cons
 }
 
 Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                                    const std::vector<int>& interface_dofs, int n_normal, double lambda_scale) {
+                                    const std::vector<int>& interface_dofs, int n_normal) {
   const int n = int(K.rows());
   std::vector<bool> is_interface(std::size_t(n), false);
   for (int d : interface_dofs) is_interface[std::size_t(d)] = true;
@@ -52,10 +52,8 @@ Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const 
   }
   Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(n, n_normal + Eigen::Index(interface_dofs.size()));
   if (n_normal > 0) {
-    // the fixed-interface modes through the same factor (models too small for Lanczos's room: dense)
-    const Eigen::MatrixXd none;
-    const ModalResult fixed = n_normal < Koo.rows() - 1 ? lowest_elastic_modes(*interior, Moo, none, n_normal)
-                                                        : lowest_modes(Koo, Moo, n_normal, lambda_scale);
+    // the fixed-interface modes through the same factor
+    const ModalResult fixed = lowest_elastic_modes(*interior, Koo, Moo, Eigen::MatrixXd(), n_normal);
     for (std::size_t i = 0; i < inner.size(); ++i) basis.row(inner[i]).head(n_normal) = fixed.modes.row(Eigen::Index(i));
   }
   common::set_work_step("constraint modes: " + std::to_string(interface_dofs.size()) + " interface DOFs' solves");
@@ -66,13 +64,12 @@ Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const 
 }
 
 MasslessBoundaryModel massless_craig_bampton(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                                             const Eigen::MatrixXd& rigid, const std::vector<int>& boundary_dofs, int n_modes,
-                                             double lambda_scale) {
+                                             const Eigen::MatrixXd& rigid, const std::vector<int>& boundary_dofs, int n_modes) {
   if (rigid.cols() > 0)
     throw format::ComputationError("the massless Craig-Bampton variant needs a body its boundary conditions hold; a free body "
                                    "would carry its rigid motion in massless constraint modes (use macneal, which relieves inertia)");
   const Eigen::Index nb = Eigen::Index(boundary_dofs.size());
-  const Eigen::MatrixXd cb = craig_bampton_basis(K, M, boundary_dofs, n_modes, lambda_scale);
+  const Eigen::MatrixXd cb = craig_bampton_basis(K, M, boundary_dofs, n_modes);
   const Eigen::MatrixXd Theta = cb.leftCols(n_modes);
   // constraint modes less their mass coupling to Theta: Theta vanishes on the boundary, so the
   // boundary rows stay [I 0], and Theta^T M Psi = 0 leaves Theta's motion free of u_b's inertia

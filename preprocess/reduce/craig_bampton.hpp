@@ -12,7 +12,7 @@ namespace isosid::prep {
 /// Columns: n_normal interior normal modes (zero on the interface), then one constraint mode
 /// per interface DOF (unit there, zero on the other interface DOFs, statically condensed inside).
 Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                                    const std::vector<int>& interface_dofs, int n_normal, double lambda_scale);
+                                    const std::vector<int>& interface_dofs, int n_normal);
 
 /// The massless-boundary variant (Monjaraz-Tec, Gross & Krack 2022): coordinates [u_b; eta],
 /// the constraint modes made M-orthogonal to the fixed-interface modes Theta (their boundary
@@ -20,8 +20,7 @@ Eigen::MatrixXd craig_bampton_basis(const Eigen::SparseMatrix<double>& K, const 
 /// exactly Theta's fixed-interface modal model. Only for a body that its boundary conditions
 /// hold (`rigid` empty): a free body's constraint modes would carry massless rigid motion.
 MasslessBoundaryModel massless_craig_bampton(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                                             const Eigen::MatrixXd& rigid, const std::vector<int>& boundary_dofs, int n_modes,
-                                             double lambda_scale);
+                                             const Eigen::MatrixXd& rigid, const std::vector<int>& boundary_dofs, int n_modes);
 
 /// Rows and columns `keep` of a sparse matrix.
 Eigen::SparseMatrix<double> submatrix(const Eigen::SparseMatrix<double>& A, const std::vector<int>& rows,

@@ -68,18 +68,15 @@ std::unique_ptr<SparseCholesky> stiffness_factor(const Eigen::SparseMatrix<doubl
 }
 
 MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                                        const Eigen::MatrixXd& rigid, const std::vector<int>& boundary_dofs, int n_modes,
-                                        double lambda_scale) {
-  const Eigen::Index n = K.rows(), nb = Eigen::Index(boundary_dofs.size()), nr = rigid.cols();
+                                        const Eigen::MatrixXd& rigid, const std::vector<int>& boundary_dofs, int n_modes) {
+  const Eigen::Index n = K.rows(), nb = Eigen::Index(boundary_dofs.size());
   if (nb == 0) throw format::ComputationError("a massless-boundary reduction needs boundary DOFs");
   // the basis T and the modes, with a block of loads and solutions in flight
   check_memory("reduction.boundary_surface", "the MacNeal basis of " + std::to_string(nb) + " boundary DOFs on " + std::to_string(n) + " DOFs",
                double(n) * double(nb + 2 * n_modes + 3 * std::min(kBlock, nb)) * sizeof(double));
-  // one factorization serves the eigen solve and the boundary statics; models too small for
-  // Lanczos's room take the dense solve
+  // one factorization serves the eigen solve and the boundary statics
   const std::unique_ptr<SparseCholesky> stiffness = stiffness_factor(K, rigid);
-  const bool lanczos = n_modes < n - nr - 1;
-  const ModalResult modes = lanczos ? lowest_elastic_modes(*stiffness, M, rigid, n_modes) : lowest_modes(K, M, n_modes + int(nr), lambda_scale);
+  const ModalResult modes = lowest_elastic_modes(*stiffness, K, M, rigid, n_modes);
   // the elastic modes in normal form within their span: on finely graded bodies the Lanczos
   // vectors of close or repeated frequencies leave M-orthogonality errors far above the
   // runtime's 1e-8 check on Me = diag(I, 0)

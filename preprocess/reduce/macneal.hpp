@@ -14,13 +14,11 @@
 
 namespace isosid::prep {
 
-
 /// Reduces (K, M) on the free DOFs to the boundary DOFs plus `n_modes` elastic free-interface
 /// modes. `rigid` holds the admissible rigid-body fields (columns; none for a constrained
-/// body); `lambda_scale` as for lowest_modes.
+/// body).
 MasslessBoundaryModel macneal_reduction(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                                        const Eigen::MatrixXd& rigid, const std::vector<int>& boundary_dofs, int n_modes,
-                                        double lambda_scale);
+                                        const Eigen::MatrixXd& rigid, const std::vector<int>& boundary_dofs, int n_modes);
 
 class SparseCholesky;
 

@@ -6,6 +6,7 @@
 #include "isosid/format/error.hpp"
 #include "reduce/blas_threads.hpp"
 #include "reduce/memory_budget.hpp"
+#include "reduce/mode_basis.hpp"
 #include "reduce/sparse_cholesky.hpp"
 #include "reduce/sparse_products.hpp"
 
@@ -156,14 +157,22 @@ ModalResult lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::Spar
   return r;
 }
 
-ModalResult lowest_elastic_modes(const SparseCholesky& stiffness, const Eigen::SparseMatrix<double>& M, const Eigen::MatrixXd& rigid,
-                                 int n) {
-  const Eigen::Index size = M.rows(), elastic = size - rigid.cols();
-  if (n < 1 || n >= elastic - 1)
+ModalResult lowest_elastic_modes(const SparseCholesky& stiffness, const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                                 const Eigen::MatrixXd& rigid, int n) {
+  const Eigen::Index nr = rigid.cols(), elastic = M.rows() - nr;
+  if (n < 1 || n > elastic)
     throw format::ComputationError("requested " + std::to_string(n) + " elastic modes of a model with " + std::to_string(elastic) +
-                                   " elastic DOFs (need 1 <= n < elastic DOFs - 1)");
-  FactoredPencil op(stiffness, M, rigid);
-  ModalResult r = lanczos_largest(op, n, elastic, 0.0);
+                                   " elastic DOFs (need 1 <= n <= elastic DOFs)");
+  ModalResult r;
+  if (n < elastic - 1) {
+    FactoredPencil op(stiffness, M, rigid);
+    r = lanczos_largest(op, n, elastic, 0.0);
+  } else {  // no Krylov room: the dense solve, its rigid-body modes dropped
+    r = dense_lowest(K, M, int(nr) + n);
+    r.eigenvalues = r.eigenvalues.tail(n).eval();
+    r.modes = r.modes.rightCols(n).eval();
+    remove_rigid_content(r.modes, M, rigid);
+  }
   r.rigid_body_modes = 0;
   return r;
 }

@@ -29,9 +29,10 @@ class SparseCholesky;
 /// free body of K with supports on its rigid fields `rigid` (columns), whose solution of a load
 /// balanced against R differs from the elastic one by a rigid field (macneal.cpp's `supported`).
 /// The modes are mass-normalized and free of rigid content (R^T M phi = 0); no rigid-body modes
-/// are returned. Needs n < elastic DOFs - 1 (Lanczos's room).
-ModalResult lowest_elastic_modes(const SparseCholesky& stiffness, const Eigen::SparseMatrix<double>& M, const Eigen::MatrixXd& rigid,
-                                 int n);
+/// are returned. Models too small for Lanczos's room (n >= elastic DOFs - 1) take a dense solve
+/// of (K, M) instead.
+ModalResult lowest_elastic_modes(const SparseCholesky& stiffness, const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                                 const Eigen::MatrixXd& rigid, int n);
 
 /// (pi c / L)^2 with c = sqrt(E / rho) and L the body's size: the order of its first elastic eigenvalue.
 double eigenvalue_scale(double youngs_modulus, double density, double size);

@@ -16,8 +16,8 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMat
     // not M-orthonormal bases by design: their boundary is massless, their stiffness coupled
     if (r.extra_vectors.cols() > 0) throw format::ComputationError("a massless-boundary reduction cannot carry a coarse model's modes");
     ReducedBasis out = massless_boundary_basis(r.method == format::ReductionMethod::MacNeal
-                                                   ? macneal_reduction(K, M, rigid, r.interface_dofs, r.normal_modes, lambda_scale)
-                                                   : massless_craig_bampton(K, M, rigid, r.interface_dofs, r.normal_modes, lambda_scale));
+                                                   ? macneal_reduction(K, M, rigid, r.interface_dofs, r.normal_modes)
+                                                   : massless_craig_bampton(K, M, rigid, r.interface_dofs, r.normal_modes));
     out.method = r.method;
     out.interface = r.interface_description;
     return out;
@@ -33,7 +33,7 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMat
       break;
     }
     case format::ReductionMethod::CraigBampton:
-      out.Phi = craig_bampton_basis(K, M, r.interface_dofs, r.normal_modes, lambda_scale);
+      out.Phi = craig_bampton_basis(K, M, r.interface_dofs, r.normal_modes);
       out.interface_dofs = r.interface_dofs;
       break;
     case format::ReductionMethod::Full:

@@ -72,7 +72,7 @@ TEST_CASE("MacNeal reduction of a clamped body: boundary flexibility, frequencie
   const Fixture f = strip(true);
   REQUIRE(f.rigid.cols() == 0);
   const int modes = 6;
-  const prep::MasslessBoundaryModel r = prep::macneal_reduction(f.sys.K, f.sys.M, f.rigid, f.boundary, modes, f.scale);
+  const prep::MasslessBoundaryModel r = prep::macneal_reduction(f.sys.K, f.sys.M, f.rigid, f.boundary, modes);
   const Eigen::MatrixXd Eb = unit_columns(f.sys.K.rows(), f.boundary);
   const Eigen::MatrixXd full = Eb.transpose() * prep::SparseCholesky(f.sys.K).solve(Eb);
   // the static flexibility at the boundary is the full model's: exact up to the solves'
@@ -95,7 +95,7 @@ TEST_CASE("MacNeal reduction of a free body uses inertia relief", "[macneal]") {
   const Fixture f = strip(false);
   REQUIRE(f.rigid.cols() == 3);  // x, y and the in-plane rotation
   const int modes = 6;
-  const prep::MasslessBoundaryModel r = prep::macneal_reduction(f.sys.K, f.sys.M, f.rigid, f.boundary, modes, f.scale);
+  const prep::MasslessBoundaryModel r = prep::macneal_reduction(f.sys.K, f.sys.M, f.rigid, f.boundary, modes);
   // independent reference: the loads balanced by rigid-body inertia, a statically determinate
   // support (both directions at one corner, y at the other end), the result's rigid content removed
   const Eigen::Index n = f.sys.K.rows();
@@ -129,7 +129,7 @@ TEST_CASE("MacNeal reduction of a free body uses inertia relief", "[macneal]") {
 TEST_CASE("massless Craig-Bampton: fixed-interface frequencies, boundary flexibility, massless boundary", "[macneal]") {
   const Fixture f = strip(true);
   const int modes = 6;
-  const prep::MasslessBoundaryModel r = prep::massless_craig_bampton(f.sys.K, f.sys.M, f.rigid, f.boundary, modes, f.scale);
+  const prep::MasslessBoundaryModel r = prep::massless_craig_bampton(f.sys.K, f.sys.M, f.rigid, f.boundary, modes);
   const Eigen::Index nb = r.boundary();
   // the boundary held: the reduced model's frequencies are the full model's with the boundary
   // DOFs fixed (an independent eigen solve of the interior), to the eigen solver's round-off
@@ -154,6 +154,6 @@ TEST_CASE("massless Craig-Bampton: fixed-interface frequencies, boundary flexibi
 
 TEST_CASE("massless Craig-Bampton refuses a free body", "[macneal]") {
   const Fixture f = strip(false);
-  CHECK_THROWS_WITH(prep::massless_craig_bampton(f.sys.K, f.sys.M, f.rigid, f.boundary, 4, f.scale),
+  CHECK_THROWS_WITH(prep::massless_craig_bampton(f.sys.K, f.sys.M, f.rigid, f.boundary, 4),
                     Catch::Matchers::Contains("use macneal"));
 }

@@ -155,7 +155,7 @@ TEST_CASE("elastic modes through a stiffness factor agree with a dense generaliz
   // springs on its rigid fields (the fields removed from the operator), or of a held body's
   const auto check = [](const test::AssembledBody& f, int n, int rigid) {
     const auto factor = prep::stiffness_factor(f.sys.K, f.rigid);
-    const prep::ModalResult s = prep::lowest_elastic_modes(*factor, f.sys.M, f.rigid, n);
+    const prep::ModalResult s = prep::lowest_elastic_modes(*factor, f.sys.K, f.sys.M, f.rigid, n);
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Eigen::MatrixXd(f.sys.K), Eigen::MatrixXd(f.sys.M));
     REQUIRE(s.eigenvalues.size() == n);
     CHECK(s.rigid_body_modes == 0);
