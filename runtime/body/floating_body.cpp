@@ -49,6 +49,13 @@ Vector3d tait_bryan_angles(const Matrix3d& A) {
 }
 
 namespace {
+/// w^2 in Oe's order: the components' squares, then xy, yz, zx.
+Eigen::Matrix<double, 6, 1> rotation_squares(const Vector3d& w) {
+  Eigen::Matrix<double, 6, 1> w2;
+  w2 << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
+  return w2;
+}
+
 /// The SID's inertia terms involve only the first m coordinates: every term is exactly zero
 /// in the rows, blocks and first-order coefficients of the others (a massless boundary as
 /// isosid-prep writes it; a SID from elsewhere may not, and is then evaluated in full).
@@ -291,6 +298,7 @@ void FloatingBody::load_response(const GeneralizedForce& load, double* ydot) con
 
 void FloatingBody::form_rotation_bound() {
   const Index first = n_dynamic_, rows = n_inertial_ - n_dynamic_, n = nq();
+  if (!rotates_ || rows <= 0) return;  // no rotation loads on the quasistatic modes to bound
   double size = 0;  // the largest reference coordinate of a point the body reports or contacts with
   double shape = 0;  // the largest displacement of such a point per unit quasistatic coordinate
   auto point_rows = [&](const MatrixXd& modes, Index dim) {
@@ -310,7 +318,6 @@ void FloatingBody::form_rotation_bound() {
     point_rows(m.Phi, m.control_points.cols());
   }
   rotation_bound_.resolution = std::numeric_limits<double>::epsilon() * size;
-  if (!rotates_ || rows <= 0) return;
   // the held coordinates' softest stiffness: the smallest eigenvalue of Ke's held block (its
   // diagonal in the normal form; dense where a massless boundary is held with the modes)
   const MatrixXd held = sid_.Ke.M0.bottomRightCorner(n - first, n - first);
@@ -331,8 +338,7 @@ double FloatingBody::rotation_response_bound(const VectorXd& qv, const VectorXd&
   if (!(b.per_load > 0)) return std::numeric_limits<double>::infinity();
   // |Ge(qdot) w| <= |w| |Ge rows|_F |qdot|, |Oe(q) w^2| <= |w^2| (|Oe0 rows|_F + |Oe1 rows|_F |q|)
   const Index nv = std::min(n_inertial_, n_dynamic_), m = oe1_.cols() / 6;
-  Eigen::Matrix<double, 6, 1> w2;
-  w2 << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
+  const Eigen::Matrix<double, 6, 1> w2 = rotation_squares(w);
   const double load = w.norm() * b.ge * qd.head(nv).norm() + w2.norm() * (b.oe0 + b.oe1 * qv.head(m).norm());
   return b.per_load * load;
 }
@@ -356,8 +362,7 @@ bool FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, co
   // Oe(q) w^2 = Oe0 w^2 + sum_c w2_c [Oe1_0(:, c) ... Oe1_(ni-1)(:, c)] q: column c of every
   // first-order term, read once per component of w^2 that is not zero (a planar spin needs one
   // of the six), instead of summing the matrix first (the floating frame's largest term)
-  Eigen::Matrix<double, 6, 1> w2;
-  w2 << w.x() * w.x(), w.y() * w.y(), w.z() * w.z(), w.x() * w.y(), w.y() * w.z(), w.z() * w.x();
+  const Eigen::Matrix<double, 6, 1> w2 = rotation_squares(w);
   part.noalias() -= sid_.Oe.M0.middleRows(first, rows) * w2;
   const Index m = oe1_.cols() / 6;
   for (int c = 0; c < 6 && m > 0; ++c) {

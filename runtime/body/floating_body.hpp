@@ -113,7 +113,8 @@ public:
   /// control point. Infinity where the body carries no such loads.
   double rotation_response_bound(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, const Eigen::Vector3d& w) const;
   /// What a displacement must exceed to change a point's position: the rounding of the body's
-  /// largest reference coordinate (m).
+  /// largest reference coordinate (m); formed only where rotation loads on the quasistatic
+  /// modes are bounded (0 elsewhere).
   double position_resolution() const { return rotation_bound_.resolution; }
   /// Ke's block that couples the quasistatic modes to the integrated ones (quasistatic rows,
   /// integrated columns): the loads -K_hd q_d; empty where it is zero (normal form).
