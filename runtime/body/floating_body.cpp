@@ -20,11 +20,17 @@ using Eigen::VectorXd;
 using format::skew;
 
 ModalMatrix::ModalMatrix(const MatrixXd& M) {
-  const MatrixXd off = M - MatrixXd(M.diagonal().asDiagonal());
-  if (M.size() == 0 || off.cwiseAbs().maxCoeff() <= 1e-12 * M.cwiseAbs().maxCoeff())
-    diagonal_ = M.diagonal();
-  else
-    dense_ = M;
+  const Index n = M.rows();
+  const double roundoff = n ? 1e-12 * M.cwiseAbs().maxCoeff() : 0;
+  // the leading coordinates whose row and column hold nothing beside the diagonal
+  Index d = 0;
+  for (; d < n; ++d) {
+    VectorXd row = M.row(d).cwiseAbs().transpose(), column = M.col(d).cwiseAbs();
+    row(d) = column(d) = 0;
+    if (std::max(row.maxCoeff(), column.maxCoeff()) > roundoff) break;
+  }
+  diagonal_ = M.diagonal().head(d);
+  if (d < n) trailing_ = M.bottomRightCorner(n - d, n - d);
 }
 
 std::array<bool, 6> locked_dofs(Dimension dimension, const std::vector<std::string>& locked) {
@@ -395,13 +401,21 @@ double FloatingBody::kinetic_energy(const double* y) const {
   const VectorXd& qv = q(y);
   const VectorXd& qd = qdot(y);
   const Vector3d vK = orientation(y).toRotationMatrix().transpose() * v(y), w = omega(y);
-  const double m = sid_.refmod.mass;
-  const Vector3d mc = sid_.mdCM.at(qv);
-  const MatrixXd Ct = sid_.Ct.order() ? sid_.Ct.at(qv) : sid_.Ct.M0;
-  double T = 0.5 * m * vK.squaredNorm() + 0.5 * qd.squaredNorm() + vK.dot(Ct.transpose() * qd);
+  // as in derivatives(): the inertia terms from the coefficients that carry inertia (ni), and
+  // only the rows of coordinates with velocities (nv; quasistatic modes and a massless
+  // boundary have none), so an output costs O(ni nv) and not O(nq^2)
+  const Index ni = n_inertial_, nv = std::min(n_dynamic_, ni);
+  Vector3d mc;
+  sid_.mdCM.evaluate(qv, mc, ni, 3);
+  Eigen::Matrix<double, Eigen::Dynamic, 3> C(nv, 3);
+  sid_.Ct.evaluate(qv, C, ni, nv);
+  const auto qdv = qd.head(nv);
+  double T = 0.5 * sid_.refmod.mass * vK.squaredNorm() + 0.5 * qdv.squaredNorm() + vK.dot(C.transpose() * qdv);
   if (rotates_) {
-    const MatrixXd Cr = sid_.Cr.order() ? sid_.Cr.at(qv) : sid_.Cr.M0;
-    T += 0.5 * w.dot(sid_.J.at(qv) * w) + vK.dot(skew(mc).transpose() * w) + w.dot(Cr.transpose() * qd);
+    Matrix3d J;
+    sid_.J.evaluate(qv, J, ni, 3);
+    sid_.Cr.evaluate(qv, C, ni, nv);
+    T += 0.5 * w.dot(J * w) + vK.dot(skew(mc).transpose() * w) + w.dot(C.transpose() * qdv);
   }
   return T;
 }

@@ -24,32 +24,39 @@ struct GeneralizedForce {
   }
 };
 
-/// Ke or De: diagonal in the SID's normal form (then applied in O(nq); off-diagonal round-off
-/// below 1e-12 of the largest entry is dropped), dense otherwise.
+/// Ke or De in the SID's normal form: diagonal on the leading coordinates whose rows hold
+/// nothing else (the fixed-interface modes of a Craig-Bampton SID, all modes of a modal one),
+/// dense on the trailing ones (its interface's stiffness). Off-diagonal round-off below 1e-12
+/// of the largest entry is dropped. A MacNeal SID's modes couple to its boundary: its matrix
+/// is all trailing block.
 class ModalMatrix {
 public:
   explicit ModalMatrix(const Eigen::MatrixXd& M);
   /// out -= the leading out.size() rows of M x, x of all nq entries (no allocation)
   void subtract_product(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> out) const {
-    const Eigen::Index rows = out.size();
-    if (dense_.size())
-      out.noalias() -= dense_.topRows(rows) * x;
-    else
-      out -= diagonal_.head(rows).cwiseProduct(x.head(rows));
+    const Eigen::Index rows = out.size(), d = diagonal_.size(), head = std::min(rows, d);
+    out.head(head) -= diagonal_.head(head).cwiseProduct(x.head(head));
+    if (rows > d) out.tail(rows - d).noalias() -= trailing_.topRows(rows - d) * x.tail(x.size() - d);
   }
-  /// true in the SID's normal form: M is applied as its diagonal
-  bool is_diagonal() const { return dense_.size() == 0; }
-  /// x^T M x
+  /// true where M is diagonal throughout
+  bool is_diagonal() const { return trailing_.size() == 0; }
+  /// x^T M x; the trailing block is skipped where x is zero on it (an interface out of
+  /// contact, whose modes do not couple to it)
   double quadratic_form(const Eigen::VectorXd& x) const {
-    if (!dense_.size()) return x.dot(diagonal_.cwiseProduct(x));
-    product_.noalias() = dense_ * x;
-    return x.dot(product_);
+    const Eigen::Index d = diagonal_.size();
+    double form = x.head(d).dot(diagonal_.cwiseProduct(x.head(d)));
+    const auto tail = x.tail(x.size() - d);
+    if (trailing_.size() && !tail.isZero(0.0)) {
+      product_.noalias() = trailing_ * tail;
+      form += tail.dot(product_);
+    }
+    return form;
   }
 
 private:
-  Eigen::VectorXd diagonal_;
-  Eigen::MatrixXd dense_;
-  mutable Eigen::VectorXd product_;  ///< dense M x, kept to avoid a temporary
+  Eigen::VectorXd diagonal_;   ///< the leading coordinates' entries
+  Eigen::MatrixXd trailing_;   ///< the block of the others, if they are not diagonal
+  mutable Eigen::VectorXd product_;  ///< trailing block times x, kept to avoid a temporary
 };
 
 class FloatingBody {

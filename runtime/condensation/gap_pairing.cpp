@@ -65,7 +65,7 @@ void GapPairing::pair(const double* y) {
   ++pairings_;
   paired_ = true;
   watching_ = false;
-  watched_.valid = false;
+  watched_.valid = evaluated_at_.valid = false;
   slave_reach_ = slave_rows_norm_ = target_reach_ = target_rows_norm_ = 0;
   slave_columns_.clear(), target_columns_.clear();
   target_.update(y);
@@ -136,6 +136,34 @@ void GapPairing::evaluate(const Poses& at, std::size_t k, Evaluation& e) const {
   e.slip = (d - e.gap * e.normal).norm();
 }
 
+void GapPairing::PosesCopy::assign(const Poses& at) {
+  // in place: the vectors keep their storage from one state to the next
+  valid = true;
+  r_slave = at.r_slave, r_target = at.r_target;
+  A_slave = at.A_slave, A_target = at.A_target;
+  q_slave = *at.q_slave;
+  if (at.q_target) q_target = *at.q_target;
+}
+
+bool GapPairing::PosesCopy::same(const Poses& at, const std::vector<Eigen::Index>& slave_columns,
+                                 const std::vector<Eigen::Index>& target_columns) const {
+  if (!valid || r_slave != at.r_slave || r_target != at.r_target || A_slave != at.A_slave || A_target != at.A_target) return false;
+  for (const Eigen::Index i : slave_columns)
+    if (q_slave(i) != (*at.q_slave)(i)) return false;
+  if (at.q_target)
+    for (const Eigen::Index i : target_columns)
+      if (q_target(i) != (*at.q_target)(i)) return false;
+  return true;
+}
+
+const std::vector<GapPairing::Evaluation>& GapPairing::evaluations(const Poses& at) const {
+  if (evaluated_at_.same(at, slave_columns_, target_columns_) && evaluations_.size() == pairs_.size()) return evaluations_;
+  evaluations_.resize(pairs_.size());
+  for (std::size_t k = 0; k < pairs_.size(); ++k) evaluate(at, k, evaluations_[k]);
+  evaluated_at_.assign(at);
+  return evaluations_;
+}
+
 std::pair<double, double> GapPairing::watched_change(const Poses& at) const {
   const WatchedState& w = watched_;
   // A pair's separation d = r_s + A_s (X + S q_s) - r_t - A_t (Y + T q_t) moves by at most
@@ -180,21 +208,14 @@ double GapPairing::watched_gap(const double* y) {
     separation = std::max(separation, std::hypot(e.gap, e.slip));
   }
   if (!(smallest > 2 * distance)) return watching_ = false, NAN;
-  // in place: the vectors keep their storage from one evaluation to the next
-  watched_.valid = true;
-  watched_.r_slave = at.r_slave, watched_.r_target = at.r_target;
-  watched_.A_slave = at.A_slave, watched_.A_target = at.A_target;
-  watched_.q_slave = *at.q_slave;
-  if (at.q_target) watched_.q_target = *at.q_target;
+  watched_.assign(at);
   watched_.gap = smallest, watched_.slip = slip, watched_.separation = separation;
   return smallest;
 }
 
 double GapPairing::min_gap(const double* y) const {
-  const Poses at = poses(y);
-  Evaluation e;
   double smallest = INFINITY;
-  for (std::size_t k = 0; k < pairs_.size(); ++k) evaluate(at, k, e), smallest = std::min(smallest, e.gap);
+  for (const Evaluation& e : evaluations(poses(y))) smallest = std::min(smallest, e.gap);
   return smallest;
 }
 

@@ -81,6 +81,10 @@ public:
   Poses poses(const double* y) const;
   /// Pair k at the poses of some y.
   void evaluate(const Poses& at, std::size_t k, Evaluation& e) const;
+  /// Every pair at the poses of some y, in the order of pairs(). Kept until the poses change:
+  /// the static solve's result, the loads, the step's gaps and the recorder all ask at one
+  /// state in turn.
+  const std::vector<Evaluation>& evaluations(const Poses& at) const;
   /// The smallest gap of the pairs at y (+inf without pairs).
   double min_gap(const double* y) const;
   /// d gap / d z of pair k over the stacked quasistatic coordinates (n entries; each body's
@@ -102,13 +106,20 @@ public:
   static constexpr double kSlipPerSpacing = 0.25;
 
 private:
-  /// The state at the pairs' last evaluation while watching: the poses (coordinates copied),
-  /// their smallest gap, largest slip and largest distance between paired points.
-  struct WatchedState {
+  /// Poses with their coordinates copied (the bodies' coordinate vectors are overwritten for
+  /// each state).
+  struct PosesCopy {
     bool valid = false;
     Eigen::Vector3d r_slave, r_target;
     Eigen::Matrix3d A_slave, A_target;
     Eigen::VectorXd q_slave, q_target;
+    void assign(const Poses& at);
+    /// The same frames and the same coordinates where the pairs' rows read them.
+    bool same(const Poses& at, const std::vector<Eigen::Index>& slave_columns, const std::vector<Eigen::Index>& target_columns) const;
+  };
+  /// The state at the pairs' last evaluation while watching: its poses, their smallest gap,
+  /// largest slip and largest distance between paired points.
+  struct WatchedState : PosesCopy {
     double gap = 0, slip = 0, separation = 0;
   };
   /// How much any pair's gap (first) and slip (second) can have changed from the watched state
@@ -130,6 +141,8 @@ private:
   /// boundary's, or all modes' where the rows fill them (Craig-Bampton)
   std::vector<Eigen::Index> slave_columns_, target_columns_;
   WatchedState watched_;
+  mutable PosesCopy evaluated_at_;  ///< the poses of evaluations_
+  mutable std::vector<Evaluation> evaluations_;
   bool paired_ = false, watching_ = false;
   long pairings_ = 0, repairings_ = 0;
   std::size_t largest_ = 0;

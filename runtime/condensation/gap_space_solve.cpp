@@ -28,19 +28,18 @@ bool GapSpaceSolve::pair_approaching(const double* y) {
 bool GapSpaceSolve::evaluate_pairs(const double* y) {
   const Eigen::Index m = Eigen::Index(pairs_.size());
   free_gaps_.resize(m);
-  GapPairing::Evaluation e;
   bool held = true;
   // pairs are stacked contact by contact: each contact's run of them
   for (Eigen::Index first = 0; first < m;) {
     const SurfaceContact* c = pairs_[std::size_t(first)].contact;
     GapPairing& pairing = c->gap_pairing();
-    const GapPairing::Poses at = pairing.poses(y);
+    const std::vector<GapPairing::Evaluation>& evaluations = pairing.evaluations(pairing.poses(y));
     double smallest = INFINITY;
     bool slid = false;
     Eigen::Index i = first;
     for (; i < m && pairs_[std::size_t(i)].contact == c; ++i) {
       const GapPairing::Pair& p = pairing.pairs()[pairs_[std::size_t(i)].k];
-      pairing.evaluate(at, pairs_[std::size_t(i)].k, e);
+      const GapPairing::Evaluation& e = evaluations[pairs_[std::size_t(i)].k];
       free_gaps_(i) = e.gap;
       smallest = std::min(smallest, e.gap);
       // a point far from the target may slide without harm: it counts from a spacing's distance on

@@ -26,11 +26,20 @@ QuasistaticJacobian::QuasistaticJacobian(const std::vector<Eigen::MatrixXd>& blo
     at += K.rows();
   }
   // K_h does not change: inverted once, it serves every Woodbury solve (a massless boundary
-  // without contact then costs a matrix-vector product per Newton step, not a factorization)
-  const Eigen::LLT<Eigen::MatrixXd> llt(dense_stiffness_);
-  if (llt.info() == Eigen::Success) dense_inverse_ = llt.solve(Eigen::MatrixXd::Identity(n, n));
+  // without contact then costs a matrix-vector product per Newton step, not a factorization).
+  // It is block diagonal, one block per body: factored, inverted and its spectrum bounded
+  // block by block, at a fraction of the whole matrix's cubic cost.
+  dense_inverse_ = Eigen::MatrixXd::Zero(n, n);
+  smallest_eigenvalue_ = n ? INFINITY : 0.0;
+  for (const auto& [first, nb] : dense_blocks_) {
+    const auto K = dense_stiffness_.block(first, first, nb, nb);
+    const Eigen::LLT<Eigen::MatrixXd> llt(K);
+    if (llt.info() != Eigen::Success) dense_inverse_.resize(0, 0);
+    if (dense_inverse_.size()) dense_inverse_.block(first, first, nb, nb) = llt.solve(Eigen::MatrixXd::Identity(nb, nb));
+    smallest_eigenvalue_ = std::min(smallest_eigenvalue_, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K, Eigen::EigenvaluesOnly).eigenvalues()(0));
+  }
+  smallest_eigenvalue_ = std::max(0.0, smallest_eigenvalue_);
   used_rows_.resize(std::size_t(n));
-  if (n) smallest_eigenvalue_ = std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense_stiffness_, Eigen::EigenvaluesOnly).eigenvalues()(0));
 }
 
 void QuasistaticJacobian::multiply_blocks(const Eigen::MatrixXd& A, const Eigen::VectorXd& x, Eigen::VectorXd& out) const {

@@ -191,9 +191,9 @@ Eigen::Vector3d SurfaceContact::point_force(Eigen::Index g, double p, const Eige
 template <class F>
 void SurfaceContact::for_each_pressed_pair(const double* y, F&& f) const {
   const GapPairing::Poses at = pairing_->poses(y);
-  GapPairing::Evaluation e;
+  const std::vector<GapPairing::Evaluation>& evaluations = pairing_->evaluations(at);
   for (std::size_t k = 0; k < pairing_->pairs().size(); ++k) {
-    pairing_->evaluate(at, k, e);
+    const GapPairing::Evaluation& e = evaluations[k];
     const Eigen::Index g = pairing_->pairs()[k].g;
     if (pressure(g, e.gap) <= 0) continue;
     pairing_->target_point(y, k, e, point_);

@@ -1,9 +1,11 @@
 // In-process tests of FloatingBody and Simulation: free flight against the closed form, the
 // invariants of torque-free rotation, the rotation loads on quasistatic modes and when they are
-// left out, and what a run reports to its observer.
+// left out, the modal matrices' block forms, the kinetic energy, and what a run reports to its
+// observer.
 #include "body/floating_body.hpp"
 #include "body/rigid_body_sid.hpp"
 #include "isosid/format/sid_io.hpp"
+#include "isosid/format/skew.hpp"
 #include "solve/simulation.hpp"
 
 #include <algorithm>
@@ -206,6 +208,81 @@ TEST_CASE("FloatingBody: the rotation loads on the quasistatic modes are left ou
   }
   CHECK(skipped > 0);
   CHECK(formed > 0);
+}
+
+TEST_CASE("ModalMatrix: products and quadratic forms equal the dense matrix's, diagonal, block and coupled alike", "[runtime][unit]") {
+  // Three forms of the SID's Ke: diagonal (a modal SID), diagonal modes beside a dense
+  // interface block (Craig-Bampton: the modes' rows hold only round-off besides their
+  // diagonal), and modes coupled to the block (MacNeal). Round-off below 1e-12 of the largest
+  // entry is dropped, so the reference is the matrix without it; the sums then differ only in
+  // their order (1e-14 of the terms' magnitude).
+  const Eigen::Index n = 12, modes = 5;
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Random(n - modes, n - modes);
+  dense = dense * dense.transpose() + Eigen::MatrixXd::Identity(n - modes, n - modes);
+  Eigen::MatrixXd block = Eigen::MatrixXd::Zero(n, n);
+  block.diagonal().head(modes) = Eigen::VectorXd::LinSpaced(modes, 1.0, 9.0);
+  block.bottomRightCorner(n - modes, n - modes) = dense;
+  Eigen::MatrixXd diagonal = Eigen::MatrixXd(Eigen::VectorXd::LinSpaced(n, 1.0, 12.0).asDiagonal());
+  Eigen::MatrixXd coupled = block;
+  coupled.block(0, modes, modes, n - modes).setConstant(0.3);
+  coupled.block(modes, 0, n - modes, modes).setConstant(0.3);
+  struct Case {
+    const char* name;
+    Eigen::MatrixXd exact;
+    bool diagonal;
+  };
+  for (const Case& c : {Case{"diagonal", diagonal, true}, Case{"modes beside a block", block, false}, Case{"coupled", coupled, false}}) {
+    Eigen::MatrixXd with_roundoff = c.exact;
+    with_roundoff(0, n - 1) = with_roundoff(n - 1, 0) += 1e-15 * c.exact.cwiseAbs().maxCoeff();  // dropped in the first two forms
+    const run::ModalMatrix M(with_roundoff);
+    INFO(c.name);
+    CHECK(M.is_diagonal() == c.diagonal);
+    const Eigen::MatrixXd& reference = c.name == std::string("coupled") ? with_roundoff : c.exact;
+    const double scale = reference.cwiseAbs().maxCoeff();
+    for (const Eigen::VectorXd& x : {Eigen::VectorXd(Eigen::VectorXd::LinSpaced(n, -1.0, 2.0)),
+                                     Eigen::VectorXd((Eigen::VectorXd(n) << Eigen::VectorXd::LinSpaced(modes, 1.0, 2.0),
+                                                      Eigen::VectorXd::Zero(n - modes)).finished())}) {
+      CHECK(std::abs(M.quadratic_form(x) - x.dot(reference * x)) <= 1e-14 * scale * x.squaredNorm() * n);
+      for (Eigen::Index rows : {Eigen::Index(0), modes, n - 2, n}) {
+        Eigen::VectorXd out = Eigen::VectorXd::Ones(rows);
+        M.subtract_product(x, out);
+        const Eigen::VectorXd expected = Eigen::VectorXd::Ones(rows) - reference.topRows(rows) * x;
+        CHECK((out - expected).norm() <= 1e-14 * scale * x.cwiseAbs().sum());  // rows may be 0
+      }
+    }
+  }
+}
+
+TEST_CASE("FloatingBody: the kinetic energy is the SID's mass matrix form over all coordinates", "[runtime][unit]") {
+  // T = 1/2 [v; w; qdot]^T M(q) [v; w; qdot] with M's Taylor terms summed over all coordinates
+  // (quasistatic ones set too); the body forms it from the rows with velocities and the
+  // coefficients with inertia alone. Same sums in another order: 1e-13 of T.
+  const format::Sid sid = format::read_sid(std::string(ISOSID_GOLDEN_DIR) + "/beam_small.sid.h5");
+  REQUIRE(sid.Cr.order() == 1);  // and J and mdCM: first-order terms the coordinates move
+  for (double split_hz : {0.0, 2000.0}) {  // every mode integrated, or two (the rest quasistatic)
+    run::BodySpec spec;
+    spec.name = "beam";
+    if (split_hz > 0) spec.high_modes = "quasistatic", spec.quasistatic_above_hz = split_hz;
+    const run::FloatingBody body(spec, sid, run::Dimension::Solid);
+    const Eigen::Index nd = body.n_dynamic(), nq = sid.nq();
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(body.state_size());
+    body.initial_state(y.data());
+    const Eigen::Quaterniond p = Eigen::Quaterniond(0.9, 0.1, -0.3, 0.2).normalized();
+    y(3) = p.w(), y(4) = p.x(), y(5) = p.y(), y(6) = p.z();
+    y.segment(7, nd) = Eigen::VectorXd::LinSpaced(nd, 1e-4, 3e-4);
+    y.segment<3>(7 + nd) = Eigen::Vector3d(0.4, -1.1, 0.2);
+    y.segment<3>(10 + nd) = Eigen::Vector3d(3.0, -20.0, 7.0);
+    y.segment(13 + nd, nd) = Eigen::VectorXd::LinSpaced(nd, -0.2, 0.1);
+    if (nq > nd) body.quasistatic_modes() = Eigen::VectorXd::LinSpaced(nq - nd, -2e-4, 5e-4);
+    const Eigen::VectorXd q = body.q(y.data()), qdot = body.qdot(y.data());
+    const Eigen::Vector3d vK = p.toRotationMatrix().transpose() * y.segment<3>(7 + nd), w = y.segment<3>(10 + nd);
+    const Eigen::Vector3d mc = sid.mdCM.at(q);
+    const double expected = 0.5 * sid.refmod.mass * vK.squaredNorm() + 0.5 * w.dot(sid.J.at(q) * w) +
+                            0.5 * qdot.dot(sid.Me.M0 * qdot) + vK.dot(format::skew(mc).transpose() * w) +
+                            vK.dot(sid.Ct.at(q).transpose() * qdot) + w.dot(sid.Cr.at(q).transpose() * qdot);
+    INFO(nd << " integrated modes of " << nq);
+    CHECK(std::abs(body.kinetic_energy(y.data()) - expected) <= 1e-13 * expected);
+  }
 }
 
 TEST_CASE("Simulation: an interrupt the observer asks for ends the run at that step, sampled there", "[runtime][unit][signals]") {

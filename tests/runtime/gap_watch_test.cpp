@@ -96,3 +96,72 @@ TEST_CASE("gap space: between impacts the watched gap never exceeds its pairs' s
     CHECK(std::abs(gap_space.closings[i] - general.closings[i]) < 1e-9);
   }
 }
+
+namespace {
+/// While the contact is paired, checks the pairs' kept evaluations at each step's state and at
+/// states moved from it: they must be those evaluate() gives there, never those of another state.
+struct KeptEvaluationsObserver : run::SimulationObserver {
+  const run::Simulation* simulation = nullptr;
+  int paired_steps = 0, mismatches = 0, unchanged_after_move = 0;
+  void sample(double, const double*) override {}
+  void contact_event(int, bool, double) override {}
+  void step(double, const double* y) override {
+    const run::SurfaceContact& c = simulation->system().contacts()[0];
+    const run::GapPairing& pairing = c.gap_pairing();
+    if (!pairing.paired()) return;
+    ++paired_steps;
+    const run::FloatingBody& body = *simulation->system().bodies()[0];
+    const Eigen::VectorXd quasistatic = body.quasistatic_modes();
+    std::vector<double> moved(y, y + simulation->system().size());
+    moved[std::size_t(body.offset()) + 1] += 1e-9;  // the frame 1 nm up
+    Eigen::VectorXd deformed = quasistatic;
+    deformed.array() += 1e-9;  // the quasistatic coordinates
+    const std::vector<double> step_gaps = gaps(pairing, pairing.poses(y));
+    // each state in turn, and the step's own state last again: the kept evaluations must follow
+    for (int state = 0; state < 4; ++state) {
+      const double* at = state == 1 ? moved.data() : y;
+      body.quasistatic_modes() = state == 2 ? deformed : quasistatic;
+      const run::GapPairing::Poses poses = pairing.poses(at);
+      const auto& kept = pairing.evaluations(poses);
+      run::GapPairing::Evaluation e;
+      for (std::size_t k = 0; k < kept.size(); ++k) {
+        pairing.evaluate(poses, k, e);
+        mismatches += kept[k].gap != e.gap || kept[k].slave_point != e.slave_point || kept[k].normal != e.normal;
+      }
+      if (state == 1 || state == 2) unchanged_after_move += gaps_of(kept) == step_gaps;
+    }
+    body.quasistatic_modes() = quasistatic;
+  }
+  static std::vector<double> gaps(const run::GapPairing& pairing, const run::GapPairing::Poses& poses) {
+    std::vector<double> out(pairing.pairs().size());
+    run::GapPairing::Evaluation e;
+    for (std::size_t k = 0; k < out.size(); ++k) pairing.evaluate(poses, k, e), out[k] = e.gap;
+    return out;
+  }
+  static std::vector<double> gaps_of(const std::vector<run::GapPairing::Evaluation>& kept) {
+    std::vector<double> out;
+    for (const auto& e : kept) out.push_back(e.gap);
+    return out;
+  }
+};
+}  // namespace
+
+TEST_CASE("gap space: the pairs' kept evaluations are those of the state asked for, after a move of the frame or of a quasistatic coordinate",
+          "[runtime][unit][gap-space]") {
+  // The static solve, the loads, the step's gaps and the recorder ask for the pairs at one
+  // state in turn, and the pairing keeps its evaluations between them. A change of the frame
+  // or of a coordinate the pairs read must be seen.
+  const test::ScratchDir dir("gap_kept");
+  std::ofstream(dir.path("s.scene.toml")) << bouncing_sphere_scene("formulation = \"gap-space\"\n");
+  run::Scene scene = run::read_scene_file(dir.path("s.scene.toml"));
+  scene.simulation.end_time = 60e-6;  // the first impact's approach and press (it lasts about 30 us)
+  run::Simulation simulation(scene, {format::read_sid(scene.bodies[0].sid_file)});
+  KeptEvaluationsObserver observer;
+  observer.simulation = &simulation;
+  REQUIRE(simulation.run(observer).completed());
+  INFO("paired steps " << observer.paired_steps);
+  CHECK(observer.paired_steps > 10);
+  CHECK(observer.mismatches == 0);
+  // the moved states' gaps are the moved ones (evaluate() itself sees the move)
+  CHECK(observer.unchanged_after_move == 0);
+}
