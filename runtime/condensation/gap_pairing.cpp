@@ -7,26 +7,6 @@
 namespace isosid::run {
 
 namespace {
-/// |a| over the given entries.
-double norm_over(const std::vector<Eigen::Index>& entries, const Eigen::VectorXd& a) {
-  double sum = 0;
-  for (const Eigen::Index i : entries) sum += a(i) * a(i);
-  return std::sqrt(sum);
-}
-
-/// |a - b| over the given entries.
-double distance_over(const std::vector<Eigen::Index>& entries, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-  double sum = 0;
-  for (const Eigen::Index i : entries) sum += (a(i) - b(i)) * (a(i) - b(i));
-  return std::sqrt(sum);
-}
-
-/// Sorts the columns and drops the repeated ones.
-void make_set(std::vector<Eigen::Index>& columns) {
-  std::sort(columns.begin(), columns.end());
-  columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
-}
-
 /// Entries below this fraction of a point's largest displacement row entry are round-off of the
 /// reduction (a massless boundary's surface points have 1e-17 in the columns of the normal modes).
 constexpr double kDroppedEntry = 1e-13;
@@ -40,6 +20,44 @@ SparseRows SparseRows::from(const Eigen::Ref<const Eigen::MatrixXd>& rows) {
   s.values = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, Eigen::Index(s.columns.size()));
   for (std::size_t i = 0; i < s.columns.size(); ++i) s.values.col(Eigen::Index(i)).head(rows.rows()) = rows.col(s.columns[i]);
   return s;
+}
+
+void RowsBound::clear() {
+  added_.clear(), columns_.clear(), column_norms_.clear();
+  frobenius_ = 0;
+}
+
+void RowsBound::add(const SparseRows& rows) {
+  frobenius_ = std::max(frobenius_, rows.values.norm());
+  for (std::size_t i = 0; i < rows.columns.size(); ++i) added_.emplace_back(rows.columns[i], rows.values.col(Eigen::Index(i)).norm());
+}
+
+void RowsBound::finish() {
+  std::sort(added_.begin(), added_.end());
+  columns_.clear(), column_norms_.clear();
+  for (const auto& [column, norm] : added_) {
+    if (columns_.empty() || columns_.back() != column) columns_.push_back(column), column_norms_.push_back(0);
+    column_norms_.back() = std::max(column_norms_.back(), norm);
+  }
+  added_.clear();
+}
+
+double RowsBound::of(const Eigen::VectorXd& x) const {
+  double squares = 0, weighted = 0;
+  for (std::size_t i = 0; i < columns_.size(); ++i) {
+    const double xi = x(columns_[i]);
+    squares += xi * xi, weighted += column_norms_[i] * std::abs(xi);
+  }
+  return std::min(frobenius_ * std::sqrt(squares), weighted);
+}
+
+double RowsBound::of_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
+  double squares = 0, weighted = 0;
+  for (std::size_t i = 0; i < columns_.size(); ++i) {
+    const double d = a(columns_[i]) - b(columns_[i]);
+    squares += d * d, weighted += column_norms_[i] * std::abs(d);
+  }
+  return std::min(frobenius_ * std::sqrt(squares), weighted);
 }
 
 GapPairing::GapPairing(const FloatingBody& slave, const format::ContactSurface& surface, const ContactTarget& target)
@@ -66,8 +84,8 @@ void GapPairing::pair(const double* y) {
   paired_ = true;
   watching_ = false;
   watched_.valid = evaluated_at_.valid = false;
-  slave_reach_ = slave_rows_norm_ = target_reach_ = target_rows_norm_ = 0;
-  slave_columns_.clear(), target_columns_.clear();
+  slave_reach_ = target_reach_ = 0;
+  slave_rows_.clear(), target_rows_.clear();
   target_.update(y);
   const FloatingBody* master = target_.body();
   const Eigen::Matrix3d A = slave_.orientation(y).toRotationMatrix();
@@ -95,14 +113,11 @@ void GapPairing::pair(const double* y) {
     }
     p.spacing = spacing_(g);
     slave_reach_ = std::max(slave_reach_, surface_.position.row(g).norm());
-    slave_rows_norm_ = std::max(slave_rows_norm_, p.slave_rows.values.norm());
     target_reach_ = std::max(target_reach_, p.target_point.norm());
-    target_rows_norm_ = std::max(target_rows_norm_, p.target_rows.values.norm());
-    slave_columns_.insert(slave_columns_.end(), p.slave_rows.columns.begin(), p.slave_rows.columns.end());
-    target_columns_.insert(target_columns_.end(), p.target_rows.columns.begin(), p.target_rows.columns.end());
+    slave_rows_.add(p.slave_rows), target_rows_.add(p.target_rows);
     pairs_.push_back(std::move(p));
   }
-  make_set(slave_columns_), make_set(target_columns_);
+  slave_rows_.finish(), target_rows_.finish();
   largest_ = std::max(largest_, pairs_.size());
   // no point found the target from where it stands: the contact stays unpaired (projected)
   if (pairs_.empty()) paired_ = false;
@@ -157,7 +172,7 @@ bool GapPairing::PosesCopy::same(const Poses& at, const std::vector<Eigen::Index
 }
 
 const std::vector<GapPairing::Evaluation>& GapPairing::evaluations(const Poses& at) const {
-  if (evaluated_at_.same(at, slave_columns_, target_columns_) && evaluations_.size() == pairs_.size()) return evaluations_;
+  if (evaluated_at_.same(at, slave_rows_.columns(), target_rows_.columns()) && evaluations_.size() == pairs_.size()) return evaluations_;
   evaluations_.resize(pairs_.size());
   for (std::size_t k = 0; k < pairs_.size(); ++k) evaluate(at, k, evaluations_[k]);
   evaluated_at_.assign(at);
@@ -167,16 +182,16 @@ const std::vector<GapPairing::Evaluation>& GapPairing::evaluations(const Poses& 
 std::pair<double, double> GapPairing::watched_change(const Poses& at) const {
   const WatchedState& w = watched_;
   // A pair's separation d = r_s + A_s (X + S q_s) - r_t - A_t (Y + T q_t) moves by at most
-  // |dr| + |dA_s| |X + S q_s| + |S dq_s| + (the same for the target), each |S x| <= |S|_F |x|
-  // over the columns the rows read. For the difference of two rotations the Frobenius norm is
-  // sqrt(2) times the spectral norm.
-  const double slave_deformation_change = slave_rows_norm_ * distance_over(slave_columns_, *at.q_slave, w.q_slave);
+  // |dr| + |dA_s| |X + S q_s| + |S dq_s| + (the same for the target), each |S x| bounded over
+  // the columns the rows read (RowsBound). For the difference of two rotations the Frobenius
+  // norm is sqrt(2) times the spectral norm.
+  const double slave_deformation_change = slave_rows_.of_difference(*at.q_slave, w.q_slave);
   double target_deformation_change = 0, target_radius = target_reach_;
   if (at.q_target) {
-    target_deformation_change = target_rows_norm_ * distance_over(target_columns_, *at.q_target, w.q_target);
-    target_radius += target_rows_norm_ * norm_over(target_columns_, *at.q_target);
+    target_deformation_change = target_rows_.of_difference(*at.q_target, w.q_target);
+    target_radius += target_rows_.of(*at.q_target);
   }
-  const double slave_radius = slave_reach_ + slave_rows_norm_ * norm_over(slave_columns_, *at.q_slave);
+  const double slave_radius = slave_reach_ + slave_rows_.of(*at.q_slave);
   const double slave_turn = (at.A_slave - w.A_slave).norm() / std::sqrt(2.0);
   const double target_turn = (at.A_target - w.A_target).norm() / std::sqrt(2.0);
   const double separation_change = ((at.r_slave - w.r_slave) - (at.r_target - w.r_target)).norm() + slave_turn * slave_radius +

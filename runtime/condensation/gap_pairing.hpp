@@ -27,6 +27,31 @@ struct SparseRows {
   static SparseRows from(const Eigen::Ref<const Eigen::MatrixXd>& rows);
 };
 
+/// How far a set of rows can move any point they describe: for every pair's rows S over the
+/// same coordinates, |S x| is below both the rows' largest Frobenius norm times |x| (over the
+/// columns they read) and the sum over columns of the largest column norm times |x_j|. The
+/// second is the tight one where the columns' scales differ by orders (a Craig-Bampton body:
+/// its interface modes' rows are a thousand times its normal modes').
+class RowsBound {
+public:
+  void clear();
+  void add(const SparseRows& rows);
+  /// Sorts the columns once every pair's rows are added.
+  void finish();
+  /// The columns any pair's rows read, ascending.
+  const std::vector<Eigen::Index>& columns() const { return columns_; }
+  /// A bound of |S x| over the pairs' rows S.
+  double of(const Eigen::VectorXd& x) const;
+  /// A bound of |S (a - b)| over the pairs' rows S.
+  double of_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
+
+private:
+  std::vector<std::pair<Eigen::Index, double>> added_;  ///< (column, norm) of every pair, until finish()
+  std::vector<Eigen::Index> columns_;
+  std::vector<double> column_norms_;  ///< the largest norm of each column over the pairs
+  double frobenius_ = 0;              ///< the largest Frobenius norm of a pair's rows
+};
+
 class GapPairing {
 public:
   /// One slave point and the target point it is paired with.
@@ -135,11 +160,11 @@ private:
   double extent_ = 0;
   std::vector<Pair> pairs_;
   /// Over the pairs: the largest reference point (slave: its surface point, target: its
-  /// point) from the body's frame origin, m, and the largest Frobenius norm of the rows
-  double slave_reach_ = 0, slave_rows_norm_ = 0, target_reach_ = 0, target_rows_norm_ = 0;
-  /// The coordinates that any pair's rows read (slave, target), ascending: a massless
-  /// boundary's, or all modes' where the rows fill them (Craig-Bampton)
-  std::vector<Eigen::Index> slave_columns_, target_columns_;
+  /// point) from the body's frame origin, m
+  double slave_reach_ = 0, target_reach_ = 0;
+  /// The pairs' rows of each body: the coordinates they read (a massless boundary's, or all
+  /// modes' where the rows fill them: Craig-Bampton) and how far those can move a point
+  RowsBound slave_rows_, target_rows_;
   WatchedState watched_;
   mutable PosesCopy evaluated_at_;  ///< the poses of evaluations_
   mutable std::vector<Evaluation> evaluations_;

@@ -165,3 +165,38 @@ TEST_CASE("gap space: the pairs' kept evaluations are those of the state asked f
   // the moved states' gaps are the moved ones (evaluate() itself sees the move)
   CHECK(observer.unchanged_after_move == 0);
 }
+
+TEST_CASE("gap space: the rows' bound holds for every pair's rows, and follows the columns' scales", "[runtime][unit][gap-space]") {
+  // Rows over columns of scales six orders apart (a Craig-Bampton body's normal modes and its
+  // interface modes), with the coordinates' change mostly on the small-scale columns: the bound
+  // must hold for every pair and be far tighter than the Frobenius one.
+  std::srand(7);
+  const Eigen::Index n = 60;
+  std::vector<run::SparseRows> pairs(5);
+  run::RowsBound bound;
+  double frobenius = 0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    Eigen::Matrix<double, 3, Eigen::Dynamic> rows = Eigen::Matrix<double, 3, Eigen::Dynamic>::Random(3, n);
+    rows.rightCols(20) *= 1e6;              // the large-scale columns
+    rows.col(Eigen::Index(3 * k)).setZero();  // columns a pair does not read
+    pairs[k] = run::SparseRows::from(rows);
+    frobenius = std::max(frobenius, rows.norm());
+    bound.add(pairs[k]);
+  }
+  bound.finish();
+  CHECK(bound.columns().size() == std::size_t(n));  // every column read by some pair
+  for (int trial = 0; trial < 20; ++trial) {
+    Eigen::VectorXd a = Eigen::VectorXd::Random(n), b = a;
+    b.head(n - 20) += 1e-3 * Eigen::VectorXd::Random(n - 20);
+    b.tail(20) += 1e-12 * Eigen::VectorXd::Random(20);
+    for (const run::SparseRows& rows : pairs) {
+      Eigen::Vector3d moved = Eigen::Vector3d::Zero(), at = Eigen::Vector3d::Zero();
+      rows.add_product(a, at);
+      rows.add_product(Eigen::VectorXd(a - b), moved);
+      CHECK(at.norm() <= bound.of(a) * (1 + 1e-12));
+      CHECK(moved.norm() <= bound.of_difference(a, b) * (1 + 1e-12));
+    }
+    // the column-wise sum sees that the change is on the small columns
+    CHECK(bound.of_difference(a, b) < 1e-2 * frobenius * (a - b).norm());
+  }
+}
