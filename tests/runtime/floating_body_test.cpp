@@ -220,9 +220,9 @@ TEST_CASE("FloatingBody: the rotation loads on the quasistatic modes leave out o
 TEST_CASE("ModalMatrix: products and quadratic forms equal the dense matrix's, diagonal, block and coupled alike", "[runtime][unit]") {
   // Three forms of the SID's Ke: diagonal (a modal SID), diagonal modes beside a dense
   // interface block (Craig-Bampton: the modes' rows hold only round-off besides their
-  // diagonal), and modes coupled to the block (MacNeal). Round-off below 1e-12 of the largest
-  // entry is dropped, so the reference is the matrix without it; the sums then differ only in
-  // their order (1e-14 of the terms' magnitude).
+  // diagonal), and modes coupled to the block (MacNeal). Round-off (here 1e-15 of the largest
+  // entry, far below 1e-8 of sqrt(M_ii M_jj)) is dropped, so the reference is the matrix
+  // without it; the sums then differ only in their order (1e-14 of the terms' magnitude).
   const Eigen::Index n = 12, modes = 5;
   Eigen::MatrixXd dense = Eigen::MatrixXd::Random(n - modes, n - modes);
   dense = dense * dense.transpose() + Eigen::MatrixXd::Identity(n - modes, n - modes);
