@@ -3,9 +3,11 @@
 
 #include "case_run.hpp"
 #include "study_table.hpp"
+#include "scene/prep_process.hpp"
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -13,6 +15,7 @@
 #include <deque>
 #include <mutex>
 #include <thread>
+#include <unistd.h>
 
 namespace isosid::sweep {
 namespace {
@@ -140,6 +143,22 @@ Ranks::Ranks(int& argc, char**& argv) {
   }
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  // Ranks that build SIDs at once would each start isosid-prep's OpenMP assembly and BLAS on
+  // every core they may use (mpirun binds two ranks to a core each, more to a socket each, or
+  // none): the builds get the node's share, as the adaptive loop's side-by-side builds do,
+  // through the environment the builds inherit, unless the user set it
+  MPI_Comm node;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
+  int on_node = 1;
+  MPI_Comm_size(node, &on_node);
+  MPI_Comm_free(&node);
+  const std::string threads = std::to_string(prep_threads_per_rank(run::usable_cores(), int(sysconf(_SC_NPROCESSORS_ONLN)), on_node));
+  setenv("OPENBLAS_NUM_THREADS", threads.c_str(), 0);
+  setenv("OMP_NUM_THREADS", threads.c_str(), 0);
+}
+
+int prep_threads_per_rank(int usable_cores, int node_cores, int ranks_on_node) {
+  return std::max(1, std::min(usable_cores, node_cores / std::max(1, ranks_on_node)));
 }
 
 Ranks::~Ranks() {

@@ -30,6 +30,11 @@ private:
   bool mpi_ = false;
 };
 
+/// The threads each rank's isosid-prep may use for its assembly and BLAS when the ranks on
+/// one node build SIDs side by side: the node's cores shared among its ranks, at most the
+/// cores a rank may run on (its binding), at least one.
+int prep_threads_per_rank(int usable_cores, int node_cores, int ranks_on_node);
+
 struct CaseWork {
   const Study& study;
   const std::vector<Case>& cases;

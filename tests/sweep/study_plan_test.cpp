@@ -1,6 +1,7 @@
 // Study files and their cases without running any: the grid's order, zipped values, a Latin
 // hypercube's strata, ranges, values found in a summary by dotted path, and refused study files.
 #include "case_run.hpp"
+#include "dispatch.hpp"
 #include "study_file.hpp"
 #include "support/run_program.hpp"
 #include "support/scene_text.hpp"
@@ -97,4 +98,13 @@ TEST_CASE("sweep: study files that cannot make a study are refused naming the fi
   refused("[[parameter]]\nkey = \"a\"\nrange = [1, 2]\ncount = 100000\n[[parameter]]\nkey = \"b\"\nrange = [1, 2]\ncount = 100\n",
           "more than 1e6");
   refused("[[parameter]]\nkey = \"a\"\nvalues = [1]\nstep = 2\n", "step");
+}
+
+TEST_CASE("sweep: ranks building SIDs side by side share their node's cores", "[sweep][unit]") {
+  using isosid::sweep::prep_threads_per_rank;
+  CHECK(prep_threads_per_rank(1, 2, 2) == 1);     // two ranks bound to a core each
+  CHECK(prep_threads_per_rank(8, 16, 4) == 4);    // four ranks bound to a socket of 8 each
+  CHECK(prep_threads_per_rank(16, 16, 4) == 4);   // four ranks unbound
+  CHECK(prep_threads_per_rank(16, 16, 1) == 16);  // one rank: the whole node
+  CHECK(prep_threads_per_rank(2, 2, 8) == 1);     // more ranks than cores: one thread each
 }
