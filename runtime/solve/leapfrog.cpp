@@ -1,12 +1,16 @@
 // Leapfrog time stepping; see leapfrog.hpp.
 #include "solve/leapfrog.hpp"
 
+#include "isosid/format/error.hpp"
+
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace isosid::run {
 
-Leapfrog::Leapfrog(const MultibodySystem& system, double step, Eigen::VectorXd& y, double t0)
-    : system_(system), step_(step), y_(y), ydot_(Eigen::VectorXd::Zero(y.size())) {
+Leapfrog::Leapfrog(const MultibodySystem& system, double step, Eigen::VectorXd y0, long max_steps, double t0)
+    : TimeIntegrator(std::move(y0), max_steps), system_(system), step_(step), ydot_(Eigen::VectorXd::Zero(y_.size())) {
   for (const auto& b : system_.bodies()) {
     // a body's state: r (3), quaternion (4), q (nd), then v (3), omega (3), qdot (nd)
     const Eigen::Index velocities = b->offset() + 7 + b->n_dynamic();
@@ -19,7 +23,25 @@ Leapfrog::Leapfrog(const MultibodySystem& system, double step, Eigen::VectorXd& 
   system_.gaps(y_.data(), gaps_.data());
 }
 
-void Leapfrog::step(double& t, double dt) {
+std::vector<TimeIntegrator::GapEvent> Leapfrog::advance(double tout, double& t) {
+  std::vector<GapEvent> changed;
+  while (t < tout * (1 - 1e-12) && changed.empty()) {
+    if (steps_ >= max_steps_) throw format::ComputationError("the step limit max_steps = " + std::to_string(max_steps_) + " was reached");
+    const double left = tout - t, steps = std::ceil(left / step_ * (1 - 1e-9));
+    step(t, left / std::max(steps, 1.0), changed);
+    if (step_callback_) step_callback_(t, y_.data());
+  }
+  return changed;
+}
+
+IntegratorStats Leapfrog::stats() const {
+  IntegratorStats s;
+  s.steps = s.attempts = steps_;
+  s.rhs_evaluations = evaluations_;
+  return s;
+}
+
+void Leapfrog::step(double& t, double dt, std::vector<GapEvent>& changed) {
   const Eigen::Index last = y_.size() - 1;  // the dissipated energy, integrated by the trapezoidal rule
   const double dissipation_before = ydot_(last);
   // kick: v(n + 1/2) = v(n) + dt/2 a(n)
@@ -50,12 +72,11 @@ void Leapfrog::step(double& t, double dt) {
   // contact onset and release within the step, with the static solve of the rhs at these
   // positions (the kick since changed only velocities)
   system_.gaps(y_.data(), new_gaps_.data());
-  gap_changes_.clear();
   for (std::size_t k = 0; k < gaps_.size(); ++k) {
     const bool was_open = gaps_[k] > 0, is_open = new_gaps_[k] > 0;
     if (was_open == is_open) continue;
     const double fraction = gaps_[k] / (gaps_[k] - new_gaps_[k]);  // in [0, 1]: the signs differ
-    gap_changes_.push_back({int(k), was_open, t - dt + fraction * dt});
+    changed.push_back({int(k), was_open, t - dt + fraction * dt});
   }
   std::swap(gaps_, new_gaps_);
 }

@@ -9,39 +9,34 @@
 // stands for the step's end (its gaps and output), which differs only by the closing kick.
 // Contact onset and release are found at the step they happen in (no root refinement).
 #pragma once
-#include "solve/multibody_system.hpp"
+#include "solve/time_integrator.hpp"
 
 #include <Eigen/Dense>
 #include <vector>
 
 namespace isosid::run {
 
-class Leapfrog {
+class Leapfrog : public TimeIntegrator {
 public:
-  Leapfrog(const MultibodySystem& system, double step, Eigen::VectorXd& y, double t0 = 0);
+  /// Steps of at most `step`, at most max_steps of them over the run, from y0 at t0.
+  Leapfrog(const MultibodySystem& system, double step, Eigen::VectorXd y0, long max_steps, double t0 = 0);
 
-  /// One step of at most `dt` from (t, y): y and t are updated in place.
-  void step(double& t, double dt);
-  /// A contact whose smallest gap changed sign in the last step, and when: the zero of the
-  /// gap interpolated linearly between the step's ends.
-  struct GapChange {
-    int contact;
-    bool closing;
-    double time;
-  };
-  const std::vector<GapChange>& gap_changes() const { return gap_changes_; }
-  double nominal_step() const { return step_; }
-  long steps() const { return steps_; }
-  long rhs_evaluations() const { return evaluations_; }
+  /// Equal steps of at most the nominal one that end at tout (the output times are sampled),
+  /// until tout or a step in which a contact's smallest gap changed sign: its zero is
+  /// interpolated linearly between the step's ends.
+  std::vector<GapEvent> advance(double tout, double& t) override;
+  IntegratorStats stats() const override;
 
 private:
+  /// One step of `dt` from (t, y): y and t are updated in place; the contacts whose gap
+  /// changed sign are added to `changed`.
+  void step(double& t, double dt, std::vector<GapEvent>& changed);
+
   const MultibodySystem& system_;
   double step_;
-  Eigen::VectorXd& y_;
   Eigen::VectorXd ydot_;                  ///< right-hand side at the current (t, y)
   std::vector<Eigen::Index> velocities_;  ///< entries of y that are velocities (integrated by kicks)
   std::vector<double> gaps_, new_gaps_;
-  std::vector<GapChange> gap_changes_;
   long steps_ = 0, evaluations_ = 0;
 };
 

@@ -39,7 +39,7 @@ std::string diverged_body(const MultibodySystem& system, const Eigen::VectorXd& 
 Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
     : scene_(std::move(scene)),
       system_(scene_, std::move(sids)),
-      integrator_(system_, scene_.simulation, initial_state(system_, scene_)) {
+      integrator_(make_integrator(system_, scene_.simulation, initial_state(system_, scene_))) {
   report_steps();
   refuse_implausible_penalties(system_, scene_);
   refuse_unstable_leapfrog_step(system_, scene_);
@@ -48,10 +48,10 @@ Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
 }
 
 Simulation::Simulation(Scene scene, std::vector<format::Sid> sids, double t0, const StartState& start_state)
-    : scene_(std::move(scene)), system_(scene_, std::move(sids)), integrator_(system_, scene_.simulation, estimated(start_state(system_)), t0),
+    : scene_(std::move(scene)), system_(scene_, std::move(sids)), integrator_(make_integrator(system_, scene_.simulation, estimated(start_state(system_)), t0)),
       t_(t0), continued_(true) {
-  if (integrator_.y().size() != system_.size())
-    throw format::ComputationError("a phase's start state has " + std::to_string(integrator_.y().size()) + " entries, its system " +
+  if (integrator_->y().size() != system_.size())
+    throw format::ComputationError("a phase's start state has " + std::to_string(integrator_->y().size()) + " entries, its system " +
                                    std::to_string(system_.size()));
   // the next output time after t0 (outputs stay on the scene's grid of multiples of the interval)
   const double dt_out = scene_.simulation.output_interval;
@@ -65,7 +65,7 @@ Eigen::VectorXd Simulation::estimated(Eigen::VectorXd y) {
 }
 
 void Simulation::report_steps() {
-  integrator_.on_step([this](double t, const double* y) {
+  integrator_->on_step([this](double t, const double* y) {
     system_.rearm_touches(y);
     if (collapse_) collapse_->observe(t);
     if (!observer_) return;
@@ -125,7 +125,7 @@ bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
       const double tout = std::min(end, double(next_output_) * dt_out);
       std::vector<TimeIntegrator::GapEvent> events;
       try {
-        events = integrator_.advance(tout, t_);
+        events = integrator_->advance(tout, t_);
       } catch (const StepInterrupt&) {
         report_gap_changes_at_interrupt(observer);
         observer.sample(t_, state().data());  // the results end at the step it stopped at

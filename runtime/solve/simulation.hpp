@@ -60,8 +60,8 @@ public:
   const MultibodySystem& system() const { return system_; }
   double time() const { return t_; }
   /// The whole system state at time().
-  const Eigen::VectorXd& state() const { return integrator_.y(); }
-  IntegratorStats stats() const { return integrator_.stats(); }
+  const Eigen::VectorXd& state() const { return integrator_->y(); }
+  IntegratorStats stats() const { return integrator_->stats(); }
 
   /// Reports the initial sample and the contacts that start closed; call once before advancing.
   void start(SimulationObserver& observer);
@@ -90,7 +90,7 @@ private:
 
   Scene scene_;
   MultibodySystem system_;
-  TimeIntegrator integrator_;
+  std::unique_ptr<TimeIntegrator> integrator_;
   double t_ = 0;
   long next_output_ = 1;   ///< index of the next output time (multiples of output_interval)
   SimulationObserver* observer_ = nullptr;  ///< receives the accepted steps of advance_to

@@ -1,14 +1,15 @@
-// Time integration of a MultibodySystem. SUNDIALS ARKODE: explicit Dormand-Prince 5(4)
-// (ERKStep) or an implicit DIRK method with a dense Newton solver (ARKStep), both adaptive
-// with a maximum step, and with root finding on the contact gaps so that contact onset and
-// release are located. Or the fixed-step leapfrog of solve/leapfrog ([R3] in docs/references.md).
+// Time integration of a MultibodySystem behind one interface: SUNDIALS ARKODE's adaptive
+// Dormand-Prince 5(4) and ESDIRK, with root finding on the contact gaps
+// (solve/arkode_integrator), or the fixed-step leapfrog of [R3] in docs/references.md
+// (solve/leapfrog). make_integrator gives the scene's; a new scheme is one more class and one
+// more case there.
 #pragma once
 #include "scene/scene.hpp"
-#include "solve/leapfrog.hpp"
 #include "solve/multibody_system.hpp"
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace isosid::run {
 
@@ -27,9 +28,7 @@ struct StepInterrupt {};
 
 class TimeIntegrator {
 public:
-  /// Starts at y0 at time t0 (a later phase of a run starts where the one before ended).
-  TimeIntegrator(const MultibodySystem& system, const SimulationSettings& settings, Eigen::VectorXd y0, double t0 = 0);
-  ~TimeIntegrator();
+  virtual ~TimeIntegrator() = default;
   TimeIntegrator(const TimeIntegrator&) = delete;
   TimeIntegrator& operator=(const TimeIntegrator&) = delete;
 
@@ -44,18 +43,22 @@ public:
     bool touch = false;  ///< the contact's exact surfaces (MultibodySystem::touch), not its Gauss points
   };
   /// Advances toward tout. Returns the contacts whose gap changed sign (empty if tout was
-  /// reached); t and y() hold the state reached. Throws ComputationError on failure.
-  std::vector<GapEvent> advance(double tout, double& t);
+  /// reached); t and y() hold the state reached. Throws ComputationError on failure, with t
+  /// and y() at the last accepted step.
+  virtual std::vector<GapEvent> advance(double tout, double& t) = 0;
   const Eigen::VectorXd& y() const { return y_; }
-  IntegratorStats stats() const;
+  virtual IntegratorStats stats() const = 0;
 
-private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;  ///< ARKODE (dopri5, implicit)
+protected:
+  TimeIntegrator(Eigen::VectorXd y0, long max_steps) : y_(std::move(y0)), max_steps_(max_steps) {}
   Eigen::VectorXd y_;
-  std::unique_ptr<Leapfrog> leapfrog_;  ///< or the leapfrog
-  long max_steps_;  ///< over the whole run (ARKODE counts per advance)
+  long max_steps_;  ///< over the whole run
   std::function<void(double, const double*)> step_callback_;
 };
+
+/// The scene's integrator, starting at y0 at time t0 (a later phase of a run starts where the
+/// one before ended).
+std::unique_ptr<TimeIntegrator> make_integrator(const MultibodySystem& system, const SimulationSettings& settings, Eigen::VectorXd y0,
+                                                double t0 = 0);
 
 }  // namespace isosid::run
