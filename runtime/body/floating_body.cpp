@@ -22,11 +22,11 @@ using format::skew;
 ModalMatrix::ModalMatrix(const MatrixXd& M) {
   // The SID's normal form is diagonal by construction; what its reduction leaves off the
   // diagonal is round-off of the orthogonalization, measured up to 2.4e-9 of sqrt(M_ii M_jj)
-  // (a Craig-Bampton beam, its interface modes at 1e16 beside normal modes at 1e9: relative to
-  // the largest entry that round-off would be 1e-12, relative to the small ones far more).
-  // Dropping entries below kRoundoff sqrt(M_ii M_jj) changes the scaled matrix
-  // D^-1/2 M D^-1/2 by at most n kRoundoff in norm (Gershgorin: 3e-6 at n = 300) and its
-  // eigenvalues only at second order.
+  // (a Craig-Bampton beam, its interface modes at 1e16 beside normal modes at 1e9; measured
+  // against the largest entry instead, that round-off is 1.4e-12 of it, and a bound there
+  // would have to grow with the spread of the diagonal). Dropping entries below
+  // kRoundoff sqrt(M_ii M_jj) changes the scaled matrix D^-1/2 M D^-1/2 by at most
+  // n kRoundoff in norm (Gershgorin: 3e-6 at n = 300) and its eigenvalues only at second order.
   constexpr double kRoundoff = 1e-8;
   const Index n = M.rows();
   const VectorXd root = M.diagonal().cwiseAbs().cwiseSqrt();

@@ -31,7 +31,7 @@ struct SparseRows {
 /// same coordinates, |S x| is below both the rows' largest Frobenius norm times |x| (over the
 /// columns they read) and the sum over columns of the largest column norm times |x_j|. The
 /// second is the tight one where the columns' scales differ by orders (a Craig-Bampton body:
-/// its interface modes' rows are a thousand times its normal modes').
+/// its interface modes' columns are thousands of times its normal modes').
 class RowsBound {
 public:
   void clear();
