@@ -29,6 +29,7 @@ ModalMatrix::ModalMatrix(const MatrixXd& M) {
   // n kRoundoff in norm (Gershgorin: 3e-6 at n = 300) and its eigenvalues only at second order.
   constexpr double kRoundoff = 1e-8;
   const Index n = M.rows();
+  if (n == 0) return;  // a rigid body's
   const VectorXd root = M.diagonal().cwiseAbs().cwiseSqrt();
   auto coupled = [&](Index i) {
     for (Index j = 0; j < n; ++j)
