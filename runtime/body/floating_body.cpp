@@ -214,20 +214,17 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   // mass matrix blocks at q (SID Taylor terms), into the preallocated workspace: the
   // right-hand side runs millions of times and must not allocate
   const double m = sid_.refmod.mass;
-  const Index ni = n_inertial_;
+  const Index ni = n_inertial_, nv = std::min(nd, ni);
   Vector3d mc;
-  sid_.mdCM.evaluate(qv, mc, ni, 3);
+  Matrix3d J;
   MatrixXd& B = B_;  // [Ct, Cr], each evaluated in place
   auto Ct = B.leftCols(3), Cr = B.rightCols(3);
-  // B's rows of the integrated modes, the only ones the equations read (the quasistatic
-  // modes carry no inertia): Ct and Cr from all coefficients, into nv of their rows; the same
-  // nv coordinates are the ones with velocities
-  const Index nv = std::min(nd, ni);
-  sid_.Ct.evaluate(qv, Ct, ni, nv);
+  inertia_at(qv, mc, Ct, Cr, J);
   Eigen::Matrix<double, 6, 6> A6 = Eigen::Matrix<double, 6, 6>::Zero();
   A6.topLeftCorner<3, 3>() = m * Matrix3d::Identity();
   A6.topRightCorner<3, 3>() = skew(mc).transpose();
   A6.bottomLeftCorner<3, 3>() = skew(mc);
+  A6.bottomRightCorner<3, 3>() = J;
 
   // right-hand side h = h_omega + h_g - h_e + applied (body components)
   const Vector3d gK = A.transpose() * gravity;
@@ -240,10 +237,6 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
   damping_.subtract_product(qd, hq);
   hq.noalias() += B.topLeftCorner(nd, 3) * gK;  // Ct g: gravity on the modes
   if (rotates_) {
-    sid_.Cr.evaluate(qv, Cr, ni, nv);
-    Matrix3d J;
-    sid_.J.evaluate(qv, J, ni, 3);
-    A6.bottomRightCorner<3, 3>() = J;
     const Matrix3d W = skew(w);
     Vector3d Ct_qdot;
     Ct_qdot.noalias() = Ct.topRows(nv).transpose() * qd.head(nv);  // into a fixed vector: no temporary
@@ -260,9 +253,6 @@ double FloatingBody::derivatives(const double* y, const GeneralizedForce& applie
     const Eigen::Map<const Matrix3d> Gr(gr.data());
     hr.tail<3>() += -W * (J * w) - Gr * w;
     add_rotation_loads(qv, qd, w, 0, hq);
-  } else {
-    Cr.setZero();
-    A6.bottomRightCorner<3, 3>() = sid_.J.M0;
   }
 
   // the rigid DOFs' Schur complement A6 - B^T B (Me = I), over the dynamic modes only
@@ -424,26 +414,34 @@ Eigen::VectorXd FloatingBody::modal_energies(const VectorXd& qv, const VectorXd&
   return 0.5 * (qd.head(n).array().square() + omega.square() * qv.head(n).array().square()).matrix();
 }
 
+void FloatingBody::inertia_at(const VectorXd& qv, Vector3d& mc, Eigen::Ref<MatrixXd> Ct, Eigen::Ref<MatrixXd> Cr, Matrix3d& J) const {
+  // the rows of the coordinates with velocities (nv: quasistatic modes and a massless boundary
+  // have none) from the coefficients that carry inertia (ni), so the terms cost O(ni nv) and
+  // not O(nq^2)
+  const Index ni = n_inertial_, nv = std::min(n_dynamic_, ni);
+  sid_.mdCM.evaluate(qv, mc, ni, 3);
+  sid_.Ct.evaluate(qv, Ct, ni, nv);
+  if (rotates_) {
+    sid_.Cr.evaluate(qv, Cr, ni, nv);
+    sid_.J.evaluate(qv, J, ni, 3);
+  } else {  // a frame that cannot turn: its rotation's coupling is never read
+    Cr.setZero();
+    J = sid_.J.M0;
+  }
+}
+
 double FloatingBody::kinetic_energy(const double* y) const {
   const VectorXd& qv = q(y);
   const VectorXd& qd = qdot(y);
   const Vector3d vK = orientation(y).toRotationMatrix().transpose() * v(y), w = omega(y);
-  // as in derivatives(): the inertia terms from the coefficients that carry inertia (ni), and
-  // only the rows of coordinates with velocities (nv; quasistatic modes and a massless
-  // boundary have none), so an output costs O(ni nv) and not O(nq^2)
-  const Index ni = n_inertial_, nv = std::min(n_dynamic_, ni);
+  const Index nv = std::min(n_dynamic_, n_inertial_);
   Vector3d mc;
-  sid_.mdCM.evaluate(qv, mc, ni, 3);
-  Eigen::Matrix<double, Eigen::Dynamic, 3> C(nv, 3);
-  sid_.Ct.evaluate(qv, C, ni, nv);
+  Matrix3d J;
+  Eigen::Matrix<double, Eigen::Dynamic, 3> Ct(nv, 3), Cr(nv, 3);
+  inertia_at(qv, mc, Ct, Cr, J);
   const auto qdv = qd.head(nv);
-  double T = 0.5 * sid_.refmod.mass * vK.squaredNorm() + 0.5 * qdv.squaredNorm() + vK.dot(C.transpose() * qdv);
-  if (rotates_) {
-    Matrix3d J;
-    sid_.J.evaluate(qv, J, ni, 3);
-    sid_.Cr.evaluate(qv, C, ni, nv);
-    T += 0.5 * w.dot(J * w) + vK.dot(skew(mc).transpose() * w) + w.dot(C.transpose() * qdv);
-  }
+  double T = 0.5 * sid_.refmod.mass * vK.squaredNorm() + 0.5 * qdv.squaredNorm() + vK.dot(Ct.transpose() * qdv);
+  if (rotates_) T += 0.5 * w.dot(J * w) + vK.dot(skew(mc).transpose() * w) + w.dot(Cr.transpose() * qdv);
   return T;
 }
 

@@ -196,6 +196,12 @@ private:
   };
   /// ydot's velocity rates from the generalized loads hr (rigid) and hd (dynamic modes).
   void accelerations_from(const Eigen::Matrix<double, 6, 1>& hr, const Eigen::Ref<const Eigen::VectorXd>& hd, double* d) const;
+  /// The mass matrix's floating-frame terms at q as the equations and the kinetic energy read
+  /// them: mc and J, and the leading rows of Ct and Cr (the coordinates with velocities), into
+  /// the caller's storage (the right-hand side must not allocate); Cr zero and J constant for a
+  /// frame that cannot turn.
+  void inertia_at(const Eigen::VectorXd& q, Eigen::Vector3d& mc, Eigen::Ref<Eigen::MatrixXd> Ct, Eigen::Ref<Eigen::MatrixXd> Cr,
+                  Eigen::Matrix3d& J) const;
   mutable MassFactor mass_;
   mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
   /// The terms of rotation_response_bound, formed once: the Frobenius norms of Ge's, Oe0's
