@@ -78,7 +78,7 @@ output_interval = 0.5e-6
 [[flexible_body]]
 name = "sphere"
 sid = "sphere.sid.h5"
-model = "sphere_seed003_macneal.model.toml"
+model = "sphere_impactor_macneal.model.toml"
 position = [0.05, 0.015550001, 0.0075]
 velocity = )" + velocity + R"(
 [[flexible_body]]

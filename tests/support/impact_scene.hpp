@@ -10,7 +10,7 @@ namespace isosid::test {
 /// the centre of its top face, a MacNeal model whose massless boundary is the contact surface
 /// "impact" there.
 std::string free_beam_model();
-/// models/sphere_seed003_macneal.model.toml's sphere (sphere.sid.h5) dropped on that beam
+/// models/sphere_impactor_macneal.model.toml's sphere (sphere.sid.h5) dropped on that beam
 /// (beam.model.toml, beam.sid.h5) at `velocity` (m/s, world; its y the approach), its lower pole
 /// 1 nm above the centre of the top face; 40 us of the leapfrog at 0.1 us. The text ends in
 /// the contact's table, followed by `contact_lines`.
