@@ -7,13 +7,26 @@
 
 #include <Eigen/CholmodSupport>
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
 
 namespace isosid::prep {
 
 struct SparseCholesky::Impl {
   /// Eigen's supernodal LL^T, with access to CHOLMOD's factor for the half solves
   struct Llt : Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> {
-    double factor_bytes() const { return m_cholmodFactor ? double(m_cholmodFactor->xsize) * sizeof(double) : 0.0; }
+    /// What the numeric factorization of A allocates beyond what is held already (its integer
+    /// pattern is the analysis's): the factor's values, the largest supernodal update matrix,
+    /// the permuted copy of A's lower triangle that CHOLMOD factors (values and row indices)
+    /// and its maps of n entries.
+    double factorization_bytes(const Eigen::SparseMatrix<double>& A) const {
+      if (!m_cholmodFactor) return 0.0;
+      double lower = 0;
+      for (Eigen::Index c = 0; c < A.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(A, c); it; ++it) lower += it.row() >= c;
+      return double(m_cholmodFactor->xsize + m_cholmodFactor->maxcsize) * sizeof(double) +
+             lower * double(sizeof(double) + sizeof(int)) + double(A.rows()) * 4 * sizeof(std::int64_t);
+    }
     cholmod_factor* factor() const { return m_cholmodFactor; }
   };
   mutable Llt llt;
@@ -46,11 +59,25 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& A, const std::
   use_single_threaded_blas();
   impl_->llt.cholmod().print = 0;  // failures become the exception below, not text on stdout (which may be JSON)
   impl_->llt.analyzePattern(A);
-  check_memory("refinement", what + " of " + std::to_string(A.rows()) + " DOFs", impl_->llt.factor_bytes());
+  const std::string size = what + " of " + std::to_string(A.rows()) + " DOFs";
+  cholmod_common& common = impl_->llt.cholmod();
+  if (!impl_->llt.factor()) {
+    // the analysis allocates no factor where its size overflows CHOLMOD's 32-bit indices
+    // (2^31 entries) or memory ran out; its count of the factor's entries is then the estimate
+    char estimate[96] = "";
+    if (common.lnz > 0)
+      std::snprintf(estimate, sizeof estimate, ": its factor holds about %.3g entries (%.3g GiB)", common.lnz,
+                    common.lnz * sizeof(double) / 1073741824.0);
+    throw MemoryRefusal("refinement", size + (common.status == CHOLMOD_TOO_LARGE ? " is beyond CHOLMOD's 32-bit indices (2^31 entries)"
+                                                                                : " ran out of memory in CHOLMOD's analysis") + estimate);
+  }
+  check_memory("refinement", size, impl_->llt.factorization_bytes(A));
   {
-    const ParallelBlas threads(impl_->llt.cholmod().fl);  // the analysis's count of the factorization's flops
+    const ParallelBlas threads(common.fl);  // the analysis's count of the factorization's flops
     impl_->llt.factorize(A);
   }
+  if (common.status == CHOLMOD_OUT_OF_MEMORY || common.status == CHOLMOD_TOO_LARGE)
+    throw format::ComputationError("CHOLMOD: " + size + " ran out of memory");
   if (impl_->llt.info() != Eigen::Success)
     throw format::ComputationError("CHOLMOD: the matrix is not positive definite (is the body free of constraints?)");
 }

@@ -5,10 +5,12 @@
 #include "reduce/craig_bampton.hpp"
 #include "reduce/modal_analysis.hpp"
 #include "reduce/reduction.hpp"
+#include "reduce/memory_budget.hpp"
 #include "reduce/sparse_cholesky.hpp"
 #include "preprocess/body_fixtures.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <SuiteSparse_config.h>
 #include <catch2/catch.hpp>
 #include <random>
 
@@ -71,6 +73,45 @@ TEST_CASE("modal, Craig-Bampton and full bases are orthonormal, diagonal and in 
     CHECK(c.removed_rigid == 1);
     check_basis(f, c);
   }
+}
+
+TEST_CASE("SparseCholesky: an analysis that CHOLMOD cannot allocate is refused, its factor never read", "[reduction]") {
+  // A body beyond CHOLMOD's 32-bit indices (2^31 factor entries) or the memory leaves the
+  // analysis without a factor; reading it crashed a 1e6-DOF bar. SuiteSparse's allocator
+  // failing here does the same to a small matrix.
+  const Eigen::Index n = 40;
+  Eigen::SparseMatrix<double> A(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    A.insert(i, i) = 2.0;
+    if (i > 0) A.insert(i, i - 1) = A.insert(i - 1, i) = -1.0;
+  }
+  struct FailingAllocator {
+    decltype(SuiteSparse_config.malloc_func) malloc_func = SuiteSparse_config.malloc_func;
+    decltype(SuiteSparse_config.calloc_func) calloc_func = SuiteSparse_config.calloc_func;
+    decltype(SuiteSparse_config.realloc_func) realloc_func = SuiteSparse_config.realloc_func;
+    FailingAllocator() {
+      SuiteSparse_config.malloc_func = [](std::size_t) -> void* { return nullptr; };
+      SuiteSparse_config.calloc_func = [](std::size_t, std::size_t) -> void* { return nullptr; };
+      SuiteSparse_config.realloc_func = [](void*, std::size_t) -> void* { return nullptr; };
+    }
+    ~FailingAllocator() {
+      SuiteSparse_config.malloc_func = malloc_func;
+      SuiteSparse_config.calloc_func = calloc_func;
+      SuiteSparse_config.realloc_func = realloc_func;
+    }
+  };
+  {
+    const FailingAllocator failing;
+    try {
+      const prep::SparseCholesky refused(A, "the test's factorization");
+      FAIL("the factorization went on without a factor");
+    } catch (const prep::MemoryRefusal& e) {
+      CHECK(e.field() == "refinement");
+      CHECK_THAT(e.what(), Catch::Matchers::Contains("the test's factorization of 40 DOFs ran out of memory in CHOLMOD's analysis"));
+    }
+  }
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(n);
+  CHECK((A * prep::SparseCholesky(A).solve(ones) - ones).norm() < 1e-12);  // the allocator back, it factors
 }
 
 TEST_CASE("Craig-Bampton reproduces the full static deflection under interface loads", "[reduction]") {
