@@ -297,6 +297,38 @@ TEST_CASE("ModalMatrix: products and quadratic forms equal the dense matrix's, d
   }
 }
 
+TEST_CASE("CondensedEnergy: the condensed form is the dense energy, in contact and while the held coordinates follow", "[runtime][unit]") {
+  // K of a MacNeal SID's shape: d integrated modes coupled densely to h held coordinates, all
+  // positive definite. For any q the split form equals 1/2 q^T K q to the sums' round-off; where
+  // the held coordinates follow the modes statically (q_h = -K_hh^-1 K_hd q_d, up to a rounding
+  // of q_h) the skipped h x h form would add less than 1e-15 of the energy.
+  const Eigen::Index d = 6, h = 30, n = d + h;
+  Eigen::MatrixXd A = Eigen::MatrixXd::Random(n, n);
+  const Eigen::MatrixXd K = A * A.transpose() + double(n) * Eigen::MatrixXd::Identity(n, n);
+  const auto split = run::CondensedEnergy::of(K, d);
+  REQUIRE(split);
+  const double scale = K.cwiseAbs().maxCoeff();
+  const Eigen::VectorXd loaded = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  CHECK(std::abs((*split)(loaded) - 0.5 * loaded.dot(K * loaded)) <= 1e-14 * scale * loaded.squaredNorm() * double(n));
+  Eigen::VectorXd following(n);
+  following.head(d) = Eigen::VectorXd::LinSpaced(d, 1.0, 2.0);
+  following.tail(h) = -K.bottomRightCorner(h, h).llt().solve(K.bottomLeftCorner(h, d) * following.head(d));
+  following.tail(h) *= 1.0 + 1e-16;  // the static solve's rounding: r is round-off, its form is skipped
+  const double dense = 0.5 * following.dot(K * following);
+  CHECK(std::abs((*split)(following) - dense) <= 1e-13 * std::abs(dense));
+  // no split without held or integrated coordinates, without coupling, or with a held block
+  // that is not positive definite
+  CHECK_FALSE(run::CondensedEnergy::of(K, 0));
+  CHECK_FALSE(run::CondensedEnergy::of(K, n));
+  Eigen::MatrixXd uncoupled = K;
+  uncoupled.bottomLeftCorner(h, d).setZero();
+  uncoupled.topRightCorner(d, h).setZero();
+  CHECK_FALSE(run::CondensedEnergy::of(uncoupled, d));
+  Eigen::MatrixXd indefinite = K;
+  indefinite(n - 1, n - 1) = -1.0;
+  CHECK_FALSE(run::CondensedEnergy::of(indefinite, d));
+}
+
 TEST_CASE("FloatingBody: the kinetic energy is the SID's mass matrix form over all coordinates", "[runtime][unit]") {
   // T = 1/2 [v; w; qdot]^T M(q) [v; w; qdot] with M's Taylor terms summed over all coordinates
   // (quasistatic ones set too); the body forms it from the rows with velocities and the
