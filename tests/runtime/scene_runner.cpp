@@ -1,8 +1,13 @@
-// Test helpers running isosid-run; see scene_runner.hpp.
+// Test helpers running scenes; see scene_runner.hpp.
 #include "scene_runner.hpp"
+
+#include "isosid/common/cli_guard.hpp"
+#include "output/run_folder.hpp"
+#include "pipeline/run_scene.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -10,12 +15,21 @@
 namespace isosid::test {
 
 namespace {
+/// The scene file run in this process through the pipeline isosid-run calls (run::run_scene),
+/// its exit status as isosid-run would give it; the command line's own exit codes, signals
+/// and messages are tested on the program itself (run_program).
 nlohmann::json run_file(const ScratchDir& dir, const std::string& scene, int expected_status) {
-  const auto r = run_program("ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_RUN_EXE + " -q --json " +
-                             dir.path(scene) + " -o " + dir.path("out-" + scene));
-  INFO(r.err);
-  REQUIRE(r.exit_status == expected_status);
-  return expected_status == 0 ? nlohmann::json::parse(r.out) : nlohmann::json();
+  setenv("ISOSID_PREP", ISOSID_PREP_EXE, 1);  // models are prepared by this build's isosid-prep
+  nlohmann::json summary;
+  const int status = common::run_guarded("isosid-run", [&] {
+    run::Scene parsed = run::read_scene_file(dir.path(scene));
+    run::RunFolder folder(dir.path("out-" + scene), parsed);
+    const run::RunResult result = run::run_scene(std::move(parsed), folder, run::RunOptions{true});
+    summary = result.summary;
+    return result.outcome.completed() ? 0 : common::kExitFailure;
+  });
+  REQUIRE(status == expected_status);
+  return expected_status == 0 ? summary : nlohmann::json();
 }
 }  // namespace
 

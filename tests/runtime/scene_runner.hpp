@@ -1,5 +1,5 @@
-// Running isosid-run from tests: scenes given as text or copied from models/, SIDs built from
-// their model files through isosid-prep (ISOSID_PREP), the JSON summary parsed.
+// Running scenes from tests, in process through the library's pipeline: scenes given as text or
+// copied from models/, SIDs built from their model files through isosid-prep (ISOSID_PREP).
 #pragma once
 #include "support/run_program.hpp"
 #include "support/scene_text.hpp"
@@ -9,7 +9,8 @@
 
 namespace isosid::test {
 
-/// Writes `text` as dir/s.scene.toml, runs it and returns the summary (null unless it succeeded).
+/// Writes `text` as dir/s.scene.toml, runs it and returns its summary (null unless it
+/// succeeded); `expected_status`: the exit status isosid-run would give (2 bad input, 1 failed).
 nlohmann::json run_scene(const ScratchDir& dir, const std::string& text, int expected_status = 0);
 /// Copies a file of models/ into dir.
 void copy_model_file(const ScratchDir& dir, const std::string& file);
