@@ -3,9 +3,9 @@
 // exactness and eigenvalue bounds (Rayleigh-Ritz).
 #include "geometry/primitives.hpp"
 #include "reduce/craig_bampton.hpp"
+#include "reduce/memory_budget.hpp"
 #include "reduce/modal_analysis.hpp"
 #include "reduce/reduction.hpp"
-#include "reduce/memory_budget.hpp"
 #include "reduce/sparse_cholesky.hpp"
 #include "preprocess/body_fixtures.hpp"
 
@@ -77,8 +77,8 @@ TEST_CASE("modal, Craig-Bampton and full bases are orthonormal, diagonal and in 
 
 TEST_CASE("SparseCholesky: an analysis that CHOLMOD cannot allocate is refused, its factor never read", "[reduction]") {
   // A body beyond CHOLMOD's 32-bit indices (2^31 factor entries) or the memory leaves the
-  // analysis without a factor; reading it crashed a 1e6-DOF bar. SuiteSparse's allocator
-  // failing here does the same to a small matrix.
+  // analysis without a factor, which must be refused with the size, not read. SuiteSparse's
+  // allocator failing does the same to a small matrix.
   const Eigen::Index n = 40;
   Eigen::SparseMatrix<double> A(n, n);
   for (Eigen::Index i = 0; i < n; ++i) {
