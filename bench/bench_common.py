@@ -2,10 +2,14 @@
 replacing one named section of bench/RESULTS.md."""
 import datetime
 import json
+import math
 import os
 import platform
 import re
+import selectors
 import subprocess
+import tempfile
+import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.environ.get("ISOSID_BUILD", os.path.join(ROOT, "build"))  # ctest points this at its build
@@ -43,6 +47,47 @@ def run_scene(scene, out):
     for the models it prepares; returns the run's summary."""
     return run_json([os.path.join(BUILD, "runtime", "isosid-run"), "-q", "--json", scene, "-o", out],
                     env=dict(os.environ, ISOSID_PREP=os.path.join(BUILD, "preprocess", "isosid-prep")))
+
+
+def run_prep(build, model, sid, timeout=math.inf):
+    """Runs the build's isosid-prep on a model file into `sid`, stopped after `timeout` seconds.
+    Returns a dict: 'lines' (stderr's lines, each with its time since the start), 'status' (as
+    os.wait4 gives it), 'timed_out', 'wall', 'cpu' (user + system), 'rss' (peak, MiB), 'stages'
+    (the seconds of each stage isosid-prep reports), 'dofs', 'nq' (low, high)."""
+    # stdout into a file and stderr read to its end before waiting: the child's own rusage
+    # (os.wait4) needs the wait, and a full pipe would block the child
+    with tempfile.TemporaryFile("w+") as out_file:
+        start = time.perf_counter()
+        proc = subprocess.Popen([os.path.join(build, "preprocess", "isosid-prep"), model, "-o", sid],
+                                stdout=out_file, stderr=subprocess.PIPE, text=True, bufsize=1)
+        lines, timed_out = [], False
+        selector = selectors.DefaultSelector()
+        selector.register(proc.stderr, selectors.EVENT_READ)
+        while True:
+            left = timeout - (time.perf_counter() - start)
+            if left <= 0:
+                timed_out = True
+                proc.kill()
+                break
+            if not selector.select(timeout=min(left, 5.0)):
+                continue
+            line = proc.stderr.readline()
+            if not line:
+                break
+            lines.append((time.perf_counter() - start, line.rstrip("\n")))
+        _, status, rusage = os.wait4(proc.pid, 0)
+        wall = time.perf_counter() - start
+        out_file.seek(0)
+        out = out_file.read()
+    err = "\n".join(text for _, text in lines)
+    dofs = re.search(r"(\d+) free DOFs", out + err)
+    nq = re.search(r"nq = (\d+) \((\d+) low \+ (\d+) high\)", out)
+    return {
+        "lines": lines, "status": status, "timed_out": timed_out, "wall": wall,
+        "cpu": rusage.ru_utime + rusage.ru_stime, "rss": rusage.ru_maxrss / 1024.0,
+        "stages": {m.group(1): float(m.group(2)) for m in re.finditer(r"isosid-prep: (\w+) done in ([0-9.]+) s", err)},
+        "dofs": int(dofs.group(1)) if dofs else 0, "nq": (int(nq.group(2)), int(nq.group(3))) if nq else (0, 0),
+    }
 
 
 def update_section(name, body):
