@@ -1,80 +1,53 @@
-// SHA-256 after FIPS 180-4, section 6.2.
+// SHA-256 by OpenSSL's EVP digest interface; see sha256.hpp.
 #include "isosid/common/sha256.hpp"
 
 #include "isosid/format/error.hpp"
 
-#include <array>
-#include <cstdint>
+#include <openssl/evp.h>
+
 #include <fstream>
+#include <stdexcept>
 
 namespace isosid::common {
+
+struct Sha256::Context {
+  EVP_MD_CTX* ctx = EVP_MD_CTX_new();
+  bool spent = false;
+  ~Context() { EVP_MD_CTX_free(ctx); }
+};
+
 namespace {
-
-constexpr std::array<uint32_t, 64> kRoundConstants = {
-    0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5, 0xd807aa98, 0x12835b01,
-    0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174, 0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc,
-    0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da, 0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147,
-    0x06ca6351, 0x14292967, 0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
-    0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070, 0x19a4c116, 0x1e376c08,
-    0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3, 0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208,
-    0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
-
-uint32_t rotr(uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
-
-void compress(std::array<uint32_t, 8>& h, const unsigned char* block) {
-  uint32_t w[64];
-  for (int i = 0; i < 16; ++i)
-    w[i] = uint32_t(block[4 * i]) << 24 | uint32_t(block[4 * i + 1]) << 16 | uint32_t(block[4 * i + 2]) << 8 | block[4 * i + 3];
-  for (int i = 16; i < 64; ++i) {
-    const uint32_t s0 = rotr(w[i - 15], 7) ^ rotr(w[i - 15], 18) ^ (w[i - 15] >> 3);
-    const uint32_t s1 = rotr(w[i - 2], 17) ^ rotr(w[i - 2], 19) ^ (w[i - 2] >> 10);
-    w[i] = w[i - 16] + s0 + w[i - 7] + s1;
-  }
-  uint32_t a = h[0], b = h[1], c = h[2], d = h[3], e = h[4], f = h[5], g = h[6], hh = h[7];
-  for (int i = 0; i < 64; ++i) {
-    const uint32_t t1 = hh + (rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25)) + ((e & f) ^ (~e & g)) + kRoundConstants[std::size_t(i)] + w[i];
-    const uint32_t t2 = (rotr(a, 2) ^ rotr(a, 13) ^ rotr(a, 22)) + ((a & b) ^ (a & c) ^ (b & c));
-    hh = g;
-    g = f;
-    f = e;
-    e = d + t1;
-    d = c;
-    c = b;
-    b = a;
-    a = t1 + t2;
-  }
-  h[0] += a, h[1] += b, h[2] += c, h[3] += d, h[4] += e, h[5] += f, h[6] += g, h[7] += hh;
+// libcrypto fails only when it cannot allocate or has no SHA-256: neither is the input's fault
+void require(int ok, const char* what) {
+  if (ok != 1) throw std::runtime_error(std::string("SHA-256: libcrypto's ") + what + " failed");
 }
-
 }  // namespace
 
-void Sha256::compress_buffer() {
-  compress(state_, buffer_.data());
-  buffered_ = 0;
+Sha256::Sha256() : context_(std::make_unique<Context>()) {
+  if (!context_->ctx) throw std::bad_alloc();
+  require(EVP_DigestInit_ex(context_->ctx, EVP_sha256(), nullptr), "EVP_DigestInit_ex");
 }
+Sha256::~Sha256() = default;
+Sha256::Sha256(Sha256&&) noexcept = default;
+Sha256& Sha256::operator=(Sha256&&) noexcept = default;
 
 void Sha256::update(std::string_view bytes) {
-  message_bytes_ += bytes.size();
-  for (const char c : bytes) {
-    buffer_[buffered_++] = static_cast<unsigned char>(c);
-    if (buffered_ == buffer_.size()) compress_buffer();
-  }
+  if (context_->spent) throw std::logic_error("SHA-256: update after hex_digest");
+  require(EVP_DigestUpdate(context_->ctx, bytes.data(), bytes.size()), "EVP_DigestUpdate");
 }
 
 std::string Sha256::hex_digest() {
-  const uint64_t bits = message_bytes_ * 8;
-  buffer_[buffered_++] = 0x80;
-  if (buffered_ > 56) {
-    while (buffered_ < 64) buffer_[buffered_++] = 0;
-    compress_buffer();
-  }
-  while (buffered_ < 56) buffer_[buffered_++] = 0;
-  for (int i = 7; i >= 0; --i) buffer_[buffered_++] = static_cast<unsigned char>((bits >> (8 * i)) & 0xff);
-  compress_buffer();
+  if (context_->spent) throw std::logic_error("SHA-256: hex_digest called twice");
+  unsigned char digest[EVP_MAX_MD_SIZE];
+  unsigned int length = 0;
+  require(EVP_DigestFinal_ex(context_->ctx, digest, &length), "EVP_DigestFinal_ex");
+  context_->spent = true;
   static const char* hex = "0123456789abcdef";
   std::string out;
-  for (uint32_t v : state_)
-    for (int i = 7; i >= 0; --i) out.push_back(hex[(v >> (4 * i)) & 0xf]);
+  for (unsigned int i = 0; i < length; ++i) {
+    out.push_back(hex[digest[i] >> 4]);
+    out.push_back(hex[digest[i] & 0xf]);
+  }
   return out;
 }
 
@@ -88,7 +61,7 @@ std::string sha256_file(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   if (!f) throw format::InputError(path, "", "cannot be read");
   Sha256 hasher;
-  std::string chunk(std::size_t{1} << 16, '\0');
+  std::string chunk(std::size_t{1} << 20, '\0');
   while (f.read(chunk.data(), std::streamsize(chunk.size())) || f.gcount() > 0)
     hasher.update(std::string_view(chunk.data(), std::size_t(f.gcount())));
   if (f.bad()) throw format::InputError(path, "", "cannot be read");
