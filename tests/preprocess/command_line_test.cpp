@@ -98,3 +98,31 @@ TEST_CASE("isosid-prep names the reduction's steps in its progress, one line per
   for (std::size_t at = r.err.find("Lanczos"); at != std::string::npos; at = r.err.find("Lanczos", at + 1)) ++lanczos;
   CHECK(lanczos <= 2);
 }
+
+namespace {
+/// The kernel set OpenBLAS reported last on stderr ("Core: ..." under OPENBLAS_VERBOSE=2,
+/// printed at each load: before and after isosid-prep reruns itself), empty without one.
+std::string last_openblas_core(const std::string& err) {
+  const auto at = err.rfind("Core: ");
+  if (at == std::string::npos) return "";
+  return err.substr(at + 6, err.find('\n', at) - at - 6);
+}
+}  // namespace
+
+TEST_CASE("isosid-prep runs OpenBLAS's kernels for this CPU, not its fallback, unless the user chose one", "[prep][command-line]") {
+  // Debian 12's OpenBLAS falls back to its SSE3 (Prescott) kernels on CPUs newer than its
+  // release, 2.4x slower in the factorizations
+  const auto chosen = test::run_program("env -u OPENBLAS_CORETYPE OPENBLAS_VERBOSE=2 " + kPrep + " --version");
+  REQUIRE(chosen.exit_status == 0);
+  CHECK_THAT(chosen.out, Catch::Matchers::StartsWith("isosid-prep "));
+  const std::string core = last_openblas_core(chosen.err);
+  if (core.empty()) {
+    WARN("the BLAS is not a DYNAMIC_ARCH OpenBLAS: nothing to choose");
+    return;
+  }
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) CHECK(core != "Prescott");
+  const auto user = test::run_program("OPENBLAS_CORETYPE=Prescott OPENBLAS_VERBOSE=2 " + kPrep + " --version");
+  CHECK(user.exit_status == 0);
+  CHECK(last_openblas_core(user.err) == "Prescott");
+}
