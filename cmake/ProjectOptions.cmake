@@ -55,3 +55,13 @@ function(isosid_precompiled_headers target)
     target_compile_options(${target} PRIVATE -Wno-stringop-overflow -Wno-array-bounds)
   endif()
 endfunction()
+
+# add_subdirectory for each named part that this checkout has (a part may be left out of a
+# source package)
+function(isosid_add_existing_subdirectories)
+  foreach(part ${ARGN})
+    if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/${part}/CMakeLists.txt)
+      add_subdirectory(${part})
+    endif()
+  endforeach()
+endfunction()
