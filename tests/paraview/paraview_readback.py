@@ -24,6 +24,9 @@ import numpy as np
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
+# the scene and model fixtures the C++ tests share
+SCENES = Path(__file__).resolve().parent.parent / "scenes"
+
 failures = []
 
 
@@ -175,73 +178,18 @@ def main():
         (work / "sphere.model.toml").write_text(model)
         run(prep, "-q", work / "sphere.model.toml", "-o", work / "sphere.sid.h5")
         check_modes(info, work / "sphere.sid.h5", work, "sphere_small")
-        (work / "impact.scene.toml").write_text(f"""
-[simulation]
-dimension = "axisymmetric"
-end_time = 60e-6
-rtol = 1e-6
-atol = 1e-12
-output_interval = 1e-6
-[output]
-paraview = true
-paraview_interval = 3e-6
-[[flexible_body]]
-name = "sphere"
-sid = "sphere.sid.h5"
-position = [0.0, 0.0100001, 0.0]
-velocity = [0.0, -0.1, 0.0]
-high_modes = "quasistatic"
-[[fixed_plane]]
-name = "ground"
-normal = [0.0, 1.0, 0.0]
-[[contact]]
-name = "impact"
-body = "sphere"
-surface = "contact"
-target = "ground"
-penalty = 5e17
-""")
+        # the golden impact with ParaView frames every 3 us, for 60 us
+        scene = (SCENES / "golden_impact.scene.toml").read_text().replace("@SID@", "sphere.sid.h5")
+        assert "end_time = 100e-6" in scene
+        scene = scene.replace("end_time = 100e-6", "end_time = 60e-6") + "[output]\nparaview = true\nparaview_interval = 3e-6\n"
+        (work / "impact.scene.toml").write_text(scene)
         run(isosid_run, "-q", work / "impact.scene.toml", "-o", work / "impact")
         check_run(work / "impact", work / "sphere.sid.h5", "sphere", "impact", 9)
 
         # a 3D ball, spinning and vibrating freely (rotation, hexahedra, degenerate poles)
-        (work / "ball.model.toml").write_text("""
-[body]
-name = "ball"
-analysis = "solid"
-[material]
-youngs_modulus = 7.28e10
-poisson_ratio = 0.33
-density = 2789.0
-[geometry]
-primitive = "ball"
-radius = 0.01
-[refinement]
-degrees = [2, 2, 2]
-subdivisions = [2, 2, 2]
-[reduction]
-method = "modal"
-normal_modes = 6
-[visual]
-subdivisions = 1
-""")
+        (work / "ball.model.toml").write_text((SCENES / "paraview_ball.model.toml").read_text())
         run(prep, "-q", work / "ball.model.toml", "-o", work / "ball.sid.h5")
-        (work / "spin.scene.toml").write_text("""
-[simulation]
-dimension = "3d"
-end_time = 40e-6
-output_interval = 2e-6
-[output]
-paraview = true
-[[flexible_body]]
-name = "ball"
-sid = "ball.sid.h5"
-position = [0.1, 0.2, -0.3]
-orientation = [0.3, -0.2, 0.5]
-velocity = [1.0, 0.5, -0.25]
-angular_velocity = [2000.0, -1500.0, 3000.0]
-q0 = [1e-6, -2e-6, 0.5e-6, 3e-6, 0.0, -1e-6]
-""")
+        (work / "spin.scene.toml").write_text((SCENES / "paraview_spin.scene.toml").read_text())
         run(isosid_run, "-q", work / "spin.scene.toml", "-o", work / "spin")
         check_run(work / "spin", work / "ball.sid.h5", "ball", None, 12)
     finally:

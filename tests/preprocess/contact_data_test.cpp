@@ -10,6 +10,7 @@
 #include "preprocess/body_fixtures.hpp"
 #include "reduce/sparse_cholesky.hpp"
 #include "support/run_program.hpp"
+#include "support/scene_text.hpp"
 
 #include <catch2/catch.hpp>
 #include <fstream>
@@ -117,33 +118,7 @@ TEST_CASE("a Craig-Bampton SID marks the contact points its interface covers: a 
   // case the runtime warns of where in_interface = 0 (the block, unlike a slender beam, takes
   // a point load mostly locally).
   const test::ScratchDir dir("interface-coverage");
-  std::ofstream(dir.path("block.model.toml")) << R"(
-[body]
-name = "block"
-analysis = "plane_stress"
-thickness = 0.01
-[material]
-youngs_modulus = 2.1e11
-poisson_ratio = 0.3
-density = 7850.0
-[geometry]
-primitive = "rectangle"
-size = [0.05, 0.05]
-[refinement]
-degrees = [3, 3]
-subdivisions = [16, 8]
-[boundary]
-clamped = ["eta0"]
-[[contact_surface]]
-name = "top"
-side = "eta1"
-[reduction]
-method = "craig-bampton"
-normal_modes = 4
-interface_surface = "top"
-interface_points = 12
-interface_center = [0.5]
-)";
+  std::ofstream(dir.path("block.model.toml")) << test::scene_fixture("clamped_block_cb.model.toml");
   const auto spec = prep::read_model_file(dir.path("block.model.toml"));
   const auto b = prep::build_body(spec);
   const auto sys = prep::assemble_system(b.space, b.dofs, b.elasticity);

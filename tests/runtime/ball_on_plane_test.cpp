@@ -14,38 +14,11 @@ using test::replace;
 
 namespace {
 
-// The shipped 3D sphere (steel, r = 5.55 mm, MacNeal) falling at 1.1 m/s on its lower pole.
-const char* kBallScene = R"([simulation]
-dimension = "3d"
-end_time = 40e-6
-integrator = "leapfrog"
-step = 0.02e-6
-output_interval = 0.1e-6
 
-[[flexible_body]]
-name = "sphere"
-sid = "MODEL.sid.h5"
-model = "MODEL.model.toml"
-position = [0.0, 0.005550001, 0.0]
-velocity = [0.0, -1.1, 0.0]
 
-[[fixed_plane]]
-name = "ground"
-point = [0.0, 0.0, 0.0]
-normal = [0.0, 1.0, 0.0]
-
-[[contact]]
-name = "impact"
-body = "sphere"
-surface = "contact"
-target = "ground"
-)";
-
-std::string ball_scene(const std::string& model) {
-  std::string s = kBallScene;
-  for (std::size_t at; (at = s.find("MODEL")) != std::string::npos;) s.replace(at, 5, model);
-  return s;
-}
+// The shipped 3D sphere (steel, r = 5.55 mm, MacNeal), its model `model`, falling at 1.1 m/s
+// on its lower pole onto a plane.
+std::string ball_scene(const std::string& model) { return test::scene_fixture("ball_on_ground.scene.toml", {{"@MODEL@", model}}); }
 
 // The same sphere as an axisymmetric section with its contact elements at a/8 in both
 // directions (the model validated against a finite-sphere FE reference), on the same plane.

@@ -2,6 +2,7 @@
 // and a free rigid sphere (Hertz with the combined radius and mass), a fixed cylinder hit
 // obliquely (mirror reflection about the line of centres), a free rigid box (momentum).
 #include "scene_runner.hpp"
+#include "support/scene_text.hpp"
 
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
@@ -30,20 +31,12 @@ Hertz hertz_on_rigid(double r2, double m_star, double v) {
 }
 
 std::string sphere_scene(double end_time, const std::string& more) {
-  return R"([simulation]
-dimension = "axisymmetric"
-end_time = )" + std::to_string(end_time) + R"(
-rtol = 1e-6
-atol = 1e-12
-output_interval = 1e-6
-[[flexible_body]]
-name = "sphere"
-sid = "sphere_axisym.sid.h5"
-model = "sphere_axisym.model.toml"
-position = [0.0, 0.0100001, 0.0]
-velocity = [0.0, -0.1, 0.0]
-high_modes = "quasistatic"
-)" + more;
+  return test::scene_fixture("axisym_sphere_drop.scene.toml", {{"@END_TIME@", std::to_string(end_time)}}) + more;
+}
+
+/// The contact of `body`'s surface "contact" with `target`, at `penalty` (N/m^3, as text).
+std::string contact_with(const std::string& body, const std::string& target, const std::string& penalty) {
+  return "[[contact]]\nname = \"impact\"\nbody = \"" + body + "\"\nsurface = \"contact\"\ntarget = \"" + target + "\"\npenalty = " + penalty + "\n";
 }
 
 const json& contact(const json& s) { return s["contacts"][0]; }
@@ -62,13 +55,7 @@ TEST_CASE("a sphere on a fixed sphere follows Hertz with the combined radius", "
 name = "knob"
 center = [0.0, -0.01, 0.0]
 radius = 0.01
-[[contact]]
-name = "impact"
-body = "sphere"
-surface = "contact"
-target = "knob"
-penalty = 5e18
-)"));
+)" + contact_with("sphere", "knob", "5e18")));
   const Hertz h = hertz_on_rigid(0.01, kMass, 0.1);
   // the same discretization meets Hertz on a plane to 0.04 % (force) and 0.8 % (time); the
   // contact here is wider (rigid partner), so allow the acceptance's 2 %
@@ -80,20 +67,9 @@ penalty = 5e18
 TEST_CASE("a sphere on a free rigid sphere: Hertz with the reduced mass, momentum exchanged", "[runtime][targets]") {
   const test::ScratchDir dir("target-rigid-sphere");
   test::copy_model_file(dir, "sphere_axisym.model.toml");
-  const json s = test::run_scene(dir, sphere_scene(130e-6, R"(
-[[rigid_body]]
-name = "ball"
-shape = "sphere"
-radius = 0.01
-density = 2789.0
-position = [0.0, -0.01, 0.0]
-[[contact]]
-name = "impact"
-body = "sphere"
-surface = "contact"
-target = "ball"
-penalty = 5e18
-)"));
+  // an aluminium ball of the sphere's size and mass, resting below it
+  const std::string ball = "[[rigid_body]]\nname = \"ball\"\nshape = \"sphere\"\nradius = 0.01\ndensity = 2789.0\nposition = [0.0, -0.01, 0.0]\n";
+  const json s = test::run_scene(dir, sphere_scene(130e-6, ball + contact_with("sphere", "ball", "5e18")));
   const Hertz h = hertz_on_rigid(0.01, kMass / 2, 0.1);
   CHECK(contact(s)["peak_force_n"].get<double>() == Approx(h.peak_force).epsilon(0.02));
   CHECK(contact(s)["duration_s"].get<double>() == Approx(h.contact_time).epsilon(0.02));
@@ -107,20 +83,7 @@ penalty = 5e18
 
 namespace {
 std::string disk_scene(const std::string& velocity, const std::string& more) {
-  return R"([simulation]
-dimension = "planar"
-end_time = 4e-4
-rtol = 1e-6
-atol = 1e-12
-output_interval = 2e-6
-[[flexible_body]]
-name = "disk"
-sid = "disk_plane_strain.sid.h5"
-model = "disk_plane_strain.model.toml"
-position = [0.0, 0.1, 0.0]
-velocity = )" + velocity + R"(
-high_modes = "quasistatic"
-)" + more;
+  return test::scene_fixture("disk_drop.scene.toml", {{"@VELOCITY@", velocity}}) + more;
 }
 const double kDiskMass = 7850 * M_PI * 0.1 * 0.1;  // steel disk r 0.1 m, plane strain: per metre of thickness
 
@@ -159,15 +122,9 @@ name = "post"
 point = [%.17g, %.17g, 0.0]
 axis = [0.0, 0.0, 1.0]
 radius = 0.05
-[[contact]]
-name = "impact"
-body = "disk"
-surface = "contact"
-target = "post"
-penalty = 1e17
 )",
                 centre.x(), centre.y());
-  const json s = test::run_scene(dir, disk_scene("[0.05, -0.1, 0.0]", cylinder));
+  const json s = test::run_scene(dir, disk_scene("[0.05, -0.1, 0.0]", cylinder + contact_with("disk", "post", "1e17")));
   const Eigen::Vector3d v(0.05, -0.1, 0), expected = v - 2 * v.dot(n) * n;
   REQUIRE_FALSE(contact(s)["end_s"].is_null());
   // the steel disk keeps about 1 % of the energy in vibration: 1 % of |v|
@@ -188,13 +145,7 @@ shape = "box"
 size = [0.4, 0.1, 0.01]
 mass = 500.0
 position = [0.0, -0.0500001, 0.0]
-[[contact]]
-name = "impact"
-body = "disk"
-surface = "contact"
-target = "block"
-penalty = 1e17
-)"));
+)" + contact_with("disk", "block", "1e17")));
   REQUIRE_FALSE(contact(s)["end_s"].is_null());
   const double p = kDiskMass * final_velocity(s, 0).y() + 500.0 * final_velocity(s, 1).y();
   CHECK(p == Approx(-0.1 * kDiskMass).epsilon(1e-6));

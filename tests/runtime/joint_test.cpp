@@ -4,6 +4,7 @@
 // flexible beam swinging from a SID node, and flexible bodies that start in their static
 // deflection. Bad joint input: exit 2, one line.
 #include "scene_runner.hpp"
+#include "support/scene_text.hpp"
 
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
@@ -33,6 +34,21 @@ std::string simulation(double end_time, double rtol = 1e-10) {
          "\natol = 1e-12\noutput_interval = " + number(end_time / 200) + "\ngravity = [0.0, -9.81, 0.0]\n";
 }
 
+/// A rigid steel sphere of radius 5 cm named `name`: its table, `lines` (position, velocity ...) appended.
+std::string steel_ball(const std::string& name, const std::string& lines) {
+  return "[[rigid_body]]\nname = \"" + name + "\"\nshape = \"sphere\"\nradius = 0.05\ndensity = 7850.0\n" + lines + "\n";
+}
+
+/// A rigid aluminium box of 0.4 x 0.1 x 0.05 m named `name`: its table, `lines` appended.
+std::string aluminium_box(const std::string& name, const std::string& lines) {
+  return "[[rigid_body]]\nname = \"" + name + "\"\nshape = \"box\"\nsize = [0.4, 0.1, 0.05]\ndensity = 2700.0\n" + lines + "\n";
+}
+
+/// A joint of `type` named `name` on `body`: its table, `lines` (point, node, other, axis) appended.
+std::string joint(const std::string& name, const std::string& type, const std::string& body, const std::string& lines) {
+  return "[[joint]]\nname = \"" + name + "\"\ntype = \"" + type + "\"\nbody = \"" + body + "\"\n" + lines + "\n";
+}
+
 Eigen::Vector3d final_position(const json& s, int body) {
   const auto& p = s["bodies"][body]["final_position"];
   return {p[0].get<double>(), p[1].get<double>(), p[2].get<double>()};
@@ -52,19 +68,8 @@ TEST_CASE("joints: a rigid sphere on a spherical joint swings with the physical 
   const double period = 2 * M_PI * std::sqrt(I_O / (m * kG * L)) * (1 + theta * theta / 16);
   const Eigen::Vector3d start(L * std::sin(theta), -L * std::cos(theta), 0);
   const isosid::test::ScratchDir dir("joint-pendulum");
-  const json s = run_scene(dir, simulation(period) + R"(
-[[rigid_body]]
-name = "bob"
-shape = "sphere"
-radius = 0.05
-density = 7850.0
-position = )" + vec(start) + R"(
-[[joint]]
-name = "pivot"
-type = "spherical"
-body = "bob"
-point = [0.0, 0.0, 0.0]
-)");
+  const json s = run_scene(dir, simulation(period) + steel_ball("bob", "position = " + vec(start)) +
+                                    joint("pivot", "spherical", "bob", "point = [0.0, 0.0, 0.0]"));
   // the period to 1e-6 (the amplitude term is 6e-6; measured: back to 2e-12 m, at rest to 7e-12 m/s,
   // against a peak speed of 0.031 m/s)
   CHECK((final_position(s, 0) - start).norm() < 1e-6 * theta * L);
@@ -93,21 +98,7 @@ TEST_CASE("joints: a revolute joint holds a tilted box to its hinge", "[runtime]
   const Eigen::Vector3d centre = swing * Eigen::Vector3d(0, -d, 0);
   const Eigen::Vector3d angles = (swing * R).eulerAngles(0, 1, 2);  // x-y-z Tait-Bryan, as the scene takes them
   const isosid::test::ScratchDir dir("joint-revolute");
-  const json s = run_scene(dir, simulation(period) + R"(
-[[rigid_body]]
-name = "box"
-shape = "box"
-size = [0.4, 0.1, 0.05]
-density = 2700.0
-position = )" + vec(centre) + R"(
-orientation = )" + vec(angles) + R"(
-[[joint]]
-name = "hinge"
-type = "revolute"
-body = "box"
-point = [0.0, 0.0, 0.0]
-axis = [0.0, 0.0, 1.0]
-)");
+  const json s = run_scene(dir, simulation(period) + aluminium_box("box", "position = " + vec(centre) + "\norientation = " + vec(angles)) + joint("hinge", "revolute", "box", "point = [0.0, 0.0, 0.0]\naxis = [0.0, 0.0, 1.0]"));
   CHECK((final_position(s, 0) - centre).norm() < 1e-6 * theta * d);
   CHECK(std::abs(final_position(s, 0).z()) < 1e-12);  // no motion along the hinge
   const json& hinge = s["joints"][0];
@@ -127,26 +118,8 @@ TEST_CASE("joints: a fixed joint makes two bodies fall and spin as one", "[runti
   auto velocity = [&](const Eigen::Vector3d& c) { return Eigen::Vector3d(V + w.cross(c - C)); };
   const double t_end = 0.5;
   const isosid::test::ScratchDir dir("joint-fixed");
-  const json s = run_scene(dir, simulation(t_end) + R"(
-[[rigid_body]]
-name = "box"
-shape = "box"
-size = [0.4, 0.1, 0.05]
-density = 2700.0
-position = )" + vec(c_box) + "\nvelocity = " + vec(velocity(c_box)) + "\nangular_velocity = " + vec(w) + R"(
-[[rigid_body]]
-name = "ball"
-shape = "sphere"
-radius = 0.05
-density = 7850.0
-position = )" + vec(c_ball) + "\nvelocity = " + vec(velocity(c_ball)) + "\nangular_velocity = " + vec(w) + R"(
-[[joint]]
-name = "weld"
-type = "fixed"
-body = "ball"
-other = "box"
-point = [0.2, 0.0, 0.0]
-)");
+  const json s = run_scene(dir, simulation(t_end) + aluminium_box("box", "position = " + vec(c_box) + "\nvelocity = " + vec(velocity(c_box)) + "\nangular_velocity = " + vec(w)) + steel_ball("ball", "position = " + vec(c_ball) + "\nvelocity = " + vec(velocity(c_ball)) + "\nangular_velocity = " + vec(w)) +
+                                    joint("weld", "fixed", "ball", "other = \"box\"\npoint = [0.2, 0.0, 0.0]"));
   const Eigen::Vector3d C_end = (m_box * final_position(s, 0) + m_ball * final_position(s, 1)) / (m_box + m_ball);
   const Eigen::Vector3d expected = C + V * t_end + 0.5 * Eigen::Vector3d(0, -kG, 0) * t_end * t_end;
   CHECK((C_end - expected).norm() < 1e-9);
@@ -189,31 +162,10 @@ TEST_CASE("joints: a double pendulum of two rigid bodies follows Lagrange's equa
   // reference to 1e-6 m (measured 3e-14 m; bob 2 has swung past the vertical)
   const double r = 0.05, m = 4.0 / 3 * M_PI * r * r * r * 7850, I = 0.4 * m * r * r, t_end = 1.0;
   const isosid::test::ScratchDir dir("joint-double");
-  const json s = run_scene(dir, simulation(t_end) + R"(
-[[rigid_body]]
-name = "upper"
-shape = "sphere"
-radius = 0.05
-density = 7850.0
-position = [0.5, 0.0, 0.0]
-[[rigid_body]]
-name = "lower"
-shape = "sphere"
-radius = 0.05
-density = 7850.0
-position = [1.0, 0.0, 0.0]
-[[joint]]
-name = "shoulder"
-type = "spherical"
-body = "upper"
-point = [0.0, 0.0, 0.0]
-[[joint]]
-name = "elbow"
-type = "spherical"
-body = "lower"
-other = "upper"
-point = [0.75, 0.0, 0.0]
-)");
+  const json s = run_scene(dir, simulation(t_end) + steel_ball("upper", "position = [0.5, 0.0, 0.0]") +
+                                    steel_ball("lower", "position = [1.0, 0.0, 0.0]") +
+                                    joint("shoulder", "spherical", "upper", "point = [0.0, 0.0, 0.0]") +
+                                    joint("elbow", "spherical", "lower", "other = \"upper\"\npoint = [0.75, 0.0, 0.0]"));
   const Eigen::Vector4d end = double_pendulum(m, I, 0.5, 0.75, m, I, 0.25, Eigen::Vector4d(M_PI / 2, M_PI / 2, 0, 0), t_end);
   const Eigen::Vector3d upper(0.5 * std::sin(end(0)), -0.5 * std::cos(end(0)), 0);
   const Eigen::Vector3d lower(0.75 * std::sin(end(0)) + 0.25 * std::sin(end(1)), -0.75 * std::cos(end(0)) - 0.25 * std::cos(end(1)), 0);
@@ -249,12 +201,7 @@ name = "beam"
 sid = ")" + kGolden + R"(/beam_small.sid.h5"
 position = )" + vec(r) + R"(
 orientation = [0.0, 0.0, )" + number(M_PI / 2 + theta) + R"(]
-)" + modes + R"([[joint]]
-name = "pivot"
-type = "spherical"
-body = "beam"
-node = "end"
-)");
+)" + modes + joint("pivot", "spherical", "beam", "node = \"end\""));
     REQUIRE(s.is_object());
     CHECK(s["bodies"][0]["quasistatic_modes"].get<int>() == (modes.empty() ? 0 : 6));
     // back where it started after one period, to 1e-6 of its swing, and at rest
@@ -288,13 +235,7 @@ TEST_CASE("joints: a clamped beam with a static start stays at rest in its defle
 name = "beam"
 sid = ")" + kGolden + R"(/beam_small.sid.h5"
 orientation = [0.0, 0.0, )" + number(c.angle) + R"(]
-elastic_start = ")" + start + R"("
-[[joint]]
-name = "clamp"
-type = "fixed"
-body = "beam"
-node = "end"
-)");
+elastic_start = ")" + start + "\"\n" + joint("clamp", "fixed", "beam", "node = \"end\""));
       REQUIRE(s.is_object());
       const isosid::format::h5::Reader results(dir.path("out-s.scene.toml/results.h5"));
       const Eigen::MatrixXd q = results.matrix("/bodies/beam/q"), qdot = results.matrix("/bodies/beam/qdot");
@@ -334,25 +275,7 @@ TEST_CASE("static start: a held cantilever sags as far with quasistatic modes as
   // A held frame does not accelerate, so gravity must load the quasistatic modes through their
   // Ct rows (nonzero for a clamped body's modes), in body axes; without that load they did not
   // sag at all. The turn makes a gravity taken in world axes show.
-  const std::string model = R"([body]
-name = "cantilever"
-analysis = "solid"
-[material]
-youngs_modulus = 2.1e11
-poisson_ratio = 0.3
-density = 7800.0
-[geometry]
-primitive = "box"
-size = [0.21, 0.01, 0.015]
-[refinement]
-degrees = [2, 2, 2]
-subdivisions = [8, 1, 1]
-[boundary]
-clamped = ["xi0"]
-[reduction]
-method = "modal"
-normal_modes = 12
-)";
+  const std::string model = isosid::test::scene_fixture("cantilever.model.toml");
   json summary[2];
   Eigen::VectorXd q[2];
   for (int quasistatic = 0; quasistatic < 2; ++quasistatic) {
@@ -390,14 +313,7 @@ elastic_start = "static"
 
 TEST_CASE("joints: bad joint input is refused with exit 2", "[runtime][joint][bad-input]") {
   const isosid::test::ScratchDir dir("joint-bad");
-  const std::string bob = simulation(1.0) + R"(
-[[rigid_body]]
-name = "bob"
-shape = "sphere"
-radius = 0.05
-density = 7850.0
-position = [0.0, -1.0, 0.0]
-)";
+  const std::string bob = simulation(1.0) + steel_ball("bob", "position = [0.0, -1.0, 0.0]");
   auto refused = [&](const std::string& joint) { run_scene(dir, bob + joint, 2); };
   SECTION("unknown type") { refused("[[joint]]\nname = \"j\"\ntype = \"prismatic\"\nbody = \"bob\"\npoint = [0.0, 0.0, 0.0]\n"); }
   SECTION("a rigid side without a point") { refused("[[joint]]\nname = \"j\"\ntype = \"spherical\"\nbody = \"bob\"\n"); }
@@ -409,20 +325,8 @@ position = [0.0, -1.0, 0.0]
     refused("[[joint]]\nname = \"j\"\ntype = \"fixed\"\nbody = \"bob\"\nother = \"bob\"\npoint = [0.0, 0.0, 0.0]\n");
   }
   SECTION("attachments moving apart at the start") {
-    run_scene(dir, simulation(1.0) + R"(
-[[rigid_body]]
-name = "bob"
-shape = "sphere"
-radius = 0.05
-density = 7850.0
-position = [0.0, -1.0, 0.0]
-velocity = [0.0, -0.1, 0.0]
-[[joint]]
-name = "j"
-type = "spherical"
-body = "bob"
-point = [0.0, 0.0, 0.0]
-)", 2);
+    run_scene(dir, simulation(1.0) + steel_ball("bob", "position = [0.0, -1.0, 0.0]\nvelocity = [0.0, -0.1, 0.0]") +
+                       joint("j", "spherical", "bob", "point = [0.0, 0.0, 0.0]"), 2);
   }
   SECTION("an over-constrained mechanism: a second joint repeats what the first imposes") {
     // a fixed joint holds all six motions; a spherical joint elsewhere repeats three of them
@@ -442,13 +346,6 @@ point = [0.0, 0.0, 0.0]
     run_scene(dir, simulation(1.0) + R"(
 [[flexible_body]]
 name = "beam"
-sid = ")" + kGolden + R"(/beam_small.sid.h5"
-[[joint]]
-name = "j"
-type = "spherical"
-body = "beam"
-node = "end"
-point = [0.0, 0.0, 0.0]
-)", 2);
+sid = ")" + kGolden + "/beam_small.sid.h5\"\n" + joint("j", "spherical", "beam", "node = \"end\"\npoint = [0.0, 0.0, 0.0]"), 2);
   }
 }

@@ -110,19 +110,7 @@ TEST_CASE("the leapfrog keeps a massless-boundary body's free vibration energy b
   // the bar with 6 free-interface modes (highest 54.5 kHz: omega dt = 0.07 at dt = 0.2 us),
   // free in space, its six modes started at once; no contact
   std::ofstream(dir.path("bar.model.toml")) << replace(test::model_text("bar_drop_macneal.model.toml"), "normal_modes = 30", "normal_modes = 6");
-  const json s = test::run_scene(dir, R"(
-[simulation]
-dimension = "planar"
-end_time = 0.2
-integrator = "leapfrog"
-step = 2e-7
-output_interval = 2e-4
-[[flexible_body]]
-name = "bar"
-sid = "bar.sid.h5"
-model = "bar.model.toml"
-qdot0 = [0.05, 0.05, 0.05, 0.05, 0.05, 0.05]
-)");
+  const json s = test::run_scene(dir, test::scene_fixture("bar_free_vibration.scene.toml"));
   REQUIRE(s["steps"].get<long>() == 1000000);
   // one static solve of the boundary per step, a single Newton iteration without contact: the
   // step's end (gaps, output) keeps the solve of its right-hand side, whose state differs from

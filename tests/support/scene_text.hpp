@@ -1,7 +1,13 @@
-// Editing scene and model texts in place, for tests.
+// Scene and model texts for tests: fixtures from tests/scenes with their placeholders filled
+// in, and edits in place.
 #pragma once
 #include <catch2/catch.hpp>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace isosid::test {
 
@@ -10,6 +16,24 @@ inline std::string replace(std::string text, const std::string& from, const std:
   const auto at = text.find(from);
   REQUIRE(at != std::string::npos);
   return text.replace(at, from.size(), to);
+}
+
+/// The text of tests/scenes/`name`, each placeholder of `values` (such as "@SID@") replaced
+/// wherever it stands; each must stand there at least once. Throws std::runtime_error
+/// otherwise (no Catch assertion: tests also build texts at namespace scope).
+inline std::string scene_fixture(const std::string& name, const std::vector<std::pair<std::string, std::string>>& values = {}) {
+  const std::string path = std::string(ISOSID_TEST_SCENES_DIR) + "/" + name;
+  std::ifstream file(path);
+  if (!file) throw std::runtime_error("test fixture " + path + " cannot be read");
+  std::stringstream text;
+  text << file.rdbuf();
+  std::string s = text.str();
+  for (const auto& [placeholder, value] : values) {
+    if (s.find(placeholder) == std::string::npos) throw std::runtime_error("test fixture " + path + " has no " + placeholder);
+    for (auto at = s.find(placeholder); at != std::string::npos; at = s.find(placeholder, at + value.size()))
+      s.replace(at, placeholder.size(), value);
+  }
+  return s;
 }
 
 }  // namespace isosid::test
