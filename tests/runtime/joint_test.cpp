@@ -98,7 +98,8 @@ TEST_CASE("joints: a revolute joint holds a tilted box to its hinge", "[runtime]
   const Eigen::Vector3d centre = swing * Eigen::Vector3d(0, -d, 0);
   const Eigen::Vector3d angles = (swing * R).eulerAngles(0, 1, 2);  // x-y-z Tait-Bryan, as the scene takes them
   const isosid::test::ScratchDir dir("joint-revolute");
-  const json s = run_scene(dir, simulation(period) + aluminium_box("box", "position = " + vec(centre) + "\norientation = " + vec(angles)) + joint("hinge", "revolute", "box", "point = [0.0, 0.0, 0.0]\naxis = [0.0, 0.0, 1.0]"));
+  const json s = run_scene(dir, simulation(period) + aluminium_box("box", "position = " + vec(centre) + "\norientation = " + vec(angles)) +
+                                    joint("hinge", "revolute", "box", "point = [0.0, 0.0, 0.0]\naxis = [0.0, 0.0, 1.0]"));
   CHECK((final_position(s, 0) - centre).norm() < 1e-6 * theta * d);
   CHECK(std::abs(final_position(s, 0).z()) < 1e-12);  // no motion along the hinge
   const json& hinge = s["joints"][0];
@@ -118,7 +119,10 @@ TEST_CASE("joints: a fixed joint makes two bodies fall and spin as one", "[runti
   auto velocity = [&](const Eigen::Vector3d& c) { return Eigen::Vector3d(V + w.cross(c - C)); };
   const double t_end = 0.5;
   const isosid::test::ScratchDir dir("joint-fixed");
-  const json s = run_scene(dir, simulation(t_end) + aluminium_box("box", "position = " + vec(c_box) + "\nvelocity = " + vec(velocity(c_box)) + "\nangular_velocity = " + vec(w)) + steel_ball("ball", "position = " + vec(c_ball) + "\nvelocity = " + vec(velocity(c_ball)) + "\nangular_velocity = " + vec(w)) +
+  auto moving = [&](const Eigen::Vector3d& c) {
+    return "position = " + vec(c) + "\nvelocity = " + vec(velocity(c)) + "\nangular_velocity = " + vec(w);
+  };
+  const json s = run_scene(dir, simulation(t_end) + aluminium_box("box", moving(c_box)) + steel_ball("ball", moving(c_ball)) +
                                     joint("weld", "fixed", "ball", "other = \"box\"\npoint = [0.2, 0.0, 0.0]"));
   const Eigen::Vector3d C_end = (m_box * final_position(s, 0) + m_ball * final_position(s, 1)) / (m_box + m_ball);
   const Eigen::Vector3d expected = C + V * t_end + 0.5 * Eigen::Vector3d(0, -kG, 0) * t_end * t_end;
