@@ -32,12 +32,12 @@ Sha256::Sha256(Sha256&&) noexcept = default;
 Sha256& Sha256::operator=(Sha256&&) noexcept = default;
 
 void Sha256::update(std::string_view bytes) {
-  if (context_->spent) throw std::logic_error("SHA-256: update after hex_digest");
+  if (!context_ || context_->spent) throw std::logic_error("SHA-256: update of a spent or moved-from hasher");
   require(EVP_DigestUpdate(context_->ctx, bytes.data(), bytes.size()), "EVP_DigestUpdate");
 }
 
 std::string Sha256::hex_digest() {
-  if (context_->spent) throw std::logic_error("SHA-256: hex_digest called twice");
+  if (!context_ || context_->spent) throw std::logic_error("SHA-256: hex_digest of a spent or moved-from hasher");
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
   require(EVP_DigestFinal_ex(context_->ctx, digest, &length), "EVP_DigestFinal_ex");

@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 #include <fstream>
+#include <stdexcept>
+#include <utility>
 
 using isosid::common::Sha256;
 using isosid::common::sha256_file;
@@ -47,4 +49,14 @@ TEST_CASE("SHA-256 of a file is that of its bytes, and a missing file is bad inp
   std::ofstream(dir.path("million_a.txt"), std::ios::binary) << kMillionA;
   CHECK(sha256_file(dir.path("million_a.txt")) == kMillionADigest);
   CHECK_THROWS_AS(sha256_file(dir.path("missing.txt")), isosid::format::InputError);
+}
+
+TEST_CASE("SHA-256: a spent or moved-from hasher refuses more work", "[common][sha256]") {
+  Sha256 hasher;
+  hasher.update("abc");
+  Sha256 moved = std::move(hasher);
+  CHECK_THROWS_AS(hasher.update("d"), std::logic_error);
+  CHECK(moved.hex_digest() == sha256_hex("abc"));
+  CHECK_THROWS_AS(moved.hex_digest(), std::logic_error);
+  CHECK_THROWS_AS(moved.update("d"), std::logic_error);
 }

@@ -18,7 +18,8 @@ public:
 
   /// Appends bytes to the message; may be called any number of times.
   void update(std::string_view bytes);
-  /// Pads the message and returns its lower-case hex digest; the hasher is spent afterwards.
+  /// Pads the message and returns its lower-case hex digest; the hasher is spent afterwards
+  /// (update or hex_digest on it again, or on a moved-from one, throws std::logic_error).
   std::string hex_digest();
 
 private:
