@@ -9,7 +9,22 @@
 
 namespace isosid::run {
 
+namespace {
+/// A body whose SID can be rebuilt for another contact radius: it names its model file, and its
+/// SID was sized from a contact radius ([contact_resolution]).
+bool resizable(const BodySpec& body, const format::Sid& sid) {
+  return !body.model_file.empty() && sid.discretization && sid.discretization->contact_radius > 0;
+}
+}  // namespace
+
 std::vector<std::string> fit_contact_resolution(Scene& scene, std::vector<format::Sid>& sids, bool quiet) {
+  // the estimates need a whole system (its quasistatic factorizations included): not built
+  // when no body could be resized anyway
+  bool any_resizable = false;
+  std::size_t next = 0;
+  for (const BodySpec& body : scene.bodies)
+    if (!body.rigid) any_resizable = resizable(body, sids.at(next++)) || any_resizable;
+  if (!any_resizable) return {};
   // the finest estimated contact radius of each body over its contacts
   std::map<std::string, double> wanted;
   {
@@ -28,7 +43,7 @@ std::vector<std::string> fit_contact_resolution(Scene& scene, std::vector<format
     if (body.rigid) continue;
     format::Sid& sid = sids[next_sid++];
     const auto radius = wanted.find(body.name);
-    if (radius == wanted.end() || body.model_file.empty() || !sid.discretization || sid.discretization->contact_radius <= 0) continue;
+    if (radius == wanted.end() || !resizable(body, sid)) continue;
     const double built_for = sid.discretization->contact_radius;
     // round-off of the estimate (its mass and curvatures come from the SID) must not rebuild
     if (radius->second >= (1 - 1e-6) * built_for && radius->second <= 1.25 * built_for) continue;
