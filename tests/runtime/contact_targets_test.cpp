@@ -8,7 +8,6 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
-#include <iterator>
 
 using namespace isosid;
 using nlohmann::json;
@@ -87,22 +86,14 @@ std::string disk_scene(const std::string& velocity, const std::string& more) {
 }
 const double kDiskMass = 7850 * M_PI * 0.1 * 0.1;  // steel disk r 0.1 m, plane strain: per metre of thickness
 
-/// `text` with every `from` replaced by `to` (which must occur).
-std::string replace_all(std::string text, const std::string& from, const std::string& to) {
-  REQUIRE(text.find(from) != std::string::npos);
-  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
-  return text;
-}
-
 /// The default disk model with [R1]'s grading (1 mm at the bottom, growing by 1.5) instead
 /// of elements sized for scene C's contact: an off-centre hit then still falls within the fine
 /// elements and the Craig-Bampton interface around the bottom, which a rebuild for a smaller
 /// contact would shrink to 1.6 mm either side.
 void write_seed_graded_disk(const test::ScratchDir& dir) {
-  std::ifstream in(std::string(ISOSID_MODELS_DIR) + "/disk_plane_strain.model.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  text = replace_all(text, "[contact_resolution]\ncontact_radius = 4.6e-4\nelements_per_radius = 8\n", "");
-  std::ofstream(dir.path("disk_plane_strain.model.toml")) << replace_all(text, "smallest = \"contact\"\ngrowth = 1.2", "smallest = 1e-3\ngrowth = 1.5");
+  std::string text = test::model_text("disk_plane_strain.model.toml");
+  text = test::replace_all(text, "[contact_resolution]\ncontact_radius = 4.6e-4\nelements_per_radius = 8\n", "");
+  std::ofstream(dir.path("disk_plane_strain.model.toml")) << test::replace_all(text, "smallest = \"contact\"\ngrowth = 1.2", "smallest = 1e-3\ngrowth = 1.5");
 }
 }  // namespace
 

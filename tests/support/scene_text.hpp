@@ -18,9 +18,16 @@ inline std::string replace(std::string text, const std::string& from, const std:
   return text.replace(at, from.size(), to);
 }
 
-/// The text of tests/scenes/`name`, each placeholder of `values` (such as "@SID@") replaced
-/// wherever it stands; each must stand there at least once. Throws std::runtime_error
+/// `text` with every `from` replaced by `to`; `from` must occur. Throws std::runtime_error
 /// otherwise (no Catch assertion: tests also build texts at namespace scope).
+inline std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  if (text.find(from) == std::string::npos) throw std::runtime_error("the text has no " + from);
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// The text of tests/scenes/`name`, each placeholder of `values` (such as "@SID@") replaced
+/// wherever it stands (replace_all); each must stand there at least once.
 inline std::string scene_fixture(const std::string& name, const std::vector<std::pair<std::string, std::string>>& values = {}) {
   const std::string path = std::string(ISOSID_TEST_SCENES_DIR) + "/" + name;
   std::ifstream file(path);
@@ -28,10 +35,10 @@ inline std::string scene_fixture(const std::string& name, const std::vector<std:
   std::stringstream text;
   text << file.rdbuf();
   std::string s = text.str();
-  for (const auto& [placeholder, value] : values) {
-    if (s.find(placeholder) == std::string::npos) throw std::runtime_error("test fixture " + path + " has no " + placeholder);
-    for (auto at = s.find(placeholder); at != std::string::npos; at = s.find(placeholder, at + value.size()))
-      s.replace(at, placeholder.size(), value);
+  try {
+    for (const auto& [placeholder, value] : values) s = replace_all(std::move(s), placeholder, value);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("test fixture " + path + ": " + e.what());
   }
   return s;
 }
