@@ -1,4 +1,4 @@
-// Lowest eigenpairs of K phi = lambda M phi by Spectra's Lanczos on a CHOLMOD factor: of
+// Lowest eigenpairs of K phi = lambda M phi by block Lanczos on a CHOLMOD factor: of
 // K - sigma M (shift-invert; a negative shift keeps it positive definite for free bodies, whose K
 // is singular), or of a stiffness factor the caller also uses for its static solves.
 #pragma once

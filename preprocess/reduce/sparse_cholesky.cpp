@@ -86,9 +86,10 @@ SparseCholesky::~SparseCholesky() = default;
 
 Eigen::Index SparseCholesky::rows() const { return impl_->llt.rows(); }
 
+double SparseCholesky::solve_flops(Eigen::Index columns) const { return 4.0 * impl_->llt.cholmod().lnz * double(columns); }
+
 Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& b) const {
-  // two triangular solves, each about 2 lnz flops per column; BLAS-3 for many columns
-  const ParallelBlas threads(4.0 * impl_->llt.cholmod().lnz * double(b.cols()));
+  const ParallelBlas threads(solve_flops(b.cols()));  // BLAS-3 for many columns
   return impl_->llt.solve(b);
 }
 

@@ -1,5 +1,5 @@
 // Modal analysis: rigid-body modes of free bodies, the longitudinal spectrum of a free bar
-// against its exact and discrete (quadratic C1) dispersion, and Spectra against a dense solver,
+// against its exact and discrete (quadratic C1) dispersion, and block Lanczos against a dense solver,
 // shift-inverted or through a stiffness factor that a reduction shares with its statics.
 #include "geometry/primitives.hpp"
 #include "reduce/macneal.hpp"
@@ -137,7 +137,7 @@ TEST_CASE("free-free bar with nu = 0: longitudinal frequencies against n c / 2l"
   CHECK(omega_h[1] / (M_PI * c / l) - 1 < 1e-6);
 }
 
-TEST_CASE("Spectra shift-invert with CHOLMOD agrees with a dense generalized eigen solver", "[modal]") {
+TEST_CASE("block Lanczos shift-invert with CHOLMOD agrees with a dense generalized eigen solver", "[modal]") {
   const auto b = prep::build_body(test::spec_for(prep::primitives::disk(0.1), AnalysisType::PlaneStrain, 2.1e11, 0.3, 7850,
                                                  test::uniform({3, 3}, {3, 3})));
   const auto s = lowest(b, 12);
