@@ -119,7 +119,7 @@ BlockLanczosResult block_lanczos_largest(const BlockOperator& C, Index size, int
       out.vectors = V.leftCols(m) * S.leftCols(n);
       return out;
     }
-    if (m + b <= room) {
+    if (m + w <= room) {
       V.middleCols(m, w) = Y;
       m += w;
       continue;

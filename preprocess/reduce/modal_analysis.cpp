@@ -88,7 +88,7 @@ ModalResult lanczos_largest(const FactoredPencil& op, int n, Eigen::Index room, 
   options.room = std::min(room, std::max<Eigen::Index>(3 * Eigen::Index(n), n + 6 * options.block));
   // the count of block solves is the progress: how many it needs is known only at its end
   options.on_block = [&](long done) {
-    common::set_work_step("eigen solve: block Lanczos, solve " + std::to_string(done + 1) + " (" + std::to_string(options.block) + " vectors)");
+    common::set_work_step("eigen solve: block Lanczos, solve " + std::to_string(done + 1));
   };
   check_memory("reduction.normal_modes",
                "the eigen solve's Krylov basis for " + std::to_string(n) + " modes on " + std::to_string(op.rows()) + " DOFs",

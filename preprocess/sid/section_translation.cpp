@@ -1,6 +1,8 @@
 // Cross-section translation shares of modes; see section_translation.hpp.
 #include "sid/section_translation.hpp"
 
+#include "reduce/sparse_products.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -55,8 +57,10 @@ SectionTranslation section_translation(const Eigen::MatrixXd& modes, const Eigen
   Eigen::VectorXd kinetic = Eigen::VectorXd::Zero(n);
   Eigen::MatrixXd u(nodes, n);
   for (Eigen::Index a = 0; a < dim; ++a) {
-    for (Eigen::Index i = 0; i < nodes; ++i) u.row(i) = modes.row(i * dim + a);  // component a on the nodes
-    const Eigen::MatrixXd Mu = scalar_mass * u;
+    // component a on the nodes: every dim-th row of the modes
+    u = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>>(
+        modes.data() + a, nodes, n, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(modes.outerStride(), dim));
+    const Eigen::MatrixXd Mu = sparse_times(scalar_mass, u);
     kinetic += u.cwiseProduct(Mu).colwise().sum().transpose();
     const Eigen::MatrixXd b = fields.transpose() * Mu;
     out.shares.col(a) = b.cwiseProduct(gram_ldlt.solve(b)).colwise().sum().transpose();
