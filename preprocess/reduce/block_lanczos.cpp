@@ -111,9 +111,11 @@ BlockLanczosResult block_lanczos_largest(const BlockOperator& C, Index size, int
     const Eigen::SelfAdjointEigenSolver<MatrixXd> eig(T.topLeftCorner(m, m));
     const VectorXd theta = eig.eigenvalues().reverse();
     const MatrixXd S = eig.eigenvectors().rowwise().reverse();
-    const VectorXd residual = (R * S.block(m - w, 0, w, n)).colwise().norm().transpose();
-    bool converged = true;
-    for (Index i = 0; i < n && converged; ++i) converged = residual(i) <= options.tolerance * std::abs(theta(i));
+    bool converged = m >= n;  // the first blocks hold fewer Ritz pairs than asked for
+    if (converged) {
+      const VectorXd residual = (R * S.block(m - w, 0, w, n)).colwise().norm().transpose();
+      for (Index i = 0; i < n && converged; ++i) converged = residual(i) <= options.tolerance * std::abs(theta(i));
+    }
     if (converged) {
       out.values = theta.head(n);
       out.vectors = V.leftCols(m) * S.leftCols(n);
