@@ -56,32 +56,23 @@ MatrixXd orthonormalize(const Eigen::Ref<const MatrixXd>& V, MatrixXd& W, Matrix
   return H;
 }
 
-/// The basis's room, the block size within it, and how many Ritz vectors a restart keeps.
-struct Layout {
-  Index room, block, keep;
-};
+}  // namespace
 
-Layout layout(Index size, int n, const BlockLanczosOptions& options) {
+BlockLanczosLayout block_lanczos_layout(Index size, int n, const BlockLanczosOptions& options) {
   if (n < 1 || n >= size)
     throw format::ComputationError("block Lanczos: " + std::to_string(n) + " eigenpairs of an operator of size " + std::to_string(size));
   // the remainder of a full basis must still find a block of new directions: room + block <= size
   const Index block = std::clamp<Index>(options.block, 1, std::max<Index>(1, (size - n) / 3));
-  const Index room = std::min(size - block, options.room > 0 ? options.room : std::max<Index>(3 * Index(n), n + 6 * block));
+  const Index room = std::min({size - block, options.rank > 0 ? options.rank : size,
+                               options.room > 0 ? options.room : std::max<Index>(3 * Index(n), n + 6 * block)});
   const Index b = std::min(block, (room - n + 1) / 2);
   if (b < 1) throw format::ComputationError("block Lanczos: no room for " + std::to_string(n) + " eigenpairs in " + std::to_string(room));
   // a restart keeps the n wanted Ritz vectors and half of the rest
   return {room, b, n + (room - n - b) / 2};
 }
 
-}  // namespace
-
-Index block_lanczos_peak_vectors(Index size, int n, const BlockLanczosOptions& options) {
-  const Layout l = layout(size, n, options);
-  return l.room + l.keep + 3 * l.block;  // basis, a restart's Ritz vectors, the block in flight and its image
-}
-
 BlockLanczosResult block_lanczos_largest(const BlockOperator& C, Index size, int n, const BlockLanczosOptions& options) {
-  const auto [room, b, keep] = layout(size, n, options);
+  const auto [room, b, keep] = block_lanczos_layout(size, n, options);
 
   std::mt19937_64 rng(options.seed);
   std::normal_distribution<double> normal;

@@ -23,6 +23,9 @@ using BlockOperator = std::function<void(const Eigen::MatrixXd& X, Eigen::Matrix
 struct BlockLanczosOptions {
   Eigen::Index block = 8;        ///< vectors per application of the operator
   Eigen::Index room = 0;         ///< basis columns before a restart; 0: max(3 n, n + 6 block); at most the size less a block
+  /// the operator's rank where it is below the size (a free body's rigid fields have mu = 0):
+  /// the basis stays within it; 0: the size
+  Eigen::Index rank = 0;
   double tolerance = 1e-12;      ///< relative residual of an accepted Ritz pair
   int max_restarts = 200;
   std::uint64_t seed = 20261129; ///< of the first block (the result is reproducible)
@@ -37,9 +40,18 @@ struct BlockLanczosResult {
   int restarts = 0;
 };
 
-/// How many vectors of the operator's size the solve holds at its peak (its basis, the Ritz
-/// vectors of a restart, the block in flight and its image): its memory over sizeof(double) size.
-Eigen::Index block_lanczos_peak_vectors(Eigen::Index size, int n, const BlockLanczosOptions& options = {});
+/// The basis the solve works in: its room, the block size within it (blocks shrink for small
+/// operators) and how many Ritz vectors a restart keeps.
+struct BlockLanczosLayout {
+  Eigen::Index room = 0, block = 0, keep = 0;
+  /// Vectors of the operator's size held at the peak (the basis, the Ritz vectors of a restart,
+  /// the block in flight and its image): the solve's memory over sizeof(double) size.
+  Eigen::Index peak_vectors() const { return room + keep + 3 * block; }
+};
+
+/// The layout block_lanczos_largest uses for n eigenpairs of an operator of the given size.
+/// Throws format::ComputationError for a request no basis can serve.
+BlockLanczosLayout block_lanczos_layout(Eigen::Index size, int n, const BlockLanczosOptions& options = {});
 
 /// The n largest eigenpairs of the symmetric operator C of the given size. Throws
 /// format::ComputationError when they have not converged after `max_restarts` restarts.

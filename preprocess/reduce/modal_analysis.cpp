@@ -81,20 +81,20 @@ private:
 constexpr Eigen::Index kLanczosBlock = 8;
 
 /// The n largest mu of the pencil's operator by block Lanczos; eigenvalues sigma + 1/mu, ascending.
-ModalResult lanczos_largest(const FactoredPencil& op, int n, Eigen::Index room, double sigma) {
+ModalResult lanczos_largest(const FactoredPencil& op, int n, Eigen::Index rank, double sigma) {
   BlockLanczosOptions options;
   options.block = kLanczosBlock;
-  // the operator's rank (a free body's rigid fields have mu = 0) bounds the basis
-  options.room = std::min(room, std::max<Eigen::Index>(3 * Eigen::Index(n), n + 6 * options.block));
+  options.rank = rank;
   // the count of block solves is the progress: how many it needs is known only at its end
   options.on_block = [&](long done) {
     common::set_work_step("eigen solve: block Lanczos, solve " + std::to_string(done + 1));
   };
+  const BlockLanczosLayout layout = block_lanczos_layout(op.rows(), n, options);
   check_memory("reduction.normal_modes",
                "the eigen solve's Krylov basis for " + std::to_string(n) + " modes on " + std::to_string(op.rows()) + " DOFs",
-               double(block_lanczos_peak_vectors(op.rows(), n, options)) * double(op.rows()) * sizeof(double));
+               double(layout.peak_vectors()) * double(op.rows()) * sizeof(double));
   // the block solves are BLAS-3 on both cores when the basis's vectors together are large work
-  const ParallelBlas threads(op.apply_flops(options.room));
+  const ParallelBlas threads(op.apply_flops(layout.room));
   const BlockLanczosResult solved =
       block_lanczos_largest([&](const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) { op.apply(X, Y); }, op.rows(), n, options);
   // mu descending is lambda ascending
