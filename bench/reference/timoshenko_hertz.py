@@ -582,6 +582,25 @@ class QuarterBeam:
             f.write(body)
 
 
+def ccx_number(x):
+    """x for a CalculiX input field: ccx reads at most 20 characters of a field, so a longer
+    number is cut (-5.84829232448421e-07 would be read as -5.84829232448421e-0); 13 significant
+    digits in exponent form take at most 19."""
+    return f"{x:.12e}"
+
+
+def ccx_frequencies(dat_text):
+    """The eigenfrequencies [Hz] of a CalculiX *FREQUENCY step, from its .dat text, in order."""
+    freqs = []
+    for row_ in dat_text.split("E I G E N V A L U E   O U T P U T")[1].splitlines():
+        parts = row_.split()
+        if len(parts) >= 4 and parts[0].isdigit():
+            freqs.append(float(parts[3]))
+        elif freqs and row_.strip() == "":
+            break
+    return freqs
+
+
 def ccx_set(kind, name, ids):
     ids = list(ids)
     return f"*{kind}, {kind}={name}\n" + "".join(", ".join(map(str, ids[i:i + 12])) + ",\n" for i in range(0, len(ids), 12))
@@ -662,10 +681,10 @@ def beam_local_fe(case, kappa, F, s0_over_a, growth, smax_x=4e-3, smax_yz=2e-3, 
             + ccx_set("NSET", "NFIX", [n_fix]) + ccx_set("NSET", "NOUT", out_nodes)
             + ccx_set("ELSET", "ESLAB", slab_els) + ccx_set("ELSET", "EREST", rest_els)
             + "*BOUNDARY\nNXSYM, 1, 1\nNZSYM, 3, 3\nNFIX, 2, 2\n"
-            + "*STEP\n*STATIC\n*CLOAD\n" + "".join(f"{n}, 2, {-f:.15g}\n" for n, f in loads.items())
-            + f"*DLOAD\nEALL, GRAV, {g_relief:.15g}, 0., 1., 0.\n*NODE PRINT, NSET=NOUT\nU\n*END STEP\n"
+            + "*STEP\n*STATIC\n*CLOAD\n" + "".join(f"{n}, 2, {ccx_number(-f)}\n" for n, f in loads.items())
+            + f"*DLOAD\nEALL, GRAV, {ccx_number(g_relief)}, 0., 1., 0.\n*NODE PRINT, NSET=NOUT\nU\n*END STEP\n"
             + "*STEP\n*STATIC\n*CLOAD, OP=NEW\n*DLOAD, OP=NEW\n"
-            + f"EREST, GRAV, {g_relief:.15g}, 0., 1., 0.\nESLAB, GRAV, {g_slab - g_relief:.15g}, 0., -1., 0.\n"
+            + f"EREST, GRAV, {ccx_number(g_relief)}, 0., 1., 0.\nESLAB, GRAV, {ccx_number(g_slab - g_relief)}, 0., -1., 0.\n"
             + "*NODE PRINT, NSET=NOUT\nU\n*END STEP\n")
     folder, path, wall = run_ccx(q, "beam_local", body, E, nu, rho, keep)
     steps = []
@@ -752,13 +771,7 @@ def beam_modes_3d(case, size_x, n_y, n_z, count=14, keep=None):
         for name in os.listdir(folder):
             os.remove(os.path.join(folder, name))
         os.rmdir(folder)
-    freqs = []
-    for row_ in text.split("E I G E N V A L U E   O U T P U T")[1].splitlines():
-        parts = row_.split()
-        if len(parts) >= 4 and parts[0].isdigit():
-            freqs.append(float(parts[3]))
-        elif freqs and row_.strip() == "":
-            break
+    freqs = ccx_frequencies(text)
     bending = []
     for k, block in enumerate(text.split("displacements (vx,vy,vz)")[1:]):
         u = np.array([[float(v) for v in l.split()[1:4]] for l in block.splitlines()[1:] if len(l.split()) == 4 and l.split()[0].isdigit()])
