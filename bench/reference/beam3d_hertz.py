@@ -150,7 +150,7 @@ def beam_3d(case, s0_over_a, growth, n_modes, keep=None):
     # kept: the nodes that the largest force of the load table loads (smaller ones load fewer)
     loaded = sorted(set(hertz_loads(case, q, F_TOP)) | {n_top})
     modes = [{"f_hz": m["f_hz"], "phi_y": {n: m["phi_y"][n] for n in loaded + [n_fix]}} for m in modes]
-    return {"mesh": {"s0_m": s0, "growth": growth, "elements": len(q.els), "dofs": 3 * len(q.node_id)},
+    return {"mesh": {"s0_m": s0, "s0_over_a": s0_over_a, "growth": growth, "elements": len(q.els), "dofs": 3 * len(q.node_id)},
             "nodes": {"fix": n_fix, "centre": n_top, "top": loaded},
             "modes": [{"f_hz": m["f_hz"], "phi_y": {str(n): v for n, v in m["phi_y"].items()}} for m in modes],
             "static": [{"F_n": F, "u_y_m": {str(n): U[n][1] * 1e-3 for n in (n_fix, n_top)},
@@ -309,12 +309,6 @@ def model_3d(case, data, cutoff_hz, loads_of_force, pressure_weighted=False):
     return model
 
 
-def ccx_data(case, s0_over_a, growth, n_modes, keep=None):
-    d = beam_3d(case, s0_over_a, growth, n_modes, keep)
-    d["mesh"]["s0_over_a"], d["mesh"]["growth"] = s0_over_a, growth
-    return d
-
-
 def labelled(freqs_hz, energies, E0, bending_hz):
     """E_k / E_0 of the 3D modes nearest the bending frequencies (1F, 3F, ...), within 3 %."""
     out = {}
@@ -344,7 +338,7 @@ def main():
     if args.no_ccx:
         data = json.load(open(args.json))["calculix"]
     else:
-        data = ccx_data(case, s0_over_a, growth, args.modes)
+        data = beam_3d(case, s0_over_a, growth, args.modes)
         with open(args.json, "w") as f:          # kept at once: the impacts below can be rerun with --no-ccx
             json.dump({"calculix": data}, f)
     E0 = 0.5 * case["m_s"] * case["v0"] ** 2
