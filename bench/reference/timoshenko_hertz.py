@@ -585,7 +585,7 @@ class QuarterBeam:
 def ccx_number(x):
     """x for a CalculiX input field: ccx reads at most 20 characters of a field, so a longer
     number is cut (-5.84829232448421e-07 would be read as -5.84829232448421e-0); 13 significant
-    digits in exponent form take at most 19."""
+    digits in exponent form fit, sign and three-digit exponent included."""
     return f"{x:.12e}"
 
 
