@@ -64,29 +64,12 @@ F_TOP = 900.0                                  # the load table's largest force 
 
 
 # ---------------------------------------------------------------------- CalculiX beam
-def quarter_mesh(case, F_ref, s0_over_a, growth, smax_x=4e-3, smax_yz=2e-3):
+def quarter_mesh(case, s0_over_a, growth):
+    """The CalculiX quarter beam graded to s0 = s0_over_a times the peak's Hertz contact radius
+    (4 mm along the beam and 2 mm across at most), and s0 [m]."""
     hz = th.hertz_half_space(case)
-    L, h, b = case["L"] * 1e3, case["h"] * 1e3, case["b"] * 1e3
-    a = (3 * F_ref * case["R"] / (4 * hz["E_star"])) ** (1 / 3) * 1e3
-    s0 = a * s0_over_a
-    X = L / 2 - th.graded(L / 2, s0, growth, smax_x * 1e3)[::-1]
-    Y = h - th.graded(h, s0, growth, smax_yz * 1e3, must=(h / 2,))[::-1]
-    Z = b / 2 - th.graded(b / 2, s0, growth, smax_yz * 1e3)[::-1]
-    return th.QuarterBeam(X, Y, Z), s0 * 1e-3
-
-
-def hertz_loads(case, q, F):
-    """Consistent nodal loads (N, downward) of the quarter of Hertz's pressure of the force F."""
-    hz = th.hertz_half_space(case)
-    L, b = case["L"] * 1e3, case["b"] * 1e3
-    a = (3 * F * case["R"] / (4 * hz["E_star"])) ** (1 / 3) * 1e3
-    p0 = 3 * F / (2 * math.pi * a * a)
-    p = lambda u, v: p0 * np.sqrt(np.clip(1 - ((u - L / 2) ** 2 + (v - b / 2) ** 2) / a ** 2, 0, None))
-    loads = q.face_integral(1, 2 * q.n[1], p)
-    total = sum(loads.values())
-    if total <= 0:          # a contact radius below the quadrature's spacing: the force at the centre
-        return {q.node_id[(2 * q.n[0], 2 * q.n[1], 2 * q.n[2])]: F / 4}
-    return {n: f * (F / 4) / total for n, f in loads.items()}     # the square-root edge's quadrature: exact total
+    s0 = (3 * hz["peak_force_n"] * case["R"] / (4 * hz["E_star"])) ** (1 / 3) * 1e3 * s0_over_a
+    return th.quarter_mesh(case, s0, growth, 4.0, 2.0), s0 * 1e-3
 
 
 def read_blocks(path):
@@ -107,14 +90,14 @@ def read_blocks(path):
 def beam_3d(case, s0_over_a, growth, n_modes, keep=None):
     """Modes and static residuals of the CalculiX quarter beam (SI units in the result)."""
     E, nu, rho = case["E_b"], case["nu_b"], case["rho_b"]
-    hz = th.hertz_half_space(case)
-    q, s0 = quarter_mesh(case, hz["peak_force_n"], s0_over_a, growth)
+    q, s0 = quarter_mesh(case, s0_over_a, growth)
     nx, ny, nz = q.n
     L, b = case["L"] * 1e3, case["b"] * 1e3
     iy = int(np.argmin(np.abs(q.lines[1] - case["h"] * 1e3 / 2)))
     n_fix, n_top = q.node_id[(0, 2 * iy, 2 * nz)], q.node_id[(2 * nx, 2 * ny, 2 * nz)]
-    top = q.nodes_on(1, 2 * ny)       # every node of the impacted face (a load's cells may reach far on coarse meshes)
-    out_nodes = sorted(set(top) | {n_fix, n_top})
+    # the nodes that the load table's largest force loads (smaller forces load fewer)
+    loaded = sorted(set(th.hertz_face_loads(case, q, F_TOP)) | {n_top})
+    out_nodes = loaded + [n_fix]
     sets = (th.ccx_set("NSET", "NXSYM", q.nodes_on(0, 2 * nx)) + th.ccx_set("NSET", "NZSYM", q.nodes_on(2, 2 * nz))
             + th.ccx_set("NSET", "NFIX", [n_fix]) + th.ccx_set("NSET", "NOUT", out_nodes)
             + "*BOUNDARY\nNXSYM, 1, 1\nNZSYM, 3, 3\n")
@@ -123,48 +106,38 @@ def beam_3d(case, s0_over_a, growth, n_modes, keep=None):
     folder, path, wall_modes = th.run_ccx(q, "beam3d_modes", body, E, nu, rho, keep)
     freqs = th.ccx_frequencies(open(path[:-4] + ".dat").read())
     blocks = read_blocks(path[:-4] + ".dat")
-    cleanup(folder, keep)
+    th.remove_run_folder(folder, keep)
     # statics: the Hertz pressure of each force and the inertia relief, pinned at NFIX
     rho_mm = rho * 1e-12
     steps, loads_of = "", {}
     for F in FORCES:
-        loads = hertz_loads(case, q, F)
+        loads = th.hertz_face_loads(case, q, F)
         loads_of[F] = loads
         g_relief = F / (rho_mm * L * case["h"] * 1e3 * b)
         steps += ("*STEP\n*STATIC\n*BOUNDARY\nNFIX, 2, 2\n*CLOAD, OP=NEW\n" + "".join(f"{n}, 2, {th.ccx_number(-f)}\n" for n, f in loads.items())
                   + f"*DLOAD, OP=NEW\nEALL, GRAV, {th.ccx_number(g_relief)}, 0., 1., 0.\n*NODE PRINT, NSET=NOUT\nU\n*END STEP\n")
     folder, path, wall_static = th.run_ccx(q, "beam3d_static", sets + steps, E, nu, rho, keep)
     statics = read_blocks(path[:-4] + ".dat")
-    cleanup(folder, keep)
+    th.remove_run_folder(folder, keep)
     if len(blocks) != len(freqs) or len(statics) != len(FORCES):
         raise RuntimeError(f"CalculiX output: {len(freqs)} frequencies, {len(blocks)} mode blocks, {len(statics)} static blocks")
     # mass-normalized shapes are displacement per (length sqrt(mass)): only the mass unit converts
     # (t -> kg); the quarter's are twice the full beam's (a quarter of its mass)
-    modes = [{"f_hz": f, "phi_y": {n: U[n][1] * math.sqrt(1e-3) / 2 for n in out_nodes}}
+    modes = [{"f_hz": f, "phi_y": {str(n): U[n][1] * math.sqrt(1e-3) / 2 for n in out_nodes}}
              for f, U in zip(freqs, blocks) if f > 1.0]
     # the rigid translation's shape is 1 / sqrt(the beam's mass): a check of those conversions
     mass = case["rho_b"] * case["L"] * case["h"] * case["b"]
     rigid = [U[n_top][1] * math.sqrt(1e-3) / 2 for f, U in zip(freqs, blocks) if f <= 1.0]
     if len(rigid) != 1 or abs(abs(rigid[0]) * math.sqrt(mass) - 1) > 1e-4:
         raise RuntimeError(f"CalculiX's zero modes {rigid} are not the rigid translation 1/sqrt(m) = {1 / math.sqrt(mass):.6g}")
-    # kept: the nodes that the largest force of the load table loads (smaller ones load fewer)
-    loaded = sorted(set(hertz_loads(case, q, F_TOP)) | {n_top})
-    modes = [{"f_hz": m["f_hz"], "phi_y": {n: m["phi_y"][n] for n in loaded + [n_fix]}} for m in modes]
     return {"mesh": {"s0_m": s0, "s0_over_a": s0_over_a, "growth": growth, "elements": len(q.els), "dofs": 3 * len(q.node_id)},
             "nodes": {"fix": n_fix, "centre": n_top, "top": loaded},
-            "modes": [{"f_hz": m["f_hz"], "phi_y": {str(n): v for n, v in m["phi_y"].items()}} for m in modes],
+            "modes": modes,
             "static": [{"F_n": F, "u_y_m": {str(n): U[n][1] * 1e-3 for n in (n_fix, n_top)},
                         "u_y_pressure_weighted_m": sum(f * U[n][1] for n, f in loads_of[F].items()) / (F / 4) * 1e-3}
                        for F, U in zip(FORCES, statics)],
             "loads": {str(F): {str(n): f for n, f in loads_of[F].items()} for F in FORCES},
             "ccx_wall_s": wall_modes + wall_static}
-
-
-def cleanup(folder, keep):
-    if keep is None:
-        for name in os.listdir(folder):
-            os.remove(os.path.join(folder, name))
-        os.rmdir(folder)
 
 
 # ------------------------------------------------------------------------------ impact
@@ -250,13 +223,12 @@ def timoshenko_model(case, n_elem, cutoff_hz):
 def load_table(case, data, table_points=160, f_top=F_TOP):
     """The quarter's nodal loads (impacted face's nodes, in data's order) of Hertz's pressure at
     forces even in the contact radius up to f_top: (forces, loads x nodes)."""
-    hz = th.hertz_half_space(case)
-    q, _ = quarter_mesh(case, hz["peak_force_n"], data["mesh"]["s0_over_a"], data["mesh"]["growth"])
+    q, _ = quarter_mesh(case, data["mesh"]["s0_over_a"], data["mesh"]["growth"])
     index = {n: i for i, n in enumerate(data["nodes"]["top"])}
     grid = f_top * (np.arange(table_points + 1) / table_points) ** 3
     table = np.zeros((len(grid), len(index)))
     for i, F in enumerate(grid[1:], start=1):
-        for n, value in hertz_loads(case, q, F).items():
+        for n, value in th.hertz_face_loads(case, q, F).items():
             table[i, index[n]] = value
     return grid, table
 
@@ -283,7 +255,13 @@ def model_3d(case, data, cutoff_hz, loads_of_force, pressure_weighted=False):
             f[node_index[str(n)]] = value
         return 4 * down @ f
     table = 4 * nodal @ down.T                     # forces x modes: the full beam's modal loads (4 quarters)
-    load = lambda F: np.array([np.interp(F, grid, table[:, k]) for k in range(len(kept))])
+
+    def load(F):                                   # the table's rows, linear in F between forces (np.interp's clamping)
+        if F >= grid[-1]:
+            return table[-1]
+        i = max(int(np.searchsorted(grid, F, side="right")) - 1, 0)
+        t = max(F - grid[i], 0.0) / (grid[i + 1] - grid[i])
+        return table[i] + t * (table[i + 1] - table[i])
     # the static residual: CalculiX's static response less the kept modes', both against the pinned end
     w_b = (1 - case["nu_b"] ** 2) / case["E_b"] * hz["E_star"]              # the beam's share of Hertz's approach
     delta_h = lambda F: (max(F, 0.0) / hz["K"]) ** (2 / 3)

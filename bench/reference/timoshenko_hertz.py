@@ -582,6 +582,40 @@ class QuarterBeam:
             f.write(body)
 
 
+def quarter_mesh(case, s0, growth, smax_x, smax_yz, x_must=()):
+    """The quarter beam graded toward the impact point (mm): smallest element s0, growing by
+    `growth` up to smax_x along the beam and smax_yz across; a grid line at half the height
+    (the pinned node's) and at the distances `x_must` from the impact section."""
+    L, h, b = case["L"] * 1e3, case["h"] * 1e3, case["b"] * 1e3
+    X = L / 2 - graded(L / 2, s0, growth, smax_x, must=x_must)[::-1]
+    Y = h - graded(h, s0, growth, smax_yz, must=(h / 2,))[::-1]
+    Z = b / 2 - graded(b / 2, s0, growth, smax_yz)[::-1]
+    return QuarterBeam(X, Y, Z)
+
+
+def hertz_face_loads(case, q, F):
+    """Consistent nodal loads (N, downward) of the quarter of Hertz's pressure of the force F
+    (p0 sqrt(1 - r^2/a^2), a of the two bodies' E*) on the impacted face of the quarter beam q."""
+    hz = hertz_half_space(case)
+    L, b = case["L"] * 1e3, case["b"] * 1e3
+    a = (3 * F * case["R"] / (4 * hz["E_star"])) ** (1 / 3) * 1e3
+    p0 = 3 * F / (2 * math.pi * a * a)
+    p = lambda u, v: p0 * np.sqrt(np.clip(1 - ((u - L / 2) ** 2 + (v - b / 2) ** 2) / a ** 2, 0, None))
+    loads = q.face_integral(1, 2 * q.n[1], p)
+    total = sum(loads.values())
+    if total <= 0:          # a contact radius below the quadrature's spacing: the force at the centre
+        return {q.node_id[(2 * q.n[0], 2 * q.n[1], 2 * q.n[2])]: F / 4}
+    return {n: f * (F / 4) / total for n, f in loads.items()}     # the square-root edge's quadrature: exact total
+
+
+def remove_run_folder(folder, keep):
+    """Removes a CalculiX run's temporary folder, unless it is the caller's `keep` folder."""
+    if keep is None:
+        for name in os.listdir(folder):
+            os.remove(os.path.join(folder, name))
+        os.rmdir(folder)
+
+
 def ccx_number(x):
     """x for a CalculiX input field: ccx reads at most 20 characters of a field, so a longer
     number is cut (-5.84829232448421e-07 would be read as -5.84829232448421e-0); 13 significant
@@ -657,15 +691,10 @@ def beam_local_fe(case, kappa, F, s0_over_a, growth, smax_x=4e-3, smax_yz=2e-3, 
     a = (3 * F * case["R"] / (4 * hz["E_star"])) ** (1 / 3) * 1e3
     p0 = 3 * F / (2 * math.pi * a * a)
     s0, sl = a * s0_over_a, slab * 1e3
-    X = L / 2 - graded(L / 2, s0, growth, smax_x * 1e3, must=(sl,))[::-1]
-    Y = h - graded(h, s0, growth, smax_yz * 1e3, must=(h / 2,))[::-1]
-    Z = b / 2 - graded(b / 2, s0, growth, smax_yz * 1e3)[::-1]
-    q = QuarterBeam(X, Y, Z)
+    q = quarter_mesh(case, s0, growth, smax_x * 1e3, smax_yz * 1e3, x_must=(sl,))
+    X, Y, _ = q.lines
     nx, ny, nz = q.n
-    hertz_p = lambda u, v: p0 * np.sqrt(np.clip(1 - ((u - L / 2) ** 2 + (v - b / 2) ** 2) / a ** 2, 0, None))
-    loads = q.face_integral(1, 2 * ny, hertz_p)
-    scale = (F / 4) / sum(loads.values())       # the quadrature of the square-root edge: exact total
-    loads = {n: f * scale for n, f in loads.items()}
+    loads = hertz_face_loads(case, q, F)
     ones = lambda u, v: np.ones_like(u)
     w_end, w_mid = q.face_integral(0, 0, ones), q.face_integral(0, 2 * nx, ones)
     rho_mm = rho * 1e-12
@@ -697,10 +726,7 @@ def beam_local_fe(case, kappa, F, s0_over_a, growth, smax_x=4e-3, smax_yz=2e-3, 
             elif U and line.strip():
                 break
         steps.append(U)
-    if keep is None:
-        for name in os.listdir(folder):
-            os.remove(os.path.join(folder, name))
-        os.rmdir(folder)
+    remove_run_folder(folder, keep)
     mean = lambda U, w: sum(w[n] * U[n] for n in w) / sum(w.values())
     UA, UB = steps
     # under the contact, down the axis: the pressure-weighted approach minus the displacement at
@@ -767,10 +793,7 @@ def beam_modes_3d(case, size_x, n_y, n_z, count=14, keep=None):
             + f"*STEP\n*FREQUENCY\n{count + 1}, 1.0\n*NODE PRINT, NSET=NLINE\nU\n*END STEP\n")
     folder, path, wall = run_ccx(q, "beam_modes", body, E, nu, rho, keep)
     text = open(path[:-4] + ".dat").read()
-    if keep is None:
-        for name in os.listdir(folder):
-            os.remove(os.path.join(folder, name))
-        os.rmdir(folder)
+    remove_run_folder(folder, keep)
     freqs = ccx_frequencies(text)
     bending = []
     for k, block in enumerate(text.split("displacements (vx,vy,vz)")[1:]):
