@@ -9,6 +9,7 @@ namespace isosid::run {
 void PenaltyComplementarity::set(Eigen::MatrixXd compliance, Eigen::VectorXd stiffness) {
   compliance_ = std::move(compliance);
   stiffness_ = std::move(stiffness);
+  flexibility_ = stiffness_.cwiseInverse();
   forces_.setZero(size());
   trial_forces_.setZero(size());
   gaps_.setZero(size());
@@ -16,8 +17,7 @@ void PenaltyComplementarity::set(Eigen::MatrixXd compliance, Eigen::VectorXd sti
   left_out_.assign(std::size_t(size()), 0);
   pressed_.clear();
   pressed_.reserve(std::size_t(size()));
-  pressed_matrix_.resize(size(), size());  // the pressed points' block is factored in its corner
-  pressed_rhs_.resize(size());
+  pressed_block_.reset(compliance_, flexibility_);
 }
 
 PenaltyComplementarity::Outcome PenaltyComplementarity::solve(const Eigen::VectorXd& free_gaps, int& iterations) {
@@ -38,21 +38,10 @@ void PenaltyComplementarity::list_pressed() {
 }
 
 bool PenaltyComplementarity::pressed_forces(const Eigen::VectorXd& free_gaps, Eigen::VectorXd& forces) {
-  const Eigen::Index r = Eigen::Index(pressed_.size());
   forces.setZero();
-  if (r == 0) return true;
-  for (Eigen::Index b = 0; b < r; ++b) {
-    for (Eigen::Index a = b; a < r; ++a) pressed_matrix_(a, b) = compliance_(pressed_[std::size_t(a)], pressed_[std::size_t(b)]);
-    pressed_matrix_(b, b) += 1.0 / stiffness_(pressed_[std::size_t(b)]);
-    pressed_rhs_(b) = -free_gaps(pressed_[std::size_t(b)]);
-  }
-  // factored in place (an LLT of its own would allocate at every solve)
-  Eigen::Ref<Eigen::MatrixXd> block = pressed_matrix_.topLeftCorner(r, r);
-  Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower> llt(block);
-  if (llt.info() != Eigen::Success) return false;
-  auto rhs = pressed_rhs_.head(r);
-  llt.solveInPlace(rhs);
-  for (Eigen::Index b = 0; b < r; ++b) forces(pressed_[std::size_t(b)]) = rhs(b);
+  if (!pressed_block_.follow(pressed_, is_pressed_)) return false;
+  pressed_block_.solve(free_gaps, forces);
+  for (const Eigen::Index a : pressed_) forces(a) = -forces(a);
   return true;
 }
 

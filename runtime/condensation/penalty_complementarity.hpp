@@ -5,6 +5,8 @@
 // whose matrix is positive definite: one solution, the minimum of 1/2 f^T (C + K^-1) f +
 // g_free^T f over f >= 0. Gap space (gap_space_solve.hpp) solves it at every static solve.
 #pragma once
+#include "condensation/subset_cholesky.hpp"
+
 #include <Eigen/Dense>
 
 #include <vector>
@@ -57,8 +59,8 @@ private:
   std::vector<char> is_pressed_, left_out_;  ///< per point; left_out_: the active-set method's guard
   std::vector<Eigen::Index> pressed_;
   Eigen::VectorXd forces_, trial_forces_, gaps_;
-  Eigen::MatrixXd pressed_matrix_;  ///< points x points; the pressed points' block in its corner
-  Eigen::VectorXd pressed_rhs_;
+  Eigen::VectorXd flexibility_;    ///< per point, 1 / k_i
+  SubsetCholesky pressed_block_;   ///< the pressed points' block of C + K^-1, factored as they change
   bool by_active_set_ = false;
 };
 
