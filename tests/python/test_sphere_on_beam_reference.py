@@ -1,16 +1,14 @@
-"""The shipped sphere on the free-free beam (models/sphere_on_beam_free.scene.toml) against the
-independent 3D reference of bench/reference/beam3d_hertz.md: Hertz's sphere on a 3D CalculiX
-beam by modes, uncertain by about 0.2 % in peak force and duration and 0.1 % in the rest.
+"""The shipped sphere on the free-free beam (models/sphere_on_beam_free.scene.toml, both bodies'
+contact elements at a/8 or finer) against the independent 3D reference of
+bench/reference/beam3d_hertz.md: Hertz's sphere on a 3D CalculiX beam by modes.
 
-The tolerances are those asked of the converged 3D contact: rebound within 0.5 %, E_1F, E_3F
-and E_5F within 2 %, the duration within -2..+1 %. The shipped a/2 resolution already meets
-them (table "sphere-on-beam-refinement" in bench/RESULTS.md).
-
-Its peak force does not meet the -1.5..+2.5 % asked: it is 2.45 % low, because with elements
-growing by 1.6 only about two elements span the contact radius. a/8, with the sphere's
-elements growing by 1.1 and the beam's by 1.3, is within 0.3 %, but its preparation takes
-minutes. So this test holds the peak between 3 % low and the reference: enough to catch a
-regression in the contact, not a convergence claim."""
+Tolerances: peak force and duration within 0.6 %, the sum of the reference's uncertainty (about
+0.2 %, mostly its sphere-side compliance) and the 3D ball's own spread at these gradings (its
+peak force moves by 0.3 % either side between a/6 and a/12 on a rigid plane, table
+"ball-on-plane-grading" in bench/RESULTS.md), rounded up by 0.1 %. Rebound within 0.3 % and
+E_1F, E_3F and E_5F within 1 % (the reference's own uncertainty there is 0.1 % or less; the
+shipped scene lies within 0.05 % of it). Stricter than the bands the converged 3D contact must
+meet (peak -1.5..+2.5 %, duration -2..+1 %, rebound 0.5 %, energies 2 %)."""
 import json
 import os
 
@@ -22,7 +20,7 @@ import isosid
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
-def test_shipped_sphere_on_beam_lies_within_the_3d_references_bands(tmp_path):
+def test_shipped_sphere_on_beam_lies_within_the_3d_reference(tmp_path):
     with open(os.path.join(ROOT, "bench", "reference", "beam3d_hertz_free.json")) as f:
         ref = json.load(f)
     out = tmp_path / "sphere_on_beam"
@@ -36,8 +34,8 @@ def test_shipped_sphere_on_beam_lies_within_the_3d_references_bands(tmp_path):
     def rel(value, reference):
         return value / reference - 1
 
-    assert -0.03 <= rel(impact.peak_force_n, ref["peak_force_n"]) <= 0.0
-    assert -0.02 <= rel(impact.duration_s, ref["duration_s"]) <= 0.01
-    assert abs(rel(rebound, ref["rebound_m_s"])) <= 0.005
+    assert abs(rel(impact.peak_force_n, ref["peak_force_n"])) <= 0.006
+    assert abs(rel(impact.duration_s, ref["duration_s"])) <= 0.006
+    assert abs(rel(rebound, ref["rebound_m_s"])) <= 0.003
     for label in ("1F", "3F", "5F"):
-        assert abs(rel(energy[label], ref["modes"][label]["energy_ratio"])) <= 0.02, label
+        assert abs(rel(energy[label], ref["modes"][label]["energy_ratio"])) <= 0.01, label

@@ -54,7 +54,7 @@ TEST_CASE("a 3D ball on a plane: graded in depth under the contact it agrees wit
   // and short by up to 2 % (bench contact-convergence), and the 3D pole adds its own discrete
   // scatter: measured +1.4 % in peak force, -3.3 % in duration; a/8 brings both within 0.7 %
   // (bench ball-on-plane)
-  test::copy_model_file(dir, "sphere_impactor_macneal.model.toml");
+  test::write_coarse_sphere_impactor(dir);
   const json graded = test::run_scene(dir, ball_scene("sphere_impactor_macneal"), 0);
   const double peak = relative(graded, axisymmetric, "peak_force_n"), duration = relative(graded, axisymmetric, "duration_s");
   INFO("depth-graded 3D ball against the axisymmetric model: peak " << peak << ", duration " << duration);
@@ -63,7 +63,7 @@ TEST_CASE("a 3D ball on a plane: graded in depth under the contact it agrees wit
 
   // the same ball with its depth elements left a third of the diameter: 11-13 % stiff
   std::ofstream(dir.path("shallow.model.toml"))
-      << replace(test::model_text("sphere_impactor_macneal.model.toml"),
+      << replace(test::coarse_sphere_impactor_text(),
                  "[[refinement.graded]]\ndirection = \"eta\"\ntoward = 0.0\nsmallest = 0.14e-3\ngrowth = 1.6\n", "");
   const json shallow = test::run_scene(dir, ball_scene("shallow"), 0);
   const double shallow_peak = relative(shallow, axisymmetric, "peak_force_n");
@@ -80,7 +80,7 @@ TEST_CASE("a 3D ball on a plane: at a/8, its elements growing by 1.1, it lies wi
   // (measured -0.09 % and -0.25 %; growing by 1.3 instead they differ by 0.7 %, by 1.6 by 1-3 %).
   const test::ScratchDir dir("ball-on-plane-converged");
   const json axisymmetric = axisymmetric_run(dir);
-  std::string model = test::model_text("sphere_impactor_macneal.model.toml");
+  std::string model = test::coarse_sphere_impactor_text();
   model = replace(model, "[refinement]\n", "[contact_resolution]\ncontact_radius = 0.0002428601408847562\nelements_per_radius = 8\n\n[refinement]\n");
   for (int direction = 0; direction < 2; ++direction)
     model = replace(model, "smallest = 0.14e-3\ngrowth = 1.6", "smallest = \"contact\"\ngrowth = 1.1");

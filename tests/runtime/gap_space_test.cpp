@@ -32,7 +32,7 @@ void check_same_impact(const json& gap, const json& general, double tolerance, d
 
 TEST_CASE("gap space: impacts on a beam equal the general path's on the same SIDs, slides re-pair, a second impact pairs again", "[runtime][massless][gap-space]") {
   const test::ScratchDir dir("gap-space");
-  test::copy_model_file(dir, "sphere_impactor_macneal.model.toml");
+  test::write_coarse_sphere_impactor(dir);
   std::ofstream(dir.path("beam.model.toml")) << test::free_beam_model();
   const std::string gap_space = "formulation = \"gap-space\"\n";
 
@@ -86,7 +86,7 @@ TEST_CASE("gap space: impacts on a beam equal the general path's on the same SID
 
 TEST_CASE("gap space: a contact it cannot solve is refused in one line naming the field", "[runtime][gap-space]") {
   const test::ScratchDir dir("gap-space-refused");
-  test::copy_model_file(dir, "sphere_impactor_macneal.model.toml");
+  test::write_coarse_sphere_impactor(dir);
   std::ofstream(dir.path("beam.model.toml")) << test::free_beam_model();
   for (const std::string& lines : {std::string("formulation = \"gap-space\"\nfriction = 0.2\n"),
                                    std::string("formulation = \"gap-space\"\nenforcement = \"exact\"\n"),

@@ -18,7 +18,7 @@ using nlohmann::json;
 
 TEST_CASE("impact modes: energies, restitution and bending labels of a centric impact on a free beam", "[runtime][massless][impact-modes]") {
   const test::ScratchDir dir("impact-modes");
-  test::copy_model_file(dir, "sphere_impactor_macneal.model.toml");
+  test::write_coarse_sphere_impactor(dir);
   // 100 x 10 x 15 mm, bending in y (10 mm) lowest; graded to 0.3 mm under the centre of the top face
   std::ofstream(dir.path("beam.model.toml")) << test::free_beam_model();
   const double v0 = 1.1, sphere_mass = 5.58e-3, beam_mass = 7800 * 0.1 * 0.01 * 0.015;

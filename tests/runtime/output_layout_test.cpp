@@ -244,7 +244,7 @@ TEST_CASE("runs of every kind write what the output tables hold, and the tables 
   const std::string out = dir.path("out-s.scene.toml");
   // a flexible target: the sphere on the free beam, general (with point monitors on the beam)
   // and in gap space (impact modes)
-  test::copy_model_file(dir, "sphere_impactor_macneal.model.toml");
+  test::write_coarse_sphere_impactor(dir);
   std::ofstream(dir.path("beam.model.toml")) << test::free_beam_model();
   std::string monitors;
   for (const char* quantity : {"velocity", "position"})

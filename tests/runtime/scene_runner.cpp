@@ -54,6 +54,17 @@ std::string model_text(const std::string& file) {
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
+std::string coarse_sphere_impactor_text() {
+  std::string text = model_text("sphere_impactor_macneal.model.toml");
+  for (int direction = 0; direction < 2; ++direction)  // along the surface and in depth
+    text = replace(text, "smallest = 0.03e-3\ngrowth = 1.1", "smallest = 0.14e-3\ngrowth = 1.6");
+  return text;
+}
+
+void write_coarse_sphere_impactor(const ScratchDir& dir) {
+  std::ofstream(dir.path("sphere_impactor_macneal.model.toml")) << coarse_sphere_impactor_text();
+}
+
 double rel_error(const nlohmann::json& s, const std::string& key) {
   return std::abs(s["reference"][key]["rel_error"].get<double>());  // summary.json's errors are signed
 }
