@@ -23,6 +23,11 @@ public:
 
   enum class Outcome { Solved, NotPositiveDefinite, NoActiveSet, NotFinite };
 
+  PenaltyComplementarity() = default;
+  // its factor reads this object's compliance and flexibilities in place
+  PenaltyComplementarity(const PenaltyComplementarity&) = delete;
+  PenaltyComplementarity& operator=(const PenaltyComplementarity&) = delete;
+
   /// The points' compliance (symmetric, positive semidefinite) and penalty stiffness k_i > 0;
   /// forgets the last active set.
   void set(Eigen::MatrixXd compliance, Eigen::VectorXd stiffness);

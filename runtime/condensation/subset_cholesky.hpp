@@ -13,7 +13,8 @@ namespace isosid::run {
 
 class SubsetCholesky {
 public:
-  /// The matrix is A + diag(d) (A symmetric, only read); forgets the factor.
+  /// The matrix is A + diag(d) (A symmetric), both read in place: they must outlive the factor
+  /// and stay as they are while it is used. Forgets the factor.
   void reset(const Eigen::MatrixXd& A, const Eigen::VectorXd& d);
 
   /// Factors the block of the indices in `members` (each once, any order; `is_member` flags
