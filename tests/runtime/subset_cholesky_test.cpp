@@ -81,3 +81,34 @@ TEST_CASE("subset Cholesky: a block that is not positive definite is reported, a
   CHECK(x(1) == Approx(2.0));
   CHECK(x(2) == Approx(3.0));
 }
+
+TEST_CASE("subset Cholesky: an index whose append makes the block indefinite is reported, within a set large enough for updates",
+          "[runtime][unit][gap-space]") {
+  // the identity, except that indices 20 and 21 together make the block indefinite (eigenvalue -1)
+  const Eigen::Index n = 30;
+  Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n, n);
+  A(20, 21) = A(21, 20) = 2.0;
+  const Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
+  run::SubsetCholesky factor;
+  factor.reset(A, d);
+  auto set_of = [&](const std::vector<Eigen::Index>& members) {
+    std::vector<char> flags(std::size_t(n), 0);
+    for (const Eigen::Index i : members) flags[std::size_t(i)] = 1;
+    return flags;
+  };
+  std::vector<Eigen::Index> members;
+  for (Eigen::Index i = 0; i <= 20; ++i) members.push_back(i);
+  REQUIRE(factor.follow(members, set_of(members)));
+  // two changes in 21: an update (one removal, one append), whose append finds no pivot
+  members.erase(members.begin());
+  members.push_back(21);
+  CHECK_FALSE(factor.follow(members, set_of(members)));
+  // without index 20 the block is the identity again
+  members.erase(std::find(members.begin(), members.end(), Eigen::Index(20)));
+  REQUIRE(factor.follow(members, set_of(members)));
+  Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 30.0), x = Eigen::VectorXd::Zero(n);
+  factor.solve(b, x);
+  for (const Eigen::Index i : members) CHECK(x(i) == Approx(b(i)));
+  CHECK(x(0) == 0.0);
+  CHECK(x(20) == 0.0);
+}
