@@ -67,24 +67,8 @@ F_TOP = 900.0                                  # the load table's largest force 
 def quarter_mesh(case, s0_over_a, growth):
     """The CalculiX quarter beam graded to s0 = s0_over_a times the peak's Hertz contact radius
     (4 mm along the beam and 2 mm across at most), and s0 [m]."""
-    hz = th.hertz_half_space(case)
-    s0 = (3 * hz["peak_force_n"] * case["R"] / (4 * hz["E_star"])) ** (1 / 3) * 1e3 * s0_over_a
+    s0 = th.contact_radius_m(case, th.hertz_half_space(case)["peak_force_n"]) * 1e3 * s0_over_a
     return th.quarter_mesh(case, s0, growth, 4.0, 2.0), s0 * 1e-3
-
-
-def read_blocks(path):
-    """The displacement blocks of a CalculiX .dat file: [{node: (ux, uy, uz)}] in order."""
-    blocks = []
-    for block in open(path).read().split("displacements (vx,vy,vz)")[1:]:
-        U = {}
-        for line in block.splitlines()[1:]:
-            parts = line.split()
-            if len(parts) == 4 and parts[0].isdigit():
-                U[int(parts[0])] = tuple(float(v) for v in parts[1:])
-            elif U and line.strip():
-                break
-        blocks.append(U)
-    return blocks
 
 
 def beam_3d(case, s0_over_a, growth, n_modes, keep=None):
@@ -105,7 +89,7 @@ def beam_3d(case, s0_over_a, growth, n_modes, keep=None):
     body = sets + f"*STEP\n*FREQUENCY\n{n_modes + 1}\n*NODE PRINT, NSET=NOUT\nU\n*END STEP\n"
     folder, path, wall_modes = th.run_ccx(q, "beam3d_modes", body, E, nu, rho, keep)
     freqs = th.ccx_frequencies(open(path[:-4] + ".dat").read())
-    blocks = read_blocks(path[:-4] + ".dat")
+    blocks = th.ccx_displacements(open(path[:-4] + ".dat").read())
     th.remove_run_folder(folder, keep)
     # statics: the Hertz pressure of each force and the inertia relief, pinned at NFIX
     rho_mm = rho * 1e-12
@@ -117,7 +101,7 @@ def beam_3d(case, s0_over_a, growth, n_modes, keep=None):
         steps += ("*STEP\n*STATIC\n*BOUNDARY\nNFIX, 2, 2\n*CLOAD, OP=NEW\n" + "".join(f"{n}, 2, {th.ccx_number(-f)}\n" for n, f in loads.items())
                   + f"*DLOAD, OP=NEW\nEALL, GRAV, {th.ccx_number(g_relief)}, 0., 1., 0.\n*NODE PRINT, NSET=NOUT\nU\n*END STEP\n")
     folder, path, wall_static = th.run_ccx(q, "beam3d_static", sets + steps, E, nu, rho, keep)
-    statics = read_blocks(path[:-4] + ".dat")
+    statics = th.ccx_displacements(open(path[:-4] + ".dat").read())
     th.remove_run_folder(folder, keep)
     if len(blocks) != len(freqs) or len(statics) != len(FORCES):
         raise RuntimeError(f"CalculiX output: {len(freqs)} frequencies, {len(blocks)} mode blocks, {len(statics)} static blocks")
@@ -324,7 +308,7 @@ def main():
     w_s = (1 - case["nu_s"] ** 2) / case["E_s"] * hz["E_star"]               # the sphere's share of Hertz's approach
     delta_h = lambda F: (max(F, 0.0) / hz["K"]) ** (2 / 3)
     sphere_side = lambda F: w_s * delta_h(F) + sph["C_m_n"] * F
-    out, p = [], None
+    out = []
     p = out.append
 
     # the integrator against the classical model (Hertz's whole approach, the Timoshenko beam)

@@ -148,6 +148,12 @@ def hertz_half_space(case):
             "duration_s": TC_FACTOR * dmax / case["v0"], "a_max_m": math.sqrt(case["R"] * dmax)}
 
 
+def contact_radius_m(case, F):
+    """Hertz's contact radius of the force F between the sphere and a half-space of the beam's
+    material [m]."""
+    return (3 * F * case["R"] / (4 * hertz_half_space(case)["E_star"])) ** (1 / 3)
+
+
 # ------------------------------------------------------------------------ Timoshenko beam
 def cowper_kappa(nu):
     return 10.0 * (1 + nu) / (12 + 11 * nu)
@@ -596,9 +602,8 @@ def quarter_mesh(case, s0, growth, smax_x, smax_yz, x_must=()):
 def hertz_face_loads(case, q, F):
     """Consistent nodal loads (N, downward) of the quarter of Hertz's pressure of the force F
     (p0 sqrt(1 - r^2/a^2), a of the two bodies' E*) on the impacted face of the quarter beam q."""
-    hz = hertz_half_space(case)
     L, b = case["L"] * 1e3, case["b"] * 1e3
-    a = (3 * F * case["R"] / (4 * hz["E_star"])) ** (1 / 3) * 1e3
+    a = contact_radius_m(case, F) * 1e3
     p0 = 3 * F / (2 * math.pi * a * a)
     p = lambda u, v: p0 * np.sqrt(np.clip(1 - ((u - L / 2) ** 2 + (v - b / 2) ** 2) / a ** 2, 0, None))
     loads = q.face_integral(1, 2 * q.n[1], p)
@@ -621,6 +626,22 @@ def ccx_number(x):
     number is cut (-5.84829232448421e-07 would be read as -5.84829232448421e-0); 13 significant
     digits in exponent form fit, sign and three-digit exponent included."""
     return f"{x:.12e}"
+
+
+def ccx_displacements(dat_text):
+    """The displacement blocks of a CalculiX .dat text (*NODE PRINT U, one per step or mode), in
+    order: [{node: (ux, uy, uz)}] in the file's units."""
+    blocks = []
+    for block in dat_text.split("displacements (vx,vy,vz)")[1:]:
+        U = {}
+        for line in block.splitlines()[1:]:
+            parts = line.split()
+            if len(parts) == 4 and parts[0].isdigit():
+                U[int(parts[0])] = tuple(float(v) for v in parts[1:])
+            elif U and line.strip():
+                break
+        blocks.append(U)
+    return blocks
 
 
 def ccx_frequencies(dat_text):
@@ -685,10 +706,9 @@ def beam_local_fe(case, kappa, F, s0_over_a, growth, smax_x=4e-3, smax_yz=2e-3, 
     deflections, the Saint-Venant anticlastic offset of the top face nu (2 h^2 + b^2)/24 M/EI)
     and the half-space's pressure-weighted approach of the beam's side (0.8 of its centre
     value) are taken out; what is left is the local correction C_b F. Lengths in mm for ccx."""
-    hz = hertz_half_space(case)
     E, nu, rho = case["E_b"], case["nu_b"], case["rho_b"]
     L, h, b = case["L"] * 1e3, case["h"] * 1e3, case["b"] * 1e3
-    a = (3 * F * case["R"] / (4 * hz["E_star"])) ** (1 / 3) * 1e3
+    a = contact_radius_m(case, F) * 1e3
     p0 = 3 * F / (2 * math.pi * a * a)
     s0, sl = a * s0_over_a, slab * 1e3
     q = quarter_mesh(case, s0, growth, smax_x * 1e3, smax_yz * 1e3, x_must=(sl,))
@@ -716,16 +736,8 @@ def beam_local_fe(case, kappa, F, s0_over_a, growth, smax_x=4e-3, smax_yz=2e-3, 
             + f"EREST, GRAV, {ccx_number(g_relief)}, 0., 1., 0.\nESLAB, GRAV, {ccx_number(g_slab - g_relief)}, 0., -1., 0.\n"
             + "*NODE PRINT, NSET=NOUT\nU\n*END STEP\n")
     folder, path, wall = run_ccx(q, "beam_local", body, E, nu, rho, keep)
-    steps = []
-    for block in open(path[:-4] + ".dat").read().split("displacements (vx,vy,vz)")[1:]:
-        U = {}
-        for line in block.splitlines()[1:]:
-            parts = line.split()
-            if len(parts) == 4 and parts[0].isdigit():
-                U[int(parts[0])] = -float(parts[2]) * 1e-3          # downward, m
-            elif U and line.strip():
-                break
-        steps.append(U)
+    # downward, m
+    steps = [{n: -u[1] * 1e-3 for n, u in U.items()} for U in ccx_displacements(open(path[:-4] + ".dat").read())]
     remove_run_folder(folder, keep)
     mean = lambda U, w: sum(w[n] * U[n] for n in w) / sum(w.values())
     UA, UB = steps
@@ -796,8 +808,8 @@ def beam_modes_3d(case, size_x, n_y, n_z, count=14, keep=None):
     remove_run_folder(folder, keep)
     freqs = ccx_frequencies(text)
     bending = []
-    for k, block in enumerate(text.split("displacements (vx,vy,vz)")[1:]):
-        u = np.array([[float(v) for v in l.split()[1:4]] for l in block.splitlines()[1:] if len(l.split()) == 4 and l.split()[0].isdigit()])
+    for k, U in enumerate(ccx_displacements(text)):
+        u = np.array(list(U.values()))
         if k < len(freqs) and freqs[k] > 1.0 and np.abs(u[:, 1]).max() > 2 * np.abs(u[:, 0]).max():
             bending.append(freqs[k])
     return {"frequencies_hz": {f"{2 * k + 1}F": f for k, f in enumerate(bending)}, "all_hz": freqs,
