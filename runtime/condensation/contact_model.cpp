@@ -14,7 +14,7 @@ double ContactModel::forces(const QuasistaticTerms& terms, const Eigen::VectorXd
     const double p = terms.pressure(k, gaps(k));
     if (p <= 0) continue;
     const double fn = p * terms.weight(k);
-    energy += 0.5 * p * fn / terms.penalty(k);
+    energy += terms.energy(k, gaps(k)) * terms.weight(k);
     force.noalias() += fn * terms.V.col(k);
     if (terms.friction) friction.noalias() += fn * terms.T.col(k);
   }
@@ -28,7 +28,7 @@ Eigen::Index ContactModel::jacobian_terms(const QuasistaticTerms& terms, const E
   Eigen::Index r = 0;
   for (Eigen::Index k = 0; k < terms.count; ++k) {
     if (terms.pressure(k, gaps(k)) <= 0) continue;
-    const double stiffness = terms.penalty(k) * terms.weight(k);
+    const double stiffness = terms.stiffness(k, gaps(k)) * terms.weight(k);
     weights_(r) = stiffness;
     V_.col(r) = terms.V.col(k);
     // without friction the weights stand for U (QuasistaticJacobian::solve)
@@ -50,8 +50,7 @@ double ContactModel::model_residual(const QuasistaticJacobian& K, const Quasista
 double ContactModel::energy_along(const QuasistaticTerms& terms, double alpha) const {
   double energy = 0;
   for (Eigen::Index k = 0; k < terms.count; ++k) {
-    const double p = terms.pressure(k, gaps_(k) - alpha * rates_(k));
-    if (p > 0) energy += 0.5 * p * p * terms.weight(k) / terms.penalty(k);
+    energy += terms.energy(k, gaps_(k) - alpha * rates_(k)) * terms.weight(k);
   }
   return energy;
 }
@@ -72,7 +71,7 @@ int ContactModel::solve(const QuasistaticJacobian& K, const QuasistaticTerms& te
   for (int iteration = 1; iteration <= kMaxIterations; ++iteration) {
     const Eigen::Index r = jacobian_terms(terms, gaps_);
     for (Eigen::Index k = 0; k < m; ++k) pressed_[std::size_t(k)] = terms.pressure(k, gaps_(k)) > 0;
-    // the Newton move is -step_; without friction U = V diag(c_p w), and K can use the symmetry
+    // the Newton move is -step_; without friction U = V diag(k w), and K can use the symmetry
     K.solve(U_, V_, r, R_, step_, terms.friction ? nullptr : &weights_);
     rates_.head(m).noalias() = terms.V.leftCols(m).transpose() * step_;
     double alpha = 1;

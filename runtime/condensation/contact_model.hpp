@@ -1,8 +1,8 @@
 // The quasistatic contact problem on its linear model: every recorded contact point's gap
-// linear in the quasistatic modes z (QuasistaticTerms), so the contact forces are piecewise
-// linear in z and, without friction, the energy
-//   Pi(z0 + d) = 1/2 z^T K z - z . loads + sum 1/2 w p(g + v^T d)^2 / c_p
-// piecewise quadratic and strictly convex. Semismooth Newton on it (the active set of the
+// linear in the quasistatic modes z (QuasistaticTerms). Without friction the problem minimizes
+//   Pi(z0 + d) = 1/2 z^T K z - z . loads + sum w E(g + v^T d)
+// with E each point's contact-law energy (1/2 p^2 / c_p for the penalty law, whose forces are
+// piecewise linear in z and Pi piecewise quadratic), strictly convex. Semismooth Newton on it (the active set of the
 // model's gaps, an Armijo search on the model's energy whose terms cost O(points) per trial)
 // ends where the active set repeats, at the model's exact solution. The outer Newton of
 // QuasistaticModes then needs one pass over the real contact points per step instead of one
@@ -21,11 +21,11 @@ public:
   static constexpr int kMaxIterations = 50;
 
   /// The generalized contact force of the recorded points at gaps `gaps` (its friction part
-  /// separately; sized n); returns the merit energy sum 1/2 w p^2 / c_p.
+  /// separately; sized n); returns the merit energy sum w E(g).
   double forces(const QuasistaticTerms& terms, const Eigen::VectorXd& gaps, Eigen::VectorXd& force, Eigen::VectorXd& friction) const;
   /// Collects the Jacobian terms of the points pressed at `gaps`: V = v and, with friction,
-  /// U = c_p w (v + t) in the first r columns of V() and U() (c_p w itself in the first r of
-  /// weights_, which stand for U = V diag(c_p w) without friction); returns r.
+  /// U = k w (v + t) in the first r columns of V() and U() (k w itself, k the law's stiffness,
+  /// in the first r of weights_, which stand for U = V diag(k w) without friction); returns r.
   Eigen::Index jacobian_terms(const QuasistaticTerms& terms, const Eigen::VectorXd& gaps) const;
   const Eigen::MatrixXd& U() const { return U_; }
   const Eigen::MatrixXd& V() const { return V_; }
@@ -56,7 +56,7 @@ private:
   double energy_along(const QuasistaticTerms& terms, double alpha) const;
 
   mutable Eigen::MatrixXd U_, V_;
-  mutable Eigen::VectorXd weights_;  ///< c_p w of the Jacobian's terms: U = V diag(weights_) without friction
+  mutable Eigen::VectorXd weights_;  ///< k w of the Jacobian's terms (k the law's stiffness): U = V diag(weights_) without friction
   mutable Eigen::VectorXd gaps_, rates_, z_, R_, step_, force_, friction_;
   mutable std::vector<char> pressed_;
   mutable bool solved_ = false;

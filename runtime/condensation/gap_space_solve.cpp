@@ -85,7 +85,7 @@ void GapSpaceSolve::condense(const double* y) {
   Eigen::VectorXd penalty_stiffness(m);
   for (Eigen::Index i = 0; i < m; ++i) {
     const StackedPair& p = pairs_[std::size_t(i)];
-    penalty_stiffness(i) = p.contact->penalty() * p.contact->surface().weight(p.contact->gap_pairing().pairs()[p.k].g);
+    penalty_stiffness(i) = p.contact->law().linear_stiffness() * p.contact->surface().weight(p.contact->gap_pairing().pairs()[p.k].g);
   }
   points_.set(V.transpose() * W_, std::move(penalty_stiffness));
 }

@@ -224,7 +224,7 @@ int QuasistaticModes::newton(const double* y) const {
 
 void QuasistaticModes::update_window() const {
   window_ = 0;
-  for (Eigen::Index k = 0; k < terms_.count; ++k) window_ = std::max(window_, 2 * (terms_.multiplier(k) / terms_.penalty(k) - terms_.gap(k)));
+  for (Eigen::Index k = 0; k < terms_.count; ++k) window_ = std::max(window_, -2 * terms_.law[std::size_t(k)]->effective_gap(terms_.gap(k), terms_.multiplier(k)));
 }
 
 double QuasistaticModes::friction_power(const double* y, const double* ydot, Eigen::Index n) const {

@@ -11,6 +11,7 @@ HertzContact::HertzContact(const HertzContactSpec& spec, const FloatingBody& a, 
                             (1 - spec.poisson_ratio[1] * spec.poisson_ratio[1]) / spec.youngs_modulus[1];
   const double effective_radius = ra * rb / (ra + rb);
   stiffness_ = 4.0 / 3.0 / compliance * std::sqrt(effective_radius);
+  law_ = make_contact_law("hertz", {stiffness_});
 }
 
 double HertzContact::gap(const double* y) const { return (a_.r(y) - b_.r(y)).norm() - ra_ - rb_; }
@@ -28,11 +29,11 @@ ContactState HertzContact::apply(const double* y, GeneralizedForce& fa, Generali
   const double overlap = ra_ + rb_ - distance;
   if (!(overlap > 0) || !(distance > 0)) return state;
   const Eigen::Vector3d normal = between / distance;  // from b to a
-  const double magnitude = stiffness_ * overlap * std::sqrt(overlap);
+  const double magnitude = law_->pressure(-overlap);
   state.force = magnitude * normal;
   state.active_points = 1;
   state.max_penetration = overlap;
-  state.penalty_energy = 0.4 * magnitude * overlap;  // 2/5 K delta^(5/2)
+  state.penalty_energy = law_->energy(-overlap);
   static const Eigen::MatrixXd no_shapes(3, 0);
   // through both centres: no torque on either sphere
   a_.apply_force(state.force, Eigen::Vector3d::Zero(), no_shapes, a_.orientation(y).toRotationMatrix(), fa);

@@ -1,11 +1,11 @@
-// Hertz's law between two rigid spheres: the reference model "Hertz" of [R2] (docs/references.md)
-// for impacts of spheres whose flexibility is local to the contact. The spheres overlap by
-// delta = r_a + r_b - |c_a - c_b| and push each other apart along the line of centres with
-// F = K delta^(3/2), K = 4/3 E* sqrt(R*), 1/E* = (1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b,
-// 1/R* = 1/r_a + 1/r_b (Johnson, Contact Mechanics, eq. 4.22-4.23); the stored energy is
-// 2/5 K delta^(5/2). Frictionless and undamped: the impact is elastic.
+// Two rigid spheres touching by Hertz's law (contact/hertz_law.hpp): the reference model "Hertz"
+// of [R2] (docs/references.md) for impacts of spheres whose flexibility is local to the contact.
+// The spheres overlap by delta = r_a + r_b - |c_a - c_b| and push each other apart along the
+// line of centres with the law's force K delta^(3/2), K = 4/3 E* sqrt(R*), 1/E* = (1 - nu_a^2)/E_a
+// + (1 - nu_b^2)/E_b, 1/R* = 1/r_a + 1/r_b. Frictionless and undamped: the impact is elastic.
 #pragma once
 #include "body/floating_body.hpp"
+#include "contact/contact_law.hpp"
 #include "contact/surface_contact.hpp"
 #include "scene/scene.hpp"
 
@@ -30,6 +30,7 @@ private:
   HertzContactSpec spec_;
   const FloatingBody &a_, &b_;
   double ra_, rb_, stiffness_;
+  std::unique_ptr<ContactLaw> law_;  ///< Hertz's, of stiffness_
 };
 
 }  // namespace isosid::run

@@ -35,8 +35,10 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
     : spec_(spec), penalty_source_(spec.penalty_source), body_(body), target_(target), surface_(find_surface(spec, body)), dim_(body.sid().dim()) {
   if (spec_.penalty <= 0) {  // none in the scene: derived from the materials and the contact resolution
     derived_ = true;
-    spec_.penalty = derived_penalty(0);
     penalty_source_ = "derived: 1000 E*/h";
+    set_penalty(derived_penalty(0));
+  } else {
+    set_penalty(spec_.penalty);
   }
   edge_ = edge_points(surface_, body.sid().analysis, format::find_master_patch(body.sid(), surface_.master_patch));
   shape_columns_ = surface_.Psi.transpose();
@@ -69,8 +71,14 @@ void SurfaceContact::fit_penalty_to_contact_radius(double contact_radius) {
   if (!derived_) return;  // a given penalty stays (its source may tell how it was derived before)
   const double fitted = derived_penalty(contact_radius);
   if (fitted == spec_.penalty) return;  // the elements are larger than the contact radius
-  spec_.penalty = fitted;
+  set_penalty(fitted);
   penalty_source_ = "derived: 1000 E*/a";
+}
+
+void SurfaceContact::set_penalty(double penalty) {
+  spec_.penalty = penalty;
+  law_ = make_contact_law(spec_.law, {penalty});
+  if (!law_) throw format::InputError(spec_.name, "law", "no contact law named '" + spec_.law + "'");
 }
 
 template <class F>
@@ -259,7 +267,7 @@ ContactState SurfaceContact::apply(const double* y, GeneralizedForce& slave_forc
     s.outside_interface += surface_.in_interface.size() > 0 && surface_.in_interface(g) == 0;  // Craig-Bampton SIDs mark them
     s.max_penetration = std::max(s.max_penetration, -t.gap);
     // the energy of the actual penetration (exact contact: none once the gaps have closed)
-    if (t.gap < 0) s.penalty_energy += 0.5 * spec_.penalty * t.gap * t.gap * w;
+    s.penalty_energy += law_->energy(t.gap) * w;
   };
   s.from_static_solve = for_each_pressed(y, load);
   return s;
@@ -320,10 +328,10 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
   // bodies' frames: it is known to a few eps of those distances
   const double origins = body_.r(y).norm() + (master ? master->r(y).norm() : 0.0);
   const double clearance = for_each_point(y, ContactTarget::Fill::Loads, [&](Eigen::Index g, const auto& Psi, const Eigen::Vector3d& P, const Eigen::Matrix3d& A, TargetPoint& t) {
-    const double lambda = spec_.exact ? multiplier_[std::size_t(g)] : 0.0;
+    const double lambda = multiplier(g);
     if (pressure(g, t.gap) <= 0) {
       if (!same_pose) free_gap_[std::size_t(g)] = t.gap;
-      if (t.gap - lambda / spec_.penalty >= left_out_from(g)) return;
+      if (law_->effective_gap(t.gap, lambda) >= left_out_from(g)) return;
       target_.fill_loads(y, t);  // recorded free: its rows on the target too
     } else {
       terms.gap_resolution = std::max(terms.gap_resolution, kGapRoundoff * (origins + P.norm() + t.body_point.norm()));
@@ -331,7 +339,7 @@ void SurfaceContact::add_quasistatic_terms(const double* y, QuasistaticTerms& te
       if (!spec_.exact && recorded_pass_[std::size_t(g)] != pass_ - 1) ++terms.newly_pressed;
       pressed_at_pose_[std::size_t(g)] = 1;
     }
-    const Eigen::Index k = terms.add_point(t.gap, lambda, spec_.penalty, surface_.weight(g));
+    const Eigen::Index k = terms.add_point(t.gap, lambda, *law_, surface_.weight(g));
     recorded_pass_[std::size_t(g)] = pass_;
     if (!spec_.exact) {
       if (recorded_count_ == recorded_.size()) recorded_.emplace_back();
@@ -425,7 +433,7 @@ double SurfaceContact::unpaired_min_gap(const double* y) const {
   // leave it out unprojected (the event functions evaluate this at every step, and a refined
   // ball has thousands of points).
   const double clearance = for_each_point(y, ContactTarget::Fill::Gap, [&](Eigen::Index g, const auto&, const Eigen::Vector3d&, const Eigen::Matrix3d&, const TargetPoint& t) {
-    smallest = std::min(smallest, spec_.exact ? t.gap - multiplier_[std::size_t(g)] / spec_.penalty : t.gap);
+    smallest = std::min(smallest, law_->effective_gap(t.gap, multiplier(g)));
   }, [&](Eigen::Index) { return smallest; }, never);
   if (clearance > 0) return clearance;
   // no point is a candidate of the target (all beside it): clear, by an unknown positive gap

@@ -1,15 +1,17 @@
 // Gauss-point penalty contact ([R1] eq. 22-25, docs/references.md) of a flexible body's contact
 // surface (the slave) against a target: a fixed surface, a rigid body or another flexible body's
-// master patch. Each slave point that penetrates the target carries c_p |g| w along the
-// target's normal plus regularized Coulomb friction against the relative sliding velocity;
-// body targets receive the reaction. A bounding-sphere broad phase skips the whole surface
-// while it is clear of the target. Exact contact on a massless boundary ([R3]) is the
-// augmented Lagrangian: each point carries the pressure max(0, lambda - c_p g) with a
-// multiplier lambda that the static solve updates (Uzawa) until the active gaps close.
+// master patch. Each slave point that penetrates the target carries its contact law's pressure
+// (contact/contact_law.hpp; the penalty law's c_p |g|) over its weight w along the target's
+// normal plus regularized Coulomb friction against the relative sliding velocity; body targets
+// receive the reaction. A bounding-sphere broad phase skips the whole surface while it is clear
+// of the target. Exact contact on a massless boundary ([R3]) is the augmented Lagrangian: each
+// point carries the pressure max(0, lambda - c_p g) with a multiplier lambda that the static
+// solve updates (Uzawa) until the active gaps close.
 #pragma once
 #include "body/floating_body.hpp"
 #include "condensation/gap_pairing.hpp"
 #include "condensation/quasistatic_terms.hpp"
+#include "contact/contact_law.hpp"
 #include "contact/contact_target.hpp"
 #include "contact/gap_bounds.hpp"
 #include "scene/scene.hpp"
@@ -25,7 +27,7 @@ struct ContactState {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  ///< total force on the slave body, world frame, N
   int active_points = 0;
   double max_penetration = 0;   ///< m (positive)
-  double penalty_energy = 0;    ///< J, sum of 1/2 c_p g^2 w over active points
+  double penalty_energy = 0;    ///< J, the contact law's energy of the penetration over active points
   double friction_power = 0;    ///< W dissipated by friction (>= 0)
   int edge_points = 0;          ///< active points in the surface's edge elements (surface_edge.hpp)
   int outside_interface = 0;    ///< active points a Craig-Bampton interface does not cover (normal modes alone move them)
@@ -67,6 +69,10 @@ public:
   bool frictionless() const { return spec_.friction == 0; }
   /// Penalty factor, N/m^3: the scene's, or derived by default_penalty() where it gave none.
   double penalty() const { return spec_.penalty; }
+  /// The normal law, of the penalty's stiffness.
+  const ContactLaw& law() const { return *law_; }
+  /// Its name in the table of laws (the scene's `law`).
+  const std::string& law_name() const { return spec_.law; }
   /// Where the penalty came from: "scene", or the rule that derived it.
   const std::string& penalty_source() const { return penalty_source_; }
   /// A derived penalty follows the contact radius (or half-width) the impact is expected to
@@ -94,12 +100,12 @@ public:
   double update_multipliers(const double* y) const;
 
 private:
-  /// Contact pressure of point g at gap `gap`, Pa: c_p |g| inside the target for penalty
-  /// contact, max(0, lambda_g - c_p g) for exact contact.
-  double pressure(Eigen::Index g, double gap) const {
-    if (spec_.exact) return std::max(0.0, multiplier_[std::size_t(g)] - spec_.penalty * gap);
-    return gap < 0 ? -spec_.penalty * gap : 0.0;
-  }
+  /// Exact contact's multiplier of point g, Pa (penalty contact: 0).
+  double multiplier(Eigen::Index g) const { return spec_.exact ? multiplier_[std::size_t(g)] : 0.0; }
+  /// Contact pressure of point g at gap `gap`, Pa: the law's, with its multiplier.
+  double pressure(Eigen::Index g, double gap) const { return law_->pressure(gap, multiplier(g)); }
+  /// Sets the penalty and builds the law of it.
+  void set_penalty(double penalty);
 
   /// Calls f(g, Psi_g, P, A, target point) for every slave point that is a candidate:
   /// Psi_g its shape rows, P its body-frame position, A the slave's rotation; the target
@@ -147,6 +153,7 @@ private:
   void for_each_pressed_pair(const double* y, F&& f) const;
 
   ContactSpec spec_;
+  std::unique_ptr<ContactLaw> law_;
   std::unique_ptr<GapPairing> pairing_;  ///< gap-space contacts
   mutable Eigen::VectorXd min_gap_key_, last_min_gap_key_;  ///< gap space: solution_key() of the last unpaired min_gap()
   mutable double last_min_gap_ = 0;

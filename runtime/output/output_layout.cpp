@@ -140,6 +140,7 @@ constexpr std::array kSummary{
     Item{"contacts[].peak_force_n", Number, "", "N", "", "the largest force"},
     Item{"contacts[].points_at_peak", Integer, "", "", "", "Gauss points carrying load at the peak"},
     Item{"contacts[].formulation", String, "", "", "", "general or gap-space"},
+    Item{"contacts[].law", String, "", "", "", "the normal contact law (contact/contact_law.cpp's table: penalty)"},
     Item{"contacts[].pairs", Integer, "", "", "gap space", "the most points a pairing made"},
     Item{"contacts[].pairings", Integer, "", "", "gap space", "pairings made (once per impact)"},
     Item{"contacts[].repairings", Integer, "", "", "gap space", "those made again because the points slid along the target"},

@@ -113,6 +113,7 @@ nlohmann::json Recorder::contact_summary(std::size_t k) const {
   c["points_at_peak"] = points_at_peak_[k];  // Gauss points carrying load at the peak-force step
   const SurfaceContact& contact = system_.contacts()[k];
   c["formulation"] = contact.gap_space() ? "gap-space" : "general";
+  c["law"] = contact.law_name();
   if (contact.gap_space()) {
     // pairings: once per impact, more where the points slid beyond what a pairing holds
     const GapPairing& pairing = contact.gap_pairing();

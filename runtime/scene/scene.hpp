@@ -101,7 +101,7 @@ struct ContactSpec {
   std::string body, surface;    ///< slave: a flexible body and a contact surface of its SID
   std::string target;           ///< master: a fixed surface, a rigid body or a flexible body
   std::string target_surface;   ///< flexible master: the contact surface whose master patch is used
-  double penalty = 0;           ///< N/m^3 (pressure per penetration); 0: derived (default_penalty)
+  double penalty = 0;           ///< N/m^3 (the law's stiffness); 0: derived (default_penalty)
   double friction = 0;          ///< Coulomb coefficient
   double regularization = 1e-6; ///< m/s, velocity below which friction is regularized
   /// The contact on a massless boundary solved exactly (augmented Lagrangian: the penalty
@@ -113,6 +113,7 @@ struct ContactSpec {
   /// Where a given penalty comes from, for the summary: the scene, or the adaptive loop's
   /// penalty search (adapt/adaptive_run sets it with the penalty)
   std::string penalty_source = "scene";
+  std::string law = "penalty";  ///< the normal law's name in contact/contact_law.cpp's table
 };
 
 /// Hertz's law between two rigid spheres (contact/hertz_contact.hpp): [R2]'s reference

@@ -1,6 +1,8 @@
 // The scene's contacts, joints and monitors, which refer to its bodies; see scene_reading.hpp.
 #include "scene/scene_reading.hpp"
 
+#include "contact/contact_law.hpp"
+
 #include <algorithm>
 
 namespace isosid::run::scene_reading {
@@ -8,13 +10,20 @@ namespace {
 
 void read_contacts(const TomlView& top, ItemNames& names, Scene& scene) {
   for (const TomlView& c : top.tables("contact")) {
-    c.allow_only({"name", "body", "surface", "target", "target_surface", "penalty", "friction", "regularization", "enforcement", "formulation"});
+    c.allow_only({"name", "body", "surface", "target", "target_surface", "law", "penalty", "friction", "regularization", "enforcement", "formulation"});
     ContactSpec s;
     s.name = names.take(c);
     s.body = c.string("body");
     s.surface = c.string("surface");
     s.target = c.string("target");
     s.target_surface = c.string("target_surface", "");
+    s.law = c.string("law", s.law);
+    if (contact_law_kind(s.law) != ContactLaw::Kind::Pressure) {
+      std::string laws;
+      for (const std::string& name : contact_law_names(ContactLaw::Kind::Pressure)) laws += (laws.empty() ? "" : ", ") + name;
+      c.fail("law", "'" + s.law + "' is not a law of surface contact (" + laws + ")");
+    }
+    const bool linear = make_contact_law(s.law, {1.0})->linear_stiffness() > 0;
     s.penalty = c.positive("penalty", 0.0);  // 0: derived from the bodies (contact/default_penalty.hpp)
     s.friction = c.number("friction", 0.0);
     if (s.friction < 0 || s.friction > 10) c.fail("friction", "must lie in [0, 10]");
@@ -33,6 +42,8 @@ void read_contacts(const TomlView& top, ItemNames& names, Scene& scene) {
     const std::string formulation = c.string("formulation", "general");
     if (formulation != "general" && formulation != "gap-space") c.fail("formulation", "must be general or gap-space");
     s.gap_space = formulation == "gap-space";
+    if ((s.exact || s.gap_space) && !linear)
+      c.fail("law", (s.exact ? "exact contact" : "gap-space contact") + std::string(" needs a linear law (penalty), not '") + s.law + "'");
     if (s.gap_space && s.exact) c.fail("formulation", "gap-space contact is penalty contact (enforcement = \"penalty\")");
     if (s.gap_space && s.friction > 0) c.fail("formulation", "gap-space contact is frictionless (friction = 0)");
     const BodySpec* slave = scene.body(s.body);

@@ -147,6 +147,17 @@ TEST_CASE("scene file: exact contact under an adaptive integrator is refused", "
           "contact[0].enforcement: exact contact needs integrator = \"leapfrog\"");
 }
 
+TEST_CASE("scene file: a contact's law is a law of surface contact from the table", "[runtime][unit][scene][bad-input]") {
+  const test::ScratchDir dir("scene-law");
+  refused(dir, replace(kImpact, "target = \"ground\"", "target = \"ground\"\nlaw = \"hooke\""),
+          "contact[0].law: 'hooke' is not a law of surface contact (penalty)");
+  // Hertz's law is between two spheres ([[hertz_contact]]), not a pressure on a surface's points
+  refused(dir, replace(kImpact, "target = \"ground\"", "target = \"ground\"\nlaw = \"hertz\""),
+          "contact[0].law: 'hertz' is not a law of surface contact");
+  CHECK(read(dir, replace(kImpact, "target = \"ground\"", "target = \"ground\"\nlaw = \"penalty\"")).contacts[0].law == "penalty");
+  CHECK(read(dir, kImpact).contacts[0].law == "penalty");
+}
+
 TEST_CASE("scene file: an adaptive body's coarse step limit is held to max_steps like max_step", "[runtime][unit][scene][bad-input]") {
   const test::ScratchDir dir("scene-coarse-step");
   const std::string adaptive = replace(kImpact, "sid = \"" + kGolden + "/sphere_small.sid.h5\"",
