@@ -6,7 +6,7 @@
 #include "body/condensed_energy.hpp"
 #include "body/modal_matrix.hpp"
 #include "isosid/format/sid.hpp"
-#include "scene/scene.hpp"
+#include "body/body_spec.hpp"
 
 #include <Eigen/Dense>
 #include <array>

@@ -3,7 +3,7 @@
 // equations reduce to Newton-Euler.
 #pragma once
 #include "isosid/format/sid.hpp"
-#include "scene/scene.hpp"
+#include "body/body_spec.hpp"
 
 namespace isosid::run {
 

@@ -7,7 +7,7 @@
 #include "body/floating_body.hpp"
 #include "contact/contact_law.hpp"
 #include "contact/surface_contact.hpp"
-#include "scene/scene.hpp"
+#include "contact/contact_spec.hpp"
 
 namespace isosid::run {
 

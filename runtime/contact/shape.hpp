@@ -1,7 +1,7 @@
 // Signed distance to an analytic solid (half-space, ball, infinite cylinder, box): the gap of
 // a contact point, the outward normal and the closest surface point, all in the shape's frame.
 #pragma once
-#include "scene/scene.hpp"
+#include "contact/contact_spec.hpp"
 
 namespace isosid::run {
 

@@ -70,13 +70,13 @@ double SurfaceContact::derived_penalty(double contact_radius) const {
 void SurfaceContact::fit_penalty_to_contact_radius(double contact_radius) {
   if (!derived_) return;  // a given penalty stays (its source may tell how it was derived before)
   const double fitted = derived_penalty(contact_radius);
-  if (fitted == spec_.penalty) return;  // the elements are larger than the contact radius
+  if (fitted == penalty_) return;  // the elements are larger than the contact radius
   set_penalty(fitted);
   penalty_source_ = "derived: 1000 E*/a";
 }
 
 void SurfaceContact::set_penalty(double penalty) {
-  spec_.penalty = penalty;
+  penalty_ = penalty;
   law_ = make_contact_law(spec_.law, {penalty});
   if (!law_) throw format::InputError(spec_.name, "law", "no contact law named '" + spec_.law + "'");
 }

@@ -14,7 +14,7 @@
 #include "contact/contact_law.hpp"
 #include "contact/contact_target.hpp"
 #include "contact/gap_bounds.hpp"
-#include "scene/scene.hpp"
+#include "contact/contact_spec.hpp"
 
 #include <algorithm>
 #include <memory>
@@ -68,7 +68,7 @@ public:
   std::vector<PointLoad> point_loads(const double* y) const;
   bool frictionless() const { return spec_.friction == 0; }
   /// Penalty factor, N/m^3: the scene's, or derived by default_penalty() where it gave none.
-  double penalty() const { return spec_.penalty; }
+  double penalty() const { return penalty_; }
   /// The normal law, of the penalty's stiffness.
   const ContactLaw& law() const { return *law_; }
   /// Its name in the table of laws (the scene's `law`).
@@ -152,11 +152,12 @@ private:
   template <class F>
   void for_each_pressed_pair(const double* y, F&& f) const;
 
-  ContactSpec spec_;
+  ContactSpec spec_;            ///< as the scene gave it (the penalty's state is penalty_)
   std::unique_ptr<ContactLaw> law_;
   std::unique_ptr<GapPairing> pairing_;  ///< gap-space contacts
   mutable Eigen::VectorXd min_gap_key_, last_min_gap_key_;  ///< gap space: solution_key() of the last unpaired min_gap()
   mutable double last_min_gap_ = 0;
+  double penalty_ = 0;          ///< N/m^3: the spec's, or derived
   std::string penalty_source_;  ///< the spec's, or "derived: ..."
   bool derived_ = false;        ///< the penalty was derived here (none given)
   const FloatingBody& body_;

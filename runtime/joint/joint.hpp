@@ -11,7 +11,7 @@
 // while the joint sits away from it. Their displacement at the node is left out.
 #pragma once
 #include "body/floating_body.hpp"
-#include "scene/scene.hpp"
+#include "joint/joint_spec.hpp"
 
 #include <array>
 #include <memory>

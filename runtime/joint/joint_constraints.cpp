@@ -10,11 +10,12 @@
 
 namespace isosid::run {
 
-JointConstraints::JointConstraints(const Scene& scene, const std::vector<std::unique_ptr<FloatingBody>>& bodies,
+JointConstraints::JointConstraints(const std::vector<JointSpec>& joints, double rate, const Eigen::Vector3d& gravity,
+                                   const std::string& scene_file, const std::vector<std::unique_ptr<FloatingBody>>& bodies,
                                    Eigen::Index state_size, const double* y0)
-    : rate_(scene.simulation.joint_stabilization) {
-  for (const JointSpec& spec : scene.joints) {
-    joints_.emplace_back(spec, bodies, y0, scene.file);
+    : rate_(rate) {
+  for (const JointSpec& spec : joints) {
+    joints_.emplace_back(spec, bodies, y0, scene_file);
     first_row_.push_back(rows_);
     rows_ += joints_.back().rows();
     for (int s = 0; s < 2; ++s) {
@@ -27,7 +28,7 @@ JointConstraints::JointConstraints(const Scene& scene, const std::vector<std::un
     const AttachmentMotion m0 = j.motion(0, y0), m1 = j.motion(1, y0);
     const double apart = (m0.v - m1.v).norm(), speed = std::max(m0.v.norm(), m1.v.norm());
     if (apart > 1e-9 * (1 + speed))
-      throw format::InputError(scene.file, "joint " + spec.name,
+      throw format::InputError(scene_file, "joint " + spec.name,
                                "its attachments move apart at " + common::number_text(apart) +
                                    " m/s at t = 0: give the bodies velocities the joint allows");
   }
@@ -38,7 +39,7 @@ JointConstraints::JointConstraints(const Scene& scene, const std::vector<std::un
   response_.setZero(rows_, rows_);
   unit_.resize(bodies.size());
   for (const auto& [body, index] : jointed_) unit_[index].reset(body->nq());
-  moving_ = refuse_redundant_rows(bodies, y0, scene.gravity, scene.file);
+  moving_ = refuse_redundant_rows(bodies, y0, gravity, scene_file);
   const auto m = Eigen::Index(moving_.size());
   moving_response_.setZero(m, m);
   moving_lambda_.setZero(m);

@@ -10,9 +10,10 @@ namespace isosid::run {
 
 class JointConstraints {
 public:
-  /// Refuses (InputError) an over-constrained mechanism at y0.
-  JointConstraints(const Scene& scene, const std::vector<std::unique_ptr<FloatingBody>>& bodies, Eigen::Index state_size,
-                   const double* y0);
+  /// The scene's `joints` with its Baumgarte `rate` (1/s); `gravity` and `scene_file` for the
+  /// start's checks. Refuses (InputError) an over-constrained mechanism at y0.
+  JointConstraints(const std::vector<JointSpec>& joints, double rate, const Eigen::Vector3d& gravity, const std::string& scene_file,
+                   const std::vector<std::unique_ptr<FloatingBody>>& bodies, Eigen::Index state_size, const double* y0);
 
   bool empty() const { return joints_.empty(); }
   const std::vector<Joint>& joints() const { return joints_; }

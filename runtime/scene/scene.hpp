@@ -1,7 +1,10 @@
 // A scene: what isosid-run simulates (bodies from SIDs, fixed surfaces, contacts, gravity,
 // monitors, integrator settings) and the reference values the results are compared with.
 #pragma once
+#include "body/body_spec.hpp"
+#include "contact/contact_spec.hpp"
 #include "isosid/common/toml_override.hpp"
+#include "joint/joint_spec.hpp"
 
 #include <Eigen/Dense>
 #include <array>
@@ -12,7 +15,6 @@
 
 namespace isosid::run {
 
-enum class Dimension { Planar, Axisymmetric, Solid };
 enum class IntegratorKind { DormandPrince, Implicit, Leapfrog };
 
 struct SimulationSettings {
@@ -33,41 +35,6 @@ struct SimulationSettings {
 /// At most this many output samples (end_time / output_interval): results.h5 stays bounded.
 constexpr double kMaxSamples = 1e7;
 
-/// The shape and inertia of a rigid body (its frame at the centre of mass, on the principal axes).
-struct RigidShape {
-  enum class Kind { Sphere, Box } kind = Kind::Sphere;
-  double radius = 0;                                          ///< m, sphere
-  Eigen::Vector3d half_extents = Eigen::Vector3d::Zero();     ///< m, box
-  double mass = 0;                                            ///< kg
-  Eigen::Vector3d principal_inertia = Eigen::Vector3d::Zero();  ///< kg m^2
-};
-
-/// A body of the scene: flexible (from a SID) or rigid (`rigid` set, no SID).
-struct BodySpec {
-  std::string name;
-  std::optional<RigidShape> rigid;
-  std::string sid_file;         ///< flexible: absolute or relative to the scene file, resolved
-  std::string model_file;       ///< optional: rebuild the SID from it when missing or stale
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();
-  Eigen::Vector3d tait_bryan = Eigen::Vector3d::Zero();  ///< rad, x-y-z ([R1] eq. 20, docs/references.md)
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();    ///< m/s, world frame
-  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  ///< rad/s, body frame
-  Eigen::VectorXd q0, qdot0;    ///< initial elastic state (empty: zero)
-  std::vector<std::string> locked;  ///< extra locked DOFs: x y z rx ry rz
-  /// How the high-frequency modes move: "dynamic" (integrated, damped by De) or
-  /// "quasistatic" (solved from the static sub-problem each evaluation; [R2]).
-  std::string high_modes = "dynamic";
-  double quasistatic_above_hz = -1;  ///< > 0: modes above this frequency are the high ones
-  /// "rest": q0 (or zero); "steady": the integrated modes start in equilibrium with the
-  /// initial spin (centrifugal deformation), so a spinning body does not start ringing;
-  /// "static": in their static deflection under everything acting at the start, the frame
-  /// moved with it so that the joints hold (solve/static_start; [R2] Sect. 6)
-  std::string elastic_start = "rest";
-  /// [R2]'s adaptive impacts: the body runs on its model's coarse model between impacts
-  /// and on a model refined around each impact during it (needs `model_file`; no `sid_file`)
-  bool adaptive = false;
-};
-
 /// [adaptive]: how the adaptive bodies' models are found and refined ([R2] Sect. 4).
 struct AdaptiveSettings {
   std::string cache;            ///< folder of the SIDs built for the run (default: .isosid-cache beside the scene)
@@ -84,56 +51,6 @@ struct AdaptiveSettings {
   /// a hundredth of the impact's Hertz contact time, at most the scene's output_interval (an
   /// impact of scene E lasts 65 us, a hundredth of its 1e-4 s output interval)
   double impact_output_interval = 0;
-};
-
-/// An analytic surface: fixed in the world, or the surface of a rigid body (in its frame).
-struct ShapeSpec {
-  enum class Kind { Plane, Sphere, Cylinder, Box } kind = Kind::Plane;
-  std::string name;
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< plane: a point; sphere: centre; cylinder: a point on the axis
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< plane: unit, pointing out of the solid; cylinder: unit axis
-  double radius = 0;                                  ///< sphere, cylinder, m
-  Eigen::Vector3d half_extents = Eigen::Vector3d::Zero();  ///< box (centred on point, axis-aligned), m
-};
-
-struct ContactSpec {
-  std::string name;
-  std::string body, surface;    ///< slave: a flexible body and a contact surface of its SID
-  std::string target;           ///< master: a fixed surface, a rigid body or a flexible body
-  std::string target_surface;   ///< flexible master: the contact surface whose master patch is used
-  double penalty = 0;           ///< N/m^3 (the law's stiffness); 0: derived (default_penalty)
-  double friction = 0;          ///< Coulomb coefficient
-  double regularization = 1e-6; ///< m/s, velocity below which friction is regularized
-  /// The contact on a massless boundary solved exactly (augmented Lagrangian: the penalty
-  /// becomes the augmentation, the gap of every active point closes); else penalty contact.
-  bool exact = false;
-  /// Solved in gap space (condensation/gap_space_solve.hpp): the points paired once per impact,
-  /// the quasistatic modes condensed onto their gaps; else every point projected at every pass.
-  bool gap_space = false;
-  /// Where a given penalty comes from, for the summary: the scene, or the adaptive loop's
-  /// penalty search (adapt/adaptive_run sets it with the penalty)
-  std::string penalty_source = "scene";
-  std::string law = "penalty";  ///< the normal law's name in contact/contact_law.cpp's table
-};
-
-/// Hertz's law between two rigid spheres (contact/hertz_contact.hpp): [R2]'s reference
-/// for sphere impacts, with each sphere's material.
-struct HertzContactSpec {
-  std::string name;
-  std::string body, target;  ///< rigid spheres
-  std::array<double, 2> youngs_modulus{}, poisson_ratio{};  ///< Pa, 1: of body and target
-};
-
-/// A joint between a body and another body or the ground ([R2]): both attachments
-/// coincide at the joint point; a revolute joint also keeps an axis aligned, a fixed joint the
-/// relative orientation.
-struct JointSpec {
-  enum class Kind { Spherical, Revolute, Fixed } kind = Kind::Spherical;
-  std::string name;
-  std::string body, node;          ///< first side; a flexible body attaches at a SID node
-  std::string other, other_node;   ///< second side; empty `other`: the ground
-  std::optional<Eigen::Vector3d> point;  ///< m, world position at t = 0 (needed for a rigid side; default: the node)
-  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< revolute: unit axis, world, at t = 0
 };
 
 /// A monitored point: a SID node, or a parameter on a contact surface's master patch.
@@ -197,7 +114,5 @@ Scene read_scene_file(const std::string& path, const std::vector<common::TomlOve
 /// Reads and validates a scene held as TOML text, as read_scene_file() a file: `name` stands
 /// for the file (errors name it, paths are resolved relative to its folder).
 Scene read_scene_text(const std::string& text, const std::string& name, const std::vector<common::TomlOverride>& overrides = {});
-
-std::string to_string(Dimension d);
 
 }  // namespace isosid::run

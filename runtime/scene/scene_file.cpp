@@ -131,15 +131,6 @@ void read_adaptive(const TomlView& top, Scene& scene) {
 
 }  // namespace
 
-std::string to_string(Dimension d) {
-  switch (d) {
-    case Dimension::Planar: return "planar";
-    case Dimension::Axisymmetric: return "axisymmetric";
-    case Dimension::Solid: return "3d";
-  }
-  return "?";
-}
-
 const BodySpec* Scene::body(const std::string& name) const {
   for (const BodySpec& b : bodies)
     if (b.name == name) return &b;

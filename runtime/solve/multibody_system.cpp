@@ -62,7 +62,8 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   for (std::size_t i = 0; i < bodies_.size(); ++i) warn_of_many_dynamic_modes(*bodies_[i], scene.bodies[i]);
   std::vector<double> y0(size_);
   initial_state(y0.data());
-  joints_ = std::make_unique<JointConstraints>(scene, bodies_, size_, y0.data());
+  joints_ = std::make_unique<JointConstraints>(scene.joints, scene.simulation.joint_stabilization, scene.gravity, scene.file, bodies_, size_,
+                                               y0.data());
   estimate_impacts(y0.data());
 }
 
