@@ -5,6 +5,7 @@
 #include "isosid/format/hdf5_file.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <fcntl.h>
@@ -68,7 +69,14 @@ int probe_seconds(std::uintmax_t file_bytes) {
   return kProbeBaseSeconds + int(std::min(1e6, double(file_bytes) / kProbeSlowestBytesPerSecond));
 }
 
+namespace {
+std::atomic<long> started{0};
+}  // namespace
+
+long probes_started() { return started.load(); }
+
 void probe_in_child(const std::string& path, const std::function<void()>& read_file) {
+  ++started;
   std::error_code ec;
   const std::uintmax_t file_bytes = std::filesystem::file_size(path, ec);
   const long long allowance = probe_memory_bytes(ec ? 0 : file_bytes);

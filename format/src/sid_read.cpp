@@ -214,7 +214,7 @@ Sid read_sid(const std::string& path, const ReadOptions& options) {
   // a corrupt file may crash libhdf5 or make it allocate without bound: a child reads it first,
   // and its verdict on bad input is final; a FIFO or a directory is refused before, at once
   require_input_file(path);
-  probe_in_child(path, [&] { read_sid_unprobed(path, options); });
+  if (options.probe) probe_in_child(path, [&] { read_sid_unprobed(path, options); });
   return read_sid_unprobed(path, options);
 }
 

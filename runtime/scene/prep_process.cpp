@@ -1,6 +1,8 @@
 // Running isosid-prep; see prep_process.hpp.
 #include "scene/prep_process.hpp"
 
+#include "scene/sid_digest.hpp"
+
 #include "isosid/format/error.hpp"
 
 #include <algorithm>
@@ -32,11 +34,11 @@ std::string find_prep() {
   return "isosid-prep";
 }
 
-PrepProcess::PrepProcess(pid_t pid_, int output_, std::string model_, bool quiet_)
-    : pid(pid_), output(output_), model(std::move(model_)), quiet(quiet_) {}
+PrepProcess::PrepProcess(pid_t pid_, int output_, std::string model_, std::string sid_, bool quiet_)
+    : pid(pid_), output(output_), model(std::move(model_)), sid(std::move(sid_)), quiet(quiet_) {}
 
 PrepProcess::PrepProcess(PrepProcess&& other) noexcept
-    : pid(std::exchange(other.pid, -1)), output(std::exchange(other.output, -1)), model(std::move(other.model)), quiet(other.quiet) {}
+    : pid(std::exchange(other.pid, -1)), output(std::exchange(other.output, -1)), model(std::move(other.model)), sid(std::move(other.sid)), quiet(other.quiet) {}
 
 namespace {
 /// waitpid, again after a signal: the child's pid, or -1 with errno set.
@@ -103,7 +105,7 @@ PrepProcess start_prep(const std::string& model, const std::string& sid, const s
     ::_exit(127);
   }
   ::close(channel[1]);
-  return PrepProcess(pid, channel[0], model, quiet);
+  return PrepProcess(pid, channel[0], model, sid, quiet);
 }
 
 void finish_prep(PrepProcess& process) {
@@ -138,6 +140,7 @@ void finish_prep(PrepProcess& process) {
   if (code != 0)
     throw format::ComputationError("isosid-prep failed on " + model + " (exit " + std::to_string(code) + ")" +
                                    (message.empty() ? "" : ": " + message));
+  record_sid_digest(process.sid);
 }
 
 void run_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,

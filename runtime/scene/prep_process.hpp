@@ -16,9 +16,10 @@ struct PrepProcess {
   pid_t pid = -1;
   int output = -1;
   std::string model;
+  std::string sid;  ///< the file it writes
   bool quiet = true;
 
-  PrepProcess(pid_t pid, int output, std::string model, bool quiet);
+  PrepProcess(pid_t pid, int output, std::string model, std::string sid, bool quiet);
   PrepProcess(PrepProcess&& other) noexcept;
   PrepProcess& operator=(PrepProcess&&) = delete;
   PrepProcess(const PrepProcess&) = delete;
@@ -36,7 +37,7 @@ PrepProcess start_prep(const std::string& model, const std::string& sid, const s
 
 /// Waits for a started isosid-prep. Its progress lines pass through to stderr; its one-line
 /// error is held back and becomes this program's: InputError for a refused model (its exit 2),
-/// ComputationError for any other failure.
+/// ComputationError for any other failure. A SID it built gets its digest recorded (sid_digest).
 void finish_prep(PrepProcess& process);
 
 /// start_prep, then finish_prep (`what` says why it runs, in the progress line).

@@ -7,6 +7,7 @@
 #include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene/prep_process.hpp"
+#include "scene/sid_digest.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -40,9 +41,10 @@ bool built_from_model(const format::Sid& sid, const BodySpec& body, const Scene&
 }
 }  // namespace
 
-format::ReadOptions sid_read_options(const Scene& scene) {
+format::ReadOptions sid_read_options(const Scene& scene, const std::string& file) {
   format::ReadOptions options;
   options.visual = scene.output.paraview;
+  options.probe = !sid_digest_matches(file);
   return options;
 }
 
@@ -68,18 +70,18 @@ std::vector<format::Sid> load_sids(const Scene& scene, bool quiet) {
         if (stale()) run_prep(b.model_file, b.sid_file, {}, quiet, "");
       }
     }
-    sids.push_back(format::read_sid(b.sid_file, sid_read_options(scene)));
+    sids.push_back(format::read_sid(b.sid_file, sid_read_options(scene, b.sid_file)));
     // (a run that finds it built from another model version or without its interface points
     // rebuilds it under the exclusive lock and reads its own build)
     if (from_model && !built_from_model(sids.back(), b, scene, index)) {
       lock->make_exclusive();
       run_prep(b.model_file, b.sid_file, {}, quiet, " (the SID there was built from another version of the model)");
-      sids.back() = format::read_sid(b.sid_file, sid_read_options(scene));
+      sids.back() = format::read_sid(b.sid_file, sid_read_options(scene, b.sid_file));
     }
     if (from_model && lacks_interface_coverage(sids.back())) {
       lock->make_exclusive();
       run_prep(b.model_file, b.sid_file, {}, quiet, " (the SID there does not record which contact points its interface covers)");
-      sids.back() = format::read_sid(b.sid_file, sid_read_options(scene));
+      sids.back() = format::read_sid(b.sid_file, sid_read_options(scene, b.sid_file));
     }
   }
   return sids;
@@ -98,7 +100,7 @@ SizedSid sized_sid(const Scene& scene, const BodySpec& body, double contact_radi
   fs::create_directories(cache, ec);
   const common::FileLock lock(file + ".lock", common::FileLock::Mode::Exclusive);
   if (!fs::exists(file, ec)) run_prep(body.model_file, file, {"--contact-radius", radius}, quiet, std::string(" for a contact radius of ") + radius);
-  return {format::read_sid(file, sid_read_options(scene)), file};
+  return {format::read_sid(file, sid_read_options(scene, file)), file};
 }
 
 }  // namespace isosid::run

@@ -10,8 +10,9 @@
 
 namespace isosid::run {
 
-/// What the scene needs of its SIDs: the viewing meshes only for ParaView output.
-format::ReadOptions sid_read_options(const Scene& scene);
+/// How to read the scene's SID `file`: the viewing meshes only for ParaView output; without a
+/// probe where the file is one this runtime's preparation wrote, unchanged (sid_digest).
+format::ReadOptions sid_read_options(const Scene& scene, const std::string& file);
 
 /// The SIDs of the scene's flexible bodies, in order; stale or missing ones are rebuilt first.
 std::vector<format::Sid> load_sids(const Scene& scene, bool quiet);

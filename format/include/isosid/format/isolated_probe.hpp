@@ -41,4 +41,7 @@ int probe_seconds(std::uintmax_t file_bytes);
 /// its memory allowance or hung.
 void probe_in_child(const std::string& path, const std::function<void()>& read);
 
+/// Probes this process has started (tests count them).
+long probes_started();
+
 }  // namespace isosid::format

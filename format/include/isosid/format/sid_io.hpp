@@ -24,6 +24,10 @@ struct ReadOptions {
   /// Read the viewing mesh (/visual) if there is one: the largest part of a SID built with
   /// [visual], needed only for ParaView output.
   bool visual = true;
+  /// Read the file first in a child process (isolated_probe.hpp), which is what keeps a
+  /// corrupt file from crashing the program. Off only for a file the caller knows byte for
+  /// byte (the runtime's record of the SIDs its preparation wrote, runtime/scene/sid_digest).
+  bool probe = true;
 };
 
 /// Reads and validates a SID. Throws InputError naming the file, dataset and problem.
