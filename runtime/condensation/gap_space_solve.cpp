@@ -11,8 +11,8 @@ namespace isosid::run {
 namespace {
 /// C = V^T W between the points: each of V's nonzeros adds one row of W, read from W's
 /// transpose as a contiguous column (the sparse product V^T W gathers every term from a
-/// column of W, a strided read: two thirds of a pairing's condensation on the sphere on the
-/// beam at a/8). The sums and their order are the sparse product's, so C is bitwise the same.
+/// column of W, a strided read). The sums and their order are the sparse product's, so C is
+/// bitwise the same.
 Eigen::MatrixXd compliance(const Eigen::SparseMatrix<double>& V, const Eigen::MatrixXd& W) {
   const Eigen::MatrixXd Wt = W.transpose();
   Eigen::MatrixXd Ct = Eigen::MatrixXd::Zero(W.cols(), V.cols());  // column j: row j of C

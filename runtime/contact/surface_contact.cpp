@@ -77,6 +77,7 @@ void SurfaceContact::fit_penalty_to_contact_radius(double contact_radius) {
 
 void SurfaceContact::set_penalty(double penalty) {
   penalty_ = penalty;
+  if (law_) superseded_laws_.push_back(std::move(law_));
   law_ = make_contact_law(spec_.law, {penalty});
   if (!law_) throw format::InputError(spec_.name, "law", "no contact law named '" + spec_.law + "'");
 }

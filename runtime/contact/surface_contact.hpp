@@ -154,6 +154,9 @@ private:
 
   ContactSpec spec_;            ///< as the scene gave it (the penalty's state is penalty_)
   std::unique_ptr<ContactLaw> law_;
+  /// Laws a refit replaced: a recording of the quasistatic terms points at its points' laws
+  /// until its next pass, so they stay alive (a refit happens when a run's state is set).
+  std::vector<std::unique_ptr<ContactLaw>> superseded_laws_;
   std::unique_ptr<GapPairing> pairing_;  ///< gap-space contacts
   mutable Eigen::VectorXd min_gap_key_, last_min_gap_key_;  ///< gap space: solution_key() of the last unpaired min_gap()
   mutable double last_min_gap_ = 0;

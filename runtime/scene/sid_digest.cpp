@@ -14,11 +14,18 @@ std::string digest_file(const std::string& sid) { return sid + ".sha256"; }
 
 void record_sid_digest(const std::string& sid) {
   const std::string record = digest_file(sid), temporary = record + ".tmp";
+  // without a record the SID is probed when read, as any other: nothing here fails the run
+  std::string digest;
+  try {
+    digest = common::sha256_file(sid);
+  } catch (...) {
+    return;
+  }
   {
     std::ofstream out(temporary, std::ios::trunc);
-    out << common::sha256_file(sid) << '\n';
+    out << digest << '\n';
     if (!out) {
-      std::remove(temporary.c_str());  // no record: the SID is probed when read, as any other
+      std::remove(temporary.c_str());
       return;
     }
   }
