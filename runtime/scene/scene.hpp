@@ -5,6 +5,7 @@
 #include "contact/contact_spec.hpp"
 #include "isosid/common/toml_override.hpp"
 #include "joint/joint_spec.hpp"
+#include "solve/integrator_kind.hpp"
 
 #include <Eigen/Dense>
 #include <array>
@@ -14,8 +15,6 @@
 #include <vector>
 
 namespace isosid::run {
-
-enum class IntegratorKind { DormandPrince, Implicit, Leapfrog };
 
 struct SimulationSettings {
   Dimension dimension = Dimension::Solid;

@@ -114,7 +114,7 @@ void read_adaptive(const TomlView& top, Scene& scene) {
     scene.adaptive.cache = resolve(scene.file, a->string("cache", ""));
     scene.adaptive.interval_width = a->positive("interval_width", 0);
     scene.adaptive.coarse_integrator = read_integrator(*a, "coarse_integrator", scene.adaptive.coarse_integrator);
-    if ((scene.adaptive.coarse_integrator == IntegratorKind::Leapfrog) != (scene.simulation.integrator == IntegratorKind::Leapfrog))
+    if (fixed_step(scene.adaptive.coarse_integrator) != fixed_step(scene.simulation.integrator))
       a->fail("coarse_integrator", "the leapfrog's fixed step and the adaptive integrators' tolerances do not mix between phases");
     scene.adaptive.coarse_max_step = a->positive("coarse_max_step", scene.adaptive.coarse_max_step);
     check_step_count(*a, "coarse_max_step", scene.adaptive.coarse_max_step, scene.simulation);

@@ -39,10 +39,8 @@ void check_step_count(const TomlView& t, const char* key, double step, const Sim
 IntegratorKind read_integrator(const TomlView& t, const std::string& key, IntegratorKind fallback) {
   if (!t.has(key)) return fallback;
   const std::string name = t.string(key);
-  if (name == "dopri5") return IntegratorKind::DormandPrince;
-  if (name == "implicit") return IntegratorKind::Implicit;
-  if (name == "leapfrog") return IntegratorKind::Leapfrog;
-  t.fail(key, "unknown integrator '" + name + "' (dopri5, implicit, leapfrog)");
+  if (const std::optional<IntegratorKind> kind = integrator_named(name)) return *kind;
+  t.fail(key, "unknown integrator '" + name + "' (" + integrator_names() + ")");
 }
 
 SimulationSettings read_simulation(const TomlView& s) {
@@ -60,12 +58,12 @@ SimulationSettings read_simulation(const TomlView& s) {
     s.fail("dimension", "unknown dimension '" + dim + "' (planar, axisymmetric, 3d)");
   out.end_time = s.positive("end_time");
   out.integrator = read_integrator(s, "integrator", IntegratorKind::DormandPrince);
-  if (out.integrator == IntegratorKind::Leapfrog) {
+  if (fixed_step(out.integrator)) {
     // fixed steps: the step-size control's keys have nothing to control
     out.step = s.positive("step");
     if (out.step > out.end_time) s.fail("step", "exceeds end_time");
     for (const char* key : {"rtol", "atol", "max_step"})
-      if (s.has(key)) s.fail(key, "not used by the leapfrog (its step is fixed: step)");
+      if (s.has(key)) s.fail(key, std::string("not used by the ") + integrator_name(out.integrator) + " integrator (its step is fixed: step)");
   } else if (s.has("step")) {
     s.fail("step", "only used by integrator = \"leapfrog\" (dopri5 and implicit choose their steps; see max_step)");
   }
@@ -82,8 +80,8 @@ SimulationSettings read_simulation(const TomlView& s) {
     std::snprintf(count, sizeof count, "%.3g samples", samples);
     s.fail("output_interval", std::string("end_time / output_interval asks for ") + count + ", more than the limit of 1e7");
   }
-  const bool leapfrog = out.integrator == IntegratorKind::Leapfrog;
-  check_step_count(s, leapfrog ? "step" : "max_step", leapfrog ? out.step : out.max_step, out);
+  const bool fixed = fixed_step(out.integrator);
+  check_step_count(s, fixed ? "step" : "max_step", fixed ? out.step : out.max_step, out);
   out.allow_initial_penetration = s.boolean("allow_initial_penetration", false);
   return out;
 }

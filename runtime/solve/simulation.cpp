@@ -111,7 +111,7 @@ void Simulation::start(SimulationObserver& observer) {
 bool Simulation::advance_to(double t_end, SimulationObserver& observer) {
   observer_ = &observer;
   const double end = std::min(t_end, scene_.simulation.end_time), dt_out = scene_.simulation.output_interval;
-  if (scene_.simulation.integrator != IntegratorKind::Leapfrog) {
+  if (!fixed_step(scene_.simulation.integrator)) {
     double time_scale = dt_out;
     for (const auto& e : system_.impact_estimates())
       if (e && e->contact_time > 0) time_scale = std::min(time_scale, e->contact_time);

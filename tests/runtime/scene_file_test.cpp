@@ -167,3 +167,27 @@ TEST_CASE("scene file: an adaptive body's coarse step limit is held to max_steps
             "adaptive.coarse_max_step: end_time / coarse_max_step needs at least");
   CHECK(read(dir, adaptive + "[adaptive]\ncoarse_max_step = 1e-10\n").adaptive.coarse_max_step == 1e-10);
 }
+
+TEST_CASE("scene file: integrators are named by their table, and the fixed-step one takes a step", "[runtime][unit][scene][bad-input]") {
+  const test::ScratchDir dir("scene-integrators");
+  // every row's name reads back as its kind, and the message for an unknown one lists them all
+  const std::string names = run::integrator_names();
+  CHECK(names == "dopri5, implicit, leapfrog");
+  for (const run::IntegratorKind kind : {run::IntegratorKind::DormandPrince, run::IntegratorKind::Implicit, run::IntegratorKind::Leapfrog}) {
+    const std::optional<run::IntegratorKind> back = run::integrator_named(run::integrator_name(kind));
+    REQUIRE(back);
+    CHECK(*back == kind);
+  }
+  CHECK_FALSE(run::integrator_named("euler"));
+  CHECK(run::fixed_step(run::IntegratorKind::Leapfrog));
+  CHECK_FALSE(run::fixed_step(run::IntegratorKind::DormandPrince));
+  CHECK_FALSE(run::fixed_step(run::IntegratorKind::Implicit));
+  refused(dir, replace(kImpact, "[simulation]\n", "[simulation]\nintegrator = \"euler\"\n"),
+          "simulation.integrator: unknown integrator 'euler' (" + names + ")");
+  // a fixed-step scheme needs its step and has no tolerances to honour
+  refused(dir, replace(kImpact, "[simulation]\n", "[simulation]\nintegrator = \"leapfrog\"\n"), "simulation.step");
+  refused(dir, replace(kImpact, "[simulation]\n", "[simulation]\nintegrator = \"leapfrog\"\nstep = 1e-8\n"),
+          "simulation.rtol: not used by the leapfrog integrator");
+  CHECK(read(dir, replace(kImpact, "[simulation]\n", "[simulation]\nintegrator = \"implicit\"\n")).simulation.integrator ==
+        run::IntegratorKind::Implicit);
+}
