@@ -394,10 +394,6 @@ void read_sid_content(const TomlView& top, ModelSpec& m) {
                                         [&](const ContactSurfaceSpec& s) { return s.name == red.boundary_surface; });
       if (surface == m.contact_surfaces.end()) r->fail("boundary_surface", "no contact_surface named '" + red.boundary_surface + "'");
       if (!surface->continued.empty()) r->fail("boundary_surface", "must lie on one patch side (a surface over several is not supported)");
-      // the massless coordinates are the fine model's control points: a THB body's coarse
-      // modes (its transfer operator) would not carry them
-      if (std::any_of(m.patches.begin(), m.patches.end(), [](const PatchSpec& p) { return p.refinement.hierarchical.has_value(); }))
-        r->fail("method", method + " is not available for hierarchically refined bodies (refine with subdivisions or graded knots)");
     } else if (r->has("boundary_surface")) {
       r->fail("boundary_surface", "only used by the massless-boundary methods (" +
                                       format::reduction_method_names([](const auto& t) { return t.massless_boundary; }) + ")");

@@ -48,11 +48,14 @@ auto refusing_oversize(const ModelSpec& spec, F&& f) {
 PreparedBody prepare_body(const ModelSpec& spec, const PrepareOptions& options, StageObserver& observer) {
   StageClock clock(observer);
   AssembledBody a = assemble(spec, options.build_sid, clock);
-  // a hierarchical body carries its coarse model's modes, so states transfer exactly
+  // a hierarchical body carries its coarse model's modes, so states transfer exactly; not
+  // under a massless boundary, whose coordinates are the fine model's boundary control points
+  // (its mass matrix keeps no room for further vectors): such a body is prepared once, with no
+  // transfer, for plain runs
   std::optional<PreparedBody> coarse;
   std::optional<NodalTransfer> nodal;
   Eigen::MatrixXd coarse_modes;
-  if (a.body.hierarchy)
+  if (a.body.hierarchy && !format::traits(spec.reduction.method).massless_boundary)
     clock.run("coarse_model", "coarse model and nodal transfer", [&] {
       coarse.emplace(prepare_body(coarse_model_spec(spec), {.build_sid = false, .output = ""}, no_progress()));
       nodal = nodal_transfer(coarse->body, a.body);

@@ -24,7 +24,7 @@ std::vector<int> massless_boundary_dofs(const BodyModel& body, std::string& desc
 ReductionRequest reduction_request(const BodyModel& body);
 
 /// Reduces the body as its model file asks. `extra` (free DOFs x k) is added to that basis
-/// (a hierarchical body's prolongated coarse modes).
+/// (a hierarchical body's prolongated coarse modes; none under a massless boundary).
 ReducedBasis reduce_body(const BodyModel& body, const SystemMatrices& system, const Eigen::MatrixXd& extra = {});
 
 }  // namespace isosid::prep

@@ -86,6 +86,10 @@ int main(int argc, char** argv) {
     if (app.count("--refine-at") != app.count("--refine-width"))
       throw format::InputError(model_file, "--refine-at", "goes with --refine-width (the refined region's width, m)");
     if (app.count("--refine-at")) {
+      if (format::traits(spec.reduction.method).massless_boundary)
+        throw format::InputError(model_file, "--refine-at",
+                                 "an impact's refined model takes its state through a transfer, which a " + format::name(spec.reduction.method) +
+                                     " reduction does not carry (adaptive bodies need a Craig-Bampton or modal reduction)");
       const auto [surface, at] = parse_refinement_point(refine_at, model_file);
       prep::set_refinement_point(spec, surface, at, refine_width, "--refine-at");
     }

@@ -392,6 +392,29 @@ TEST_CASE("massless-boundary SIDs from model files: MacNeal (free) and massless 
     CHECK(sid.Me.M0.bottomRows(boundary).isZero(0.0));
     CHECK_THAT(sid.refmod.mode_names.back(), Contains("boundary " + std::to_string(boundary) + ": control point"));
   }
+  // a hierarchically refined body: prepared once, no coarse model and no transfer; its boundary
+  // is every function of the refined space on the side (more than the 6 points of the plain
+  // block: the refined box adds level-1 functions there)
+  const std::string thb = std::string(kValid) + "[refinement.hierarchical]\nbox = [[0.25, 0.5], [0.5, 1.0]]\nelements_across = 4\n" + surface +
+                          "[reduction]\nmethod = \"macneal\"\nnormal_modes = 4\nboundary_surface = \"contact\"\n";
+  std::ofstream(dir.path("thb.model.toml")) << thb;
+  const auto refined = test::run_program(std::string(ISOSID_PREP_EXE) + " -q --json " + dir.path("thb.model.toml"));
+  INFO(refined.err);
+  REQUIRE(refined.exit_status == 0);
+  const auto j = nlohmann::json::parse(refined.out);
+  const int boundary = j["n_high"].get<int>();
+  CHECK(boundary > 12);
+  CHECK(boundary % 2 == 0);
+  CHECK_FALSE(j["timings_s"].contains("coarse_model"));
+  const format::Sid thb_sid = format::read_sid(dir.path("thb.sid.h5"));
+  CHECK(thb_sid.refmod.n_massless() == boundary);
+  CHECK(thb_sid.Me.M0.bottomRows(boundary).isZero(0.0));
+  CHECK_FALSE(thb_sid.transfer.has_value());
+  // an impact's refined model needs the transfer: refused before any work
+  const auto adaptive = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("thb.model.toml") +
+                                          " --refine-at contact:0.5 --refine-width 0.01 -o " + dir.path("refined.sid.h5"));
+  CHECK(adaptive.exit_status == 2);
+  CHECK_THAT(adaptive.err, Contains("--refine-at: an impact's refined model takes its state through a transfer"));
   // a free body has no massless Craig-Bampton model
   std::ofstream(dir.path("m.model.toml")) << std::string(kValid) + surface +
                                                  "[reduction]\nmethod = \"craig-bampton-massless\"\nnormal_modes = 5\nboundary_surface = \"contact\"\n";
