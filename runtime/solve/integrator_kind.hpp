@@ -12,7 +12,7 @@ enum class IntegratorKind { DormandPrince, Implicit, Leapfrog };
 
 /// The kind a scene file names, if any.
 std::optional<IntegratorKind> integrator_named(std::string_view name);
-/// The kind's name in scene files and summary.json.
+/// The kind's name in scene files.
 const char* integrator_name(IntegratorKind kind);
 /// The names of all kinds, "a, b, c", for messages.
 std::string integrator_names();
