@@ -1,8 +1,8 @@
 // Time integration of a MultibodySystem behind one interface: SUNDIALS ARKODE's adaptive
 // Dormand-Prince 5(4) and ESDIRK, with root finding on the contact gaps
 // (solve/arkode_integrator), or the fixed-step leapfrog of [R3] in docs/references.md
-// (solve/leapfrog). make_integrator gives the scene's; a new scheme is one more class and one
-// more case there.
+// (solve/leapfrog). make_integrator gives the scene's from the integrators' table in
+// time_integrator.cpp; a new scheme is one more class, its enumerator and one row there.
 #pragma once
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
