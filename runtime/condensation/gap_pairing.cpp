@@ -93,6 +93,7 @@ void GapPairing::pair(const double* y) {
   const Eigen::Vector3d r = slave_.r(y);
   const Eigen::VectorXd& q = slave_.q(y);
   TargetPoint t;
+  double smallest = INFINITY;
   for (Eigen::Index g = 0; g < surface_.points(); ++g) {
     const auto rows = surface_.Psi.middleRows(g * dim_, dim_);
     Eigen::Vector3d P = Eigen::Vector3d::Zero();
@@ -112,13 +113,17 @@ void GapPairing::pair(const double* y) {
       p.target_point -= displacement;
     }
     p.spacing = spacing_(g);
+    p.offset = t.gap;  // the gap for now; the offset once the smallest is known
+    smallest = std::min(smallest, t.gap);
     slave_reach_ = std::max(slave_reach_, surface_.position.row(g).norm());
     target_reach_ = std::max(target_reach_, p.target_point.norm());
     slave_rows_.add(p.slave_rows), target_rows_.add(p.target_rows);
     pairs_.push_back(std::move(p));
   }
   slave_rows_.finish(), target_rows_.finish();
+  for (Pair& p : pairs_) p.offset -= smallest;
   largest_ = std::max(largest_, pairs_.size());
+  count_condensed();
   // no point found the target from where it stands: the contact stays unpaired (projected)
   if (pairs_.empty()) paired_ = false;
 }
@@ -226,6 +231,20 @@ double GapPairing::watched_gap(const double* y) {
   watched_.assign(at);
   watched_.gap = smallest, watched_.slip = slip, watched_.separation = separation;
   return smallest;
+}
+
+void GapPairing::set_reach(double reach) { reach_ = reach; }
+
+void GapPairing::widen() {
+  reach_ *= 2;
+  ++widenings_;
+  count_condensed();
+}
+
+void GapPairing::count_condensed() {
+  std::size_t within = 0;
+  for (std::size_t k = 0; k < pairs_.size(); ++k) within += within_reach(k);
+  largest_condensed_ = std::max(largest_condensed_, within);
 }
 
 double GapPairing::min_gap(const double* y) const {

@@ -6,10 +6,16 @@
 // their quasistatic modes: what condenses a massless boundary onto the gaps. A pairing holds
 // while the points do not slide along the target by more than a quarter of their spacing
 // (slip()); beyond, the contact is paired again where it stands.
+//
+// Not every pair need take part in the condensation: the pairs within the pairing's reach (their
+// gap at pairing at most that much above the smallest) are condensed, those beyond are only
+// checked (gap_space_solve.hpp). A reach sized from the impact keeps the dense compliance
+// between the condensed points to the contact and its rim, not the whole surface.
 #pragma once
 #include "body/floating_body.hpp"
 #include "contact/contact_target.hpp"
 
+#include <cmath>
 #include <vector>
 
 namespace isosid::run {
@@ -61,6 +67,7 @@ public:
     Eigen::Vector3d target_point = Eigen::Vector3d::Zero();  ///< its undeformed position, same frame
     SparseRows slave_rows, target_rows;                   ///< displacement rows (target: a flexible body's)
     double spacing = 0;                                   ///< m: the slave point's distance to its nearest neighbour
+    double offset = 0;                                    ///< m: its gap at pairing less the pairing's smallest
   };
   /// Where a pair stands at a state.
   struct Evaluation {
@@ -85,6 +92,13 @@ public:
   const std::vector<Pair>& pairs() const { return pairs_; }
   /// Pairs every slave point that the target sees at y (its quasistatic coordinates as set).
   void pair(const double* y);
+  /// The offset up to which pairs are condensed (see Pair::offset), m; +inf: every pair. Kept by
+  /// later pairings until set again.
+  void set_reach(double reach);
+  double reach() const { return reach_; }
+  bool within_reach(std::size_t k) const { return pairs_[k].offset <= reach_; }
+  /// Doubles the reach (a point beyond it would have pressed).
+  void widen();
   /// Ends the pairing once the contact has left (every pair open by twice the pairing
   /// distance). Its pairs are kept to watch the bodies: while no point has slid along the target
   /// by the pairing distance, they tell the contact's gap far more cheaply than projecting.
@@ -99,8 +113,11 @@ public:
   /// Times pair() was called, and how many of them replaced a pairing (one that slid).
   long pairings() const { return pairings_; }
   long repairings() const { return repairings_; }
-  /// The most pairs any pairing made.
+  /// The most pairs any pairing made, and the most of them within reach at once.
   std::size_t largest_pairing() const { return largest_; }
+  std::size_t largest_condensed() const { return largest_condensed_; }
+  /// Times the reach was widened.
+  long widenings() const { return widenings_; }
 
   /// The poses at y (both bodies' coordinates as set now).
   Poses poses(const double* y) const;
@@ -168,9 +185,13 @@ private:
   WatchedState watched_;
   mutable PosesCopy evaluated_at_;  ///< the poses of evaluations_
   mutable std::vector<Evaluation> evaluations_;
+  /// Counts the pairs within reach into largest_condensed_.
+  void count_condensed();
+
   bool paired_ = false, watching_ = false;
-  long pairings_ = 0, repairings_ = 0;
-  std::size_t largest_ = 0;
+  double reach_ = INFINITY;
+  long pairings_ = 0, repairings_ = 0, widenings_ = 0;
+  std::size_t largest_ = 0, largest_condensed_ = 0;
 };
 
 }  // namespace isosid::run

@@ -2,9 +2,13 @@
 #include "condensation/gap_space_solve.hpp"
 
 #include "condensation/quasistatic_modes.hpp"
+#include "contact/impact_estimate.hpp"
 #include "isosid/format/error.hpp"
 
 #include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <optional>
 
 namespace isosid::run {
 
@@ -34,27 +38,26 @@ bool GapSpaceSolve::pair_approaching(const double* y) {
   for (const SurfaceContact* c : contacts_) {
     GapPairing& pairing = c->gap_pairing();
     // an unpaired contact's gap: watched from its last pairing while clearly apart, else projected
-    if (!pairing.paired() && c->min_gap(y) < pairing.pairing_distance()) pairing.pair(y), paired = true;
+    if (pairing.paired() || !(c->min_gap(y) < pairing.pairing_distance())) continue;
+    const std::optional<ImpactEstimate> estimate = estimate_impact(*c, y);
+    pairing.set_reach(estimate && estimate->approach > 0 ? kReachPerApproach * estimate->approach : INFINITY);
+    pairing.pair(y);
+    paired = true;
   }
   return paired;
 }
 
 bool GapSpaceSolve::evaluate_pairs(const double* y) {
-  const Eigen::Index m = Eigen::Index(pairs_.size());
-  free_gaps_.resize(m);
   bool held = true;
-  // pairs are stacked contact by contact: each contact's run of them
-  for (Eigen::Index first = 0; first < m;) {
-    const SurfaceContact* c = pairs_[std::size_t(first)].contact;
+  for (const SurfaceContact* c : contacts_) {
     GapPairing& pairing = c->gap_pairing();
+    if (!pairing.paired()) continue;
     const std::vector<GapPairing::Evaluation>& evaluations = pairing.evaluations(pairing.poses(y));
     double smallest = INFINITY;
     bool slid = false;
-    Eigen::Index i = first;
-    for (; i < m && pairs_[std::size_t(i)].contact == c; ++i) {
-      const GapPairing::Pair& p = pairing.pairs()[pairs_[std::size_t(i)].k];
-      const GapPairing::Evaluation& e = evaluations[pairs_[std::size_t(i)].k];
-      free_gaps_(i) = e.gap;
+    for (std::size_t k = 0; k < evaluations.size(); ++k) {
+      const GapPairing::Pair& p = pairing.pairs()[k];
+      const GapPairing::Evaluation& e = evaluations[k];
       smallest = std::min(smallest, e.gap);
       // a point far from the target may slide without harm: it counts from a spacing's distance on
       slid = slid || (e.gap < p.spacing && e.slip > GapPairing::kSlipPerSpacing * p.spacing);
@@ -66,9 +69,18 @@ bool GapSpaceSolve::evaluate_pairs(const double* y) {
       pairing.release();
       held = false;
     }
-    first = i;
   }
-  return held;
+  if (!held) return false;
+  const auto free_gaps = [&](const std::vector<StackedPair>& stacked, Eigen::VectorXd& gaps) {
+    gaps.resize(Eigen::Index(stacked.size()));
+    for (std::size_t i = 0; i < stacked.size(); ++i) {
+      const GapPairing& pairing = stacked[i].contact->gap_pairing();
+      gaps(Eigen::Index(i)) = pairing.evaluations(pairing.poses(y))[stacked[i].k].gap;
+    }
+  };
+  free_gaps(pairs_, free_gaps_);
+  free_gaps(beyond_, free_gaps_beyond_);
+  return true;
 }
 
 void GapSpaceSolve::throw_unsettled_pairing() const {
@@ -76,25 +88,32 @@ void GapSpaceSolve::throw_unsettled_pairing() const {
                               std::to_string(kMaxRepairings) + " times at one state)");
 }
 
-void GapSpaceSolve::condense(const double* y) {
-  pairs_.clear();
-  for (const SurfaceContact* c : contacts_) {
-    const GapPairing& pairing = c->gap_pairing();
-    if (!pairing.paired()) continue;
-    for (std::size_t k = 0; k < pairing.pairs().size(); ++k) pairs_.push_back({c, k});
-  }
-  const Eigen::Index m = Eigen::Index(pairs_.size()), n = stiffness_.size();
-  // V column by column: each pair's gradient touches its points' control points only
+Eigen::SparseMatrix<double> GapSpaceSolve::gradients(const double* y, const std::vector<StackedPair>& stacked) const {
+  const Eigen::Index m = Eigen::Index(stacked.size()), n = stiffness_.size();
+  // column by column: each pair's gradient touches its points' control points only
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::VectorXd column(n);
   for (Eigen::Index i = 0; i < m; ++i) {
     column.setZero();
-    pairs_[std::size_t(i)].contact->gap_pairing().add_gradient(y, pairs_[std::size_t(i)].k, column);
+    stacked[std::size_t(i)].contact->gap_pairing().add_gradient(y, stacked[std::size_t(i)].k, column);
     for (Eigen::Index j = 0; j < n; ++j)
       if (column(j) != 0) entries.emplace_back(j, i, column(j));
   }
   Eigen::SparseMatrix<double> V(n, m);
   V.setFromTriplets(entries.begin(), entries.end());
+  return V;
+}
+
+void GapSpaceSolve::condense(const double* y) {
+  pairs_.clear(), beyond_.clear();
+  for (const SurfaceContact* c : contacts_) {
+    const GapPairing& pairing = c->gap_pairing();
+    if (!pairing.paired()) continue;
+    for (std::size_t k = 0; k < pairing.pairs().size(); ++k) (pairing.within_reach(k) ? pairs_ : beyond_).push_back({c, k});
+  }
+  const Eigen::Index m = Eigen::Index(pairs_.size());
+  const Eigen::SparseMatrix<double> V = gradients(y, pairs_);
+  V_beyond_ = gradients(y, beyond_);
   stiffness_.solve_stiffness(V, W_);
   Eigen::VectorXd penalty_stiffness(m);
   for (Eigen::Index i = 0; i < m; ++i) {
@@ -108,6 +127,8 @@ int GapSpaceSolve::solve_forces() {
   int iterations = 0;
   switch (points_.solve(free_gaps_, iterations)) {
     case PenaltyComplementarity::Outcome::Solved:
+      response_.setZero(stiffness_.size());
+      for (const Eigen::Index a : points_.pressed()) response_.noalias() += points_.forces()(a) * W_.col(a);
       return iterations;
     case PenaltyComplementarity::Outcome::NotPositiveDefinite:
       throw QuasistaticDivergence("the gap-space compliance of contact '" + contacts_.front()->name() + "' is not positive definite");
@@ -118,6 +139,18 @@ int GapSpaceSolve::solve_forces() {
   }
   throw QuasistaticDivergence("the gap-space contact of '" + contacts_.front()->name() + "' found no active set in " +
                               std::to_string(iterations) + " iterations");
+}
+
+bool GapSpaceSolve::widen_outgrown() {
+  if (beyond_.empty()) return false;
+  const Eigen::VectorXd gaps = free_gaps_beyond_ + V_beyond_.transpose() * response_;
+  std::vector<GapPairing*> outgrown;
+  for (std::size_t i = 0; i < beyond_.size(); ++i) {
+    GapPairing* pairing = &beyond_[i].contact->gap_pairing();
+    if (gaps(Eigen::Index(i)) < 0 && std::find(outgrown.begin(), outgrown.end(), pairing) == outgrown.end()) outgrown.push_back(pairing);
+  }
+  for (GapPairing* pairing : outgrown) pairing->widen();
+  return !outgrown.empty();
 }
 
 }  // namespace isosid::run

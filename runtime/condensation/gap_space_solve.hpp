@@ -9,10 +9,19 @@
 // complementarity problem (penalty_complementarity.hpp), warm-started from the last active
 // set. Per solve, what grows with the boundary's coordinates is the product W f and z_h's
 // (the coupling response times the modes, quasistatic_modes.hpp).
+//
+// Only the pairs within their pairing's reach are condensed: at a contact's first pairing the
+// reach is kReachPerApproach times the Hertz estimate's approach there (a sphere on a plane:
+// the points within 1.22 a of the first touch; the contact itself spans a). The pairs beyond
+// are checked after each solve, their gaps g_free + V^T (W f) at the forces found: if one would
+// press, its contact's reach doubles and the solve is repeated, so the forces are those of every
+// pair condensed (those beyond carry none: open gaps under the penalty law).
 #pragma once
 #include "condensation/penalty_complementarity.hpp"
 #include "condensation/quasistatic_jacobian.hpp"
 #include "contact/surface_contact.hpp"
+
+#include <Eigen/SparseCore>
 
 #include <vector>
 
@@ -22,6 +31,11 @@ class GapSpaceSolve {
 public:
   /// Pairings made again at one state before the solve fails.
   static constexpr int kMaxRepairings = 3;
+  /// A first pairing's reach per Hertz approach (contacts without a Hertz estimate: every pair).
+  /// A point of a sphere on a plane at radius r from the first touch is offset by r^2 / 2R, and
+  /// the Hertz approach is a^2 / R: the contact's points lie within half an approach, this reach
+  /// within 1.22 a.
+  static constexpr double kReachPerApproach = 0.75;
 
   /// `contacts`: every contact on the quasistatic modes, each solved in gap space
   /// (penalty, frictionless); `stiffness`: K of the stacked quasistatic modes.
@@ -42,8 +56,13 @@ public:
       condense(y);
     }
     if (pairs_.empty()) return 0;
-    const int iterations = solve_forces();
-    for (const Eigen::Index a : points_.pressed()) z.noalias() += points_.forces()(a) * W_.col(a);
+    int iterations = solve_forces();
+    while (widen_outgrown()) {
+      condense(y);
+      evaluate_pairs(y);  // the same pairs, stacked anew: it holds
+      iterations += solve_forces();
+    }
+    z.noalias() += response_;
     scatter(z);
     return iterations;
   }
@@ -54,25 +73,34 @@ private:
     const SurfaceContact* contact = nullptr;
     std::size_t k = 0;
   };
-  /// Pairs the unpaired contacts that came within their pairing distance at y (z = z_h set);
-  /// true if any was.
+  /// Pairs the unpaired contacts that came within their pairing distance at y (z = z_h set),
+  /// each with its reach; true if any was.
   bool pair_approaching(const double* y);
-  /// V, W and C of the current pairs, and their penalty stiffness c_p w.
+  /// V, W and C of the current pairs within reach, their penalty stiffness c_p w, and the
+  /// gradients of the pairs beyond.
   void condense(const double* y);
   /// The pairs' free gaps at y (z = z_h set), in one pass that also checks each pairing: one
   /// that slid is paired again, one whose pairs are all open by twice the pairing distance
   /// released. False if a pairing changed (the pairs must then be condensed again).
   bool evaluate_pairs(const double* y);
-  /// The points' forces at the free gaps; returns the iterations.
+  /// The points' forces at the free gaps, and their response W f; returns the iterations.
   int solve_forces();
+  /// Widens the reach of every contact with a pair beyond it that the forces found would press;
+  /// true if any was.
+  bool widen_outgrown();
+  /// The gaps' gradients of stacked pairs at y, a column each.
+  Eigen::SparseMatrix<double> gradients(const double* y, const std::vector<StackedPair>& stacked) const;
   /// Throws QuasistaticDivergence: the pairings at one state did not hold after kMaxRepairings.
   [[noreturn]] void throw_unsettled_pairing() const;
 
   std::vector<const SurfaceContact*> contacts_;
   const QuasistaticJacobian& stiffness_;
-  std::vector<StackedPair> pairs_;
+  std::vector<StackedPair> pairs_;   ///< within reach: condensed
+  std::vector<StackedPair> beyond_;  ///< paired beyond reach: checked
   Eigen::MatrixXd W_;
-  Eigen::VectorXd free_gaps_;
+  Eigen::SparseMatrix<double> V_beyond_;  ///< the gaps' gradients of the pairs beyond reach
+  Eigen::VectorXd free_gaps_, free_gaps_beyond_;
+  Eigen::VectorXd response_;  ///< W f of the last solve
   PenaltyComplementarity points_;  ///< the compliance C = V^T W and the penalty law on the points
 };
 

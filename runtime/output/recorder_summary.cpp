@@ -120,6 +120,8 @@ nlohmann::json Recorder::contact_summary(std::size_t k) const {
     c["pairs"] = pairing.largest_pairing();
     c["pairings"] = pairing.pairings();
     c["repairings"] = pairing.repairings();
+    c["condensed_points"] = pairing.largest_condensed();
+    c["reach_widenings"] = pairing.widenings();
   }
   c["edge_reached_s"] = edge_reached_[k] < 0 ? json(nullptr) : json(edge_reached_[k]);
   c["interface_left_s"] = interface_left_[k] < 0 ? json(nullptr) : json(interface_left_[k]);
