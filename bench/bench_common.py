@@ -49,6 +49,19 @@ def run_scene(scene, out):
                     env=dict(os.environ, ISOSID_PREP=os.path.join(BUILD, "preprocess", "isosid-prep")))
 
 
+def run_scene_measured(scene, out):
+    """As run_scene, for a scene whose SIDs are prepared: returns its summary and the run's
+    peak RSS in MiB."""
+    with tempfile.TemporaryFile("w+") as out_file, tempfile.TemporaryFile("w+") as err_file:
+        proc = subprocess.Popen([os.path.join(BUILD, "runtime", "isosid-run"), "-q", "--json", scene, "-o", out],
+                                stdout=out_file, stderr=err_file, text=True)
+        _, status, rusage = os.wait4(proc.pid, 0)
+        out_file.seek(0), err_file.seek(0)
+        if os.waitstatus_to_exitcode(status) != 0:
+            raise SystemExit(f"isosid-run {scene} failed ({os.waitstatus_to_exitcode(status)}): {err_file.read().strip()}")
+        return json.loads(out_file.read()), rusage.ru_maxrss / 1024.0
+
+
 def run_prep(build, model, sid, timeout=math.inf):
     """Runs the build's isosid-prep on a model file into `sid`, stopped after `timeout` seconds.
     Returns a dict: 'lines' (stderr's lines, each with its time since the start), 'status' (as
