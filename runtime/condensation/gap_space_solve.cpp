@@ -71,11 +71,14 @@ bool GapSpaceSolve::evaluate_pairs(const double* y) {
     }
   }
   if (!held) return false;
+  // the stacked pairs run contact by contact: each run's evaluations fetched once
   const auto free_gaps = [&](const std::vector<StackedPair>& stacked, Eigen::VectorXd& gaps) {
     gaps.resize(Eigen::Index(stacked.size()));
+    const std::vector<GapPairing::Evaluation>* evaluations = nullptr;
     for (std::size_t i = 0; i < stacked.size(); ++i) {
       const GapPairing& pairing = stacked[i].contact->gap_pairing();
-      gaps(Eigen::Index(i)) = pairing.evaluations(pairing.poses(y))[stacked[i].k].gap;
+      if (i == 0 || stacked[i].contact != stacked[i - 1].contact) evaluations = &pairing.evaluations(pairing.poses(y));
+      gaps(Eigen::Index(i)) = (*evaluations)[stacked[i].k].gap;
     }
   };
   free_gaps(pairs_, free_gaps_);
