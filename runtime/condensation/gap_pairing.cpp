@@ -233,17 +233,17 @@ double GapPairing::watched_gap(const double* y) {
   return smallest;
 }
 
-void GapPairing::set_reach(double reach) { reach_ = reach; }
+void GapPairing::set_condensation_reach(double reach) { condensation_reach_ = reach; }
 
 void GapPairing::widen() {
-  reach_ *= 2;
+  condensation_reach_ *= 2;
   ++widenings_;
   count_condensed();
 }
 
 void GapPairing::count_condensed() {
   std::size_t within = 0;
-  for (std::size_t k = 0; k < pairs_.size(); ++k) within += within_reach(k);
+  for (std::size_t k = 0; k < pairs_.size(); ++k) within += condensed(k);
   largest_condensed_ = std::max(largest_condensed_, within);
 }
 

@@ -7,9 +7,9 @@
 // while the points do not slide along the target by more than a quarter of their spacing
 // (slip()); beyond, the contact is paired again where it stands.
 //
-// Not every pair need take part in the condensation: the pairs within the pairing's reach (their
-// gap at pairing at most that much above the smallest) are condensed, those beyond are only
-// checked (gap_space_solve.hpp). A reach sized from the impact keeps the dense compliance
+// Not every pair need take part in the condensation: the pairs within the condensation reach
+// (their gap at pairing at most that much above the smallest) are condensed, those beyond are
+// only checked (gap_space_solve.hpp). A reach sized from the impact keeps the dense compliance
 // between the condensed points to the contact and its rim, not the whole surface.
 #pragma once
 #include "body/floating_body.hpp"
@@ -94,10 +94,10 @@ public:
   void pair(const double* y);
   /// The offset up to which pairs are condensed (see Pair::offset), m; +inf: every pair. Kept by
   /// later pairings until set again.
-  void set_reach(double reach);
-  double reach() const { return reach_; }
-  bool within_reach(std::size_t k) const { return pairs_[k].offset <= reach_; }
-  /// Doubles the reach (a point beyond it would have pressed).
+  void set_condensation_reach(double reach);
+  /// Whether pair k is within the condensation reach.
+  bool condensed(std::size_t k) const { return pairs_[k].offset <= condensation_reach_; }
+  /// Doubles the condensation reach (a point beyond it would have pressed).
   void widen();
   /// Ends the pairing once the contact has left (every pair open by twice the pairing
   /// distance). Its pairs are kept to watch the bodies: while no point has slid along the target
@@ -189,7 +189,7 @@ private:
   void count_condensed();
 
   bool paired_ = false, watching_ = false;
-  double reach_ = INFINITY;
+  double condensation_reach_ = INFINITY;
   long pairings_ = 0, repairings_ = 0, widenings_ = 0;
   std::size_t largest_ = 0, largest_condensed_ = 0;
 };

@@ -40,7 +40,7 @@ bool GapSpaceSolve::pair_approaching(const double* y) {
     // an unpaired contact's gap: watched from its last pairing while clearly apart, else projected
     if (pairing.paired() || !(c->min_gap(y) < pairing.pairing_distance())) continue;
     const std::optional<ImpactEstimate> estimate = estimate_impact(*c, y);
-    pairing.set_reach(estimate && estimate->approach > 0 ? kReachPerApproach * estimate->approach : INFINITY);
+    pairing.set_condensation_reach(estimate && estimate->approach > 0 ? kReachPerApproach * estimate->approach : INFINITY);
     pairing.pair(y);
     paired = true;
   }
@@ -112,7 +112,7 @@ void GapSpaceSolve::condense(const double* y) {
   for (const SurfaceContact* c : contacts_) {
     const GapPairing& pairing = c->gap_pairing();
     if (!pairing.paired()) continue;
-    for (std::size_t k = 0; k < pairing.pairs().size(); ++k) (pairing.within_reach(k) ? pairs_ : beyond_).push_back({c, k});
+    for (std::size_t k = 0; k < pairing.pairs().size(); ++k) (pairing.condensed(k) ? pairs_ : beyond_).push_back({c, k});
   }
   const Eigen::Index m = Eigen::Index(pairs_.size());
   const Eigen::SparseMatrix<double> V = gradients(y, pairs_);
