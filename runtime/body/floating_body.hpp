@@ -32,6 +32,10 @@ public:
 
   const std::string& name() const { return name_; }
   const format::Sid& sid() const { return sid_; }
+  /// Gives its SID up; the body is of no use after (a system built to look at a scene hands its
+  /// SIDs on to the one that runs it).
+  format::Sid release_sid() && { return std::move(sid_); }
+  bool rigid() const { return spec_.rigid.has_value(); }
   Eigen::Index nq() const { return sid_.nq(); }
   /// Modes integrated in time (the leading ones); the rest are quasistatic, held outside the state.
   Eigen::Index n_dynamic() const { return n_dynamic_; }

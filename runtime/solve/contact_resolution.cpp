@@ -28,7 +28,8 @@ std::vector<std::string> fit_contact_resolution(Scene& scene, std::vector<format
   // the finest estimated contact radius of each body over its contacts
   std::map<std::string, double> wanted;
   {
-    const MultibodySystem probe(scene, sids);
+    // the SIDs lent to the probe and given back: a copy would hold every SID twice
+    MultibodySystem probe(scene, std::move(sids));
     for (std::size_t k = 0; k < probe.contacts().size(); ++k) {
       const auto& estimate = probe.impact_estimates()[k];
       if (!estimate) continue;
@@ -36,6 +37,7 @@ std::vector<std::string> fit_contact_resolution(Scene& scene, std::vector<format
       for (const FloatingBody* b : {&contact.body(), contact.target().body()})
         if (b) wanted[b->name()] = wanted.count(b->name()) ? std::min(wanted[b->name()], estimate->contact_radius) : estimate->contact_radius;
     }
+    sids = std::move(probe).release_sids();
   }
   std::vector<std::string> rebuilt;
   std::size_t next_sid = 0;

@@ -67,6 +67,13 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   estimate_impacts(y0.data());
 }
 
+std::vector<format::Sid> MultibodySystem::release_sids() && {
+  std::vector<format::Sid> sids;
+  for (std::unique_ptr<FloatingBody>& b : bodies_)
+    if (!b->rigid()) sids.push_back(std::move(*b).release_sid());
+  return sids;
+}
+
 void MultibodySystem::estimate_impacts(const double* y) {
   impact_estimates_.clear();
   resolution_warnings_.clear();

@@ -28,6 +28,9 @@ class MultibodySystem {
 public:
   /// `sids`: one per flexible body of the scene, in order (rigid bodies get theirs here).
   MultibodySystem(const Scene& scene, std::vector<format::Sid> sids);
+  /// Gives up the SIDs of its flexible bodies, in the scene's order; the system is of no use
+  /// after.
+  std::vector<format::Sid> release_sids() &&;
 
   Eigen::Index size() const { return size_; }
   void initial_state(double* y) const;
