@@ -7,7 +7,6 @@
 
 #include <Eigen/SparseCore>
 
-#include <algorithm>
 #include <optional>
 
 namespace isosid::run {
@@ -145,15 +144,17 @@ int GapSpaceSolve::solve_forces() {
 }
 
 bool GapSpaceSolve::widen_outgrown() {
-  if (beyond_.empty()) return false;
-  const Eigen::VectorXd gaps = free_gaps_beyond_ + V_beyond_.transpose() * response_;
-  std::vector<GapPairing*> outgrown;
-  for (std::size_t i = 0; i < beyond_.size(); ++i) {
-    GapPairing* pairing = &beyond_[i].contact->gap_pairing();
-    if (gaps(Eigen::Index(i)) < 0 && std::find(outgrown.begin(), outgrown.end(), pairing) == outgrown.end()) outgrown.push_back(pairing);
+  // the pairs beyond run contact by contact: a contact widened once skips the rest of its run
+  bool widened = false;
+  const SurfaceContact* last_widened = nullptr;
+  for (Eigen::Index i = 0; i < V_beyond_.outerSize(); ++i) {
+    const SurfaceContact* c = beyond_[std::size_t(i)].contact;
+    if (c == last_widened) continue;
+    double gap = free_gaps_beyond_(i);
+    for (Eigen::SparseMatrix<double>::InnerIterator it(V_beyond_, i); it; ++it) gap += it.value() * response_(it.index());
+    if (gap < 0) c->gap_pairing().widen(), last_widened = c, widened = true;
   }
-  for (GapPairing* pairing : outgrown) pairing->widen();
-  return !outgrown.empty();
+  return widened;
 }
 
 }  // namespace isosid::run
