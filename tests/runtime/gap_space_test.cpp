@@ -104,7 +104,7 @@ TEST_CASE("gap space: a contact it cannot solve is refused in one line naming th
   }
 }
 
-TEST_CASE("gap space: a contact that outgrows its Hertz estimate widens its condensed points and lands as on the general path", "[runtime][massless][gap-space]") {
+TEST_CASE("gap space: a contact that outgrows its Hertz estimate widens its condensed points and presses as on the general path", "[runtime][massless][gap-space]") {
   const test::ScratchDir dir("gap-space-widened");
   test::write_coarse_sphere_impactor(dir);
   std::ofstream(dir.path("beam.model.toml")) << test::free_beam_model();
