@@ -38,12 +38,6 @@ void check_agree(const json& reference, const json& other, std::initializer_list
 
 using test::replace;
 
-/// The text of `file` in the scratch folder (a model or scene a seed run copied there).
-std::string scratch_text(const test::ScratchDir& dir, const std::string& file) {
-  std::ifstream in(dir.path(file));
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 const std::string kImpact = test::golden_impact_scene(kGolden + "/sphere_small.sid.h5");
 }  // namespace
 
@@ -648,10 +642,10 @@ TEST_CASE("scene A: the Craig-Bampton and the full modal sphere agree within 1 %
   const test::ScratchDir dir("scene-a-full");
   const json full = run_seed_scene(dir, "sphere_hertz_full.scene.toml", "sphere_axisym_full.model.toml");
   // its Craig-Bampton twin: the Craig-Bampton sphere's reduction on the full model's mesh
-  std::ofstream(dir.path("cb.model.toml")) << replace(scratch_text(dir, "sphere_axisym_full.model.toml"), "method = \"full\"",
+  std::ofstream(dir.path("cb.model.toml")) << replace(test::model_text("sphere_axisym_full.model.toml"), "method = \"full\"",
                                                       "method = \"craig-bampton\"\nnormal_modes = 6\ninterface_surface = \"contact\"\n"
                                                       "interface_points = 16\ninterface_center = [0.0]");
-  const std::string cb_scene = replace(replace(replace(scratch_text(dir, "sphere_hertz_full.scene.toml"), "sphere_axisym_full.sid.h5", "cb.sid.h5"),
+  const std::string cb_scene = replace(replace(replace(test::model_text("sphere_hertz_full.scene.toml"), "sphere_axisym_full.sid.h5", "cb.sid.h5"),
                                                "sphere_axisym_full.model.toml", "cb.model.toml"),
                                        "quasistatic_above_hz = 310e3", "");
   const json cb = test::run_scene(dir, cb_scene, 0);
@@ -679,8 +673,8 @@ TEST_CASE("scene A: the hierarchically refined sphere under a massless boundary 
   const std::string cb_reduction = "method = \"craig-bampton\"\nnormal_modes = 6\ninterface_surface = \"contact\"\n"
                                    "interface_points = 16\ninterface_center = [0.0]";
   std::ofstream(dir.path("macneal.model.toml"))
-      << replace(scratch_text(dir, "sphere_axisym_thb.model.toml"), cb_reduction, "method = \"macneal\"\nnormal_modes = 6\nboundary_surface = \"contact\"");
-  const std::string scene = replace(replace(scratch_text(dir, "sphere_hertz_thb.scene.toml"), "sphere_axisym_thb.sid.h5", "macneal.sid.h5"),
+      << replace(test::model_text("sphere_axisym_thb.model.toml"), cb_reduction, "method = \"macneal\"\nnormal_modes = 6\nboundary_surface = \"contact\"");
+  const std::string scene = replace(replace(test::model_text("sphere_hertz_thb.scene.toml"), "sphere_axisym_thb.sid.h5", "macneal.sid.h5"),
                                     "sphere_axisym_thb.model.toml", "macneal.model.toml");
   const json macneal = test::run_scene(dir, scene, 0);
   check_agree(cb, macneal, {"peak_force_n", "contact_time_s"}, 1e-4, "Craig-Bampton", "MacNeal");
