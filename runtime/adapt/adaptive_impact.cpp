@@ -37,10 +37,11 @@ double impact_output_interval(const Scene& scene, const std::optional<ImpactEsti
   return std::min(interval, std::max(estimate->contact_time / kSamplesPerImpact, interval / kMaxSamplesPerOutput));
 }
 
-/// Gives contact k of `scene` a penalty, with where it comes from (summary.json's penalty_source).
-void give_penalty(Scene& scene, std::size_t k, double value, std::string source) {
-  scene.contacts[k].penalty = value;
-  scene.contacts[k].penalty_source = std::move(source);
+/// Gives contact k a penalty in place of the scene's, with where it comes from (summary.json's
+/// penalty_source).
+void give_penalty(GivenPenalties& given, std::size_t k, double value, std::string source) {
+  if (given.size() <= k) given.resize(k + 1);
+  given[k] = ContactPenalty{value, std::move(source)};
 }
 
 /// Where the impact of contact k refines: the slave body on its surface at the touch, and a
@@ -104,7 +105,8 @@ std::vector<Refinement> refinements(const Scene& scene, const MultibodySystem& s
 
 }  // namespace
 
-ImpactRun AdaptivePhases::run_impact(std::unique_ptr<Simulation>& fine, Scene fine_scene, const std::vector<format::Sid>& fine_sids,
+ImpactRun AdaptivePhases::run_impact(std::unique_ptr<Simulation>& fine, const Scene& fine_scene, GivenPenalties fine_penalties,
+                                     const std::vector<format::Sid>& fine_sids,
                                      PhaseRecorder::Impact impact, const std::string& label, json entry) {
   ImpactRun out;
   const std::size_t k = std::size_t(impact.contact);
@@ -133,10 +135,10 @@ ImpactRun AdaptivePhases::run_impact(std::unique_ptr<Simulation>& fine, Scene fi
                    out.penalty.value(), lower.value());
     out.penalty = lower;
     out.lowered = true;
-    give_penalty(fine_scene, k, lower.value(), "penalty search: lowered after an error");
+    give_penalty(fine_penalties, k, lower.value(), "penalty search: lowered after an error");
     impact.point = run.centre;
     double change = 0;
-    fine = switch_models(*fine, fine_scene, fine_sids, std::vector<ElasticMap>(fine->system().bodies().size()), change);
+    fine = switch_models(*fine, fine_scene, fine_sids, std::vector<ElasticMap>(fine->system().bodies().size()), change, fine_penalties);
     entry = {{"kind", "impact"}, {"contact", entry["contact"]}, {"try", entry["try"]}, {"continued", part + 1},
              {"width_m", entry["width_m"]}, {"switch_energy_change", change}};
   }
@@ -168,6 +170,7 @@ TouchImpact AdaptivePhases::start_touch(const Simulation& coarse, const PhaseRec
 
 Eigen::Vector3d AdaptivePhases::refine(TouchImpact& t, const Simulation& coarse, double width, json& requests, double& preparation_wall) {
   t.fine_scene = coarse_;
+  t.fine_penalties.clear();  // try_impact gives the search's
   t.fine_scene.simulation = scene_.simulation;  // the impact under the scene's own integrator
   t.fine_scene.simulation.output_interval = t.sample_interval;
   // frames every few samples, or at the scene's own interval where that is shorter
@@ -228,20 +231,20 @@ bool AdaptivePhases::try_impact(TouchImpact& t, const Simulation& coarse, int at
   json requests = json::array();
   double preparation_wall = 0;
   const Eigen::Vector3d centre = refine(t, coarse, w, requests, preparation_wall);
-  if (t.penalty) give_penalty(t.fine_scene, k, t.penalty->value(), t.penalty_source);
+  if (t.penalty) give_penalty(t.fine_penalties, k, t.penalty->value(), t.penalty_source);
   double into = 0;
-  t.fine = switch_models(coarse, t.fine_scene, t.fine_sids, t.maps, into);
+  t.fine = switch_models(coarse, t.fine_scene, t.fine_sids, t.maps, into, t.fine_penalties);
   if (search_ && !t.penalty) {  // the search starts from the scene's penalty, or the one derived at the touch
     t.penalty = PenaltyFactor(t.fine->system().contacts()[k].penalty());
     t.penalty_source = t.fine->system().contacts()[k].penalty_source() + " (the penalty search's start)";
-    give_penalty(t.fine_scene, k, t.penalty->value(), t.penalty_source);
+    give_penalty(t.fine_penalties, k, t.penalty->value(), t.penalty_source);
   }
   json try_entry = {{"kind", "impact"}, {"contact", t.contact}, {"try", attempt}, {"touch_s", t.found.time},
                     {"width_m", w}, {"estimated_width_m", t.estimated_width}, {"refined", requests}, {"preparation_wall_s", preparation_wall},
                     {"switch_energy_change", into},
                     {"output_interval_s", t.sample_interval}};
   t.impact = {int(k), centre, w, attempt < kMaxTries, -1, PenaltySearch::kContactSteps, search_};
-  ImpactRun run = run_impact(t.fine, t.fine_scene, t.fine_sids, t.impact,
+  ImpactRun run = run_impact(t.fine, t.fine_scene, t.fine_penalties, t.fine_sids, t.impact,
                              "impact-" + t.contact + (attempt > 1 ? "-try" + std::to_string(attempt) : ""), try_entry);
   if (search_) t.penalty = run.penalty;  // lowered online: later tries start there
   if (run.lowered) t.penalty_source = "penalty search: lowered after an error";
@@ -289,10 +292,11 @@ void AdaptivePhases::search_penalty(TouchImpact& t, const Simulation& coarse) {
                               {"from", "the accepted try"}}});
   while (!trial.done()) {
     Scene probe_scene = t.fine_scene;
-    probe_scene.contacts[k].penalty = trial.next().value();
+    GivenPenalties probe_penalties = t.fine_penalties;
+    give_penalty(probe_penalties, k, trial.next().value(), "penalty search: a probe");
     probe_scene.simulation.end_time = window.end;
     double unused = 0;
-    auto probe = switch_models(coarse, probe_scene, t.fine_sids, t.maps, unused);
+    auto probe = switch_models(coarse, probe_scene, t.fine_sids, t.maps, unused, probe_penalties);
     PhaseRecorder::Impact probe_impact = t.impact;
     probe_impact.stop_beyond = false;
     PhaseRecorder recorder(*probe, adaptive_contact_, probe_impact, stop_requested_);
@@ -319,13 +323,13 @@ void AdaptivePhases::search_penalty(TouchImpact& t, const Simulation& coarse) {
   // the accepted try gives way to the impact at the found penalty
   for (std::size_t e = t.accepted_entries; e < log_.size(); ++e)
     log_[e]["accepted"] = false, log_[e]["decision"] = log_[e]["decision"].get<std::string>() + "; penalty changed";
-  give_penalty(t.fine_scene, k, trial.result().value(), "penalty search: found by trial");
+  give_penalty(t.fine_penalties, k, trial.result().value(), "penalty search: found by trial");
   double into = 0;
-  t.fine = switch_models(coarse, t.fine_scene, t.fine_sids, t.maps, into);
+  t.fine = switch_models(coarse, t.fine_scene, t.fine_sids, t.maps, into, t.fine_penalties);
   json entry = {{"kind", "impact"}, {"contact", t.contact}, {"try", "penalty"}, {"touch_s", t.found.time}, {"width_m", t.impact.width},
                 {"switch_energy_change", into}};
   t.impact.stop_beyond = false;  // the width stands
-  t.accepted = run_impact(t.fine, t.fine_scene, t.fine_sids, t.impact, "impact-" + t.contact + "-penalty", entry);
+  t.accepted = run_impact(t.fine, t.fine_scene, t.fine_penalties, t.fine_sids, t.impact, "impact-" + t.contact + "-penalty", entry);
   for (json& e : t.accepted.entries) {
     e.update({{"decision", "the penalty search's"}, {"accepted", true}});
     log_.push_back(e);

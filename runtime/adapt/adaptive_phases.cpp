@@ -44,7 +44,7 @@ Scene coarse_scene(const Scene& scene, ModelCache& cache) {
 }  // namespace
 
 std::unique_ptr<Simulation> switch_models(const Simulation& from, const Scene& scene, const std::vector<format::Sid>& sids,
-                                          const std::vector<ElasticMap>& maps, double& energy_change) {
+                                          const std::vector<ElasticMap>& maps, double& energy_change, GivenPenalties given) {
   const Eigen::VectorXd y = from.state();
   const double before = total_energy(from.system(), y.data());
   double after = 0;
@@ -52,7 +52,7 @@ std::unique_ptr<Simulation> switch_models(const Simulation& from, const Scene& s
     Eigen::VectorXd moved = transfer_state(from.system(), y.data(), to, maps);
     after = total_energy(to, moved.data());
     return moved;
-  });
+  }, std::move(given));
   energy_change = before != 0 ? (after - before) / std::abs(before) : after - before;
   return next;
 }

@@ -24,9 +24,10 @@
 namespace isosid::run {
 
 /// The next phase: `scene` on `sids` from `from`'s state at its time, the bodies' coordinates
-/// moved by `maps`; `energy_change` receives the switch's relative change of the total energy.
+/// moved by `maps`, with the penalties `given` in place of the scene's; `energy_change` receives
+/// the switch's relative change of the total energy.
 std::unique_ptr<Simulation> switch_models(const Simulation& from, const Scene& scene, const std::vector<format::Sid>& sids,
-                                          const std::vector<ElasticMap>& maps, double& energy_change);
+                                          const std::vector<ElasticMap>& maps, double& energy_change, GivenPenalties given = {});
 
 /// One phase run, its folder written.
 struct PhaseRun {
@@ -68,6 +69,7 @@ struct TouchImpact {
   std::optional<PenaltyFactor> penalty;  ///< the penalty the next run takes (unset: the scene's or derived)
   std::string penalty_source = "penalty search: learned at an earlier impact";
   Scene fine_scene;                      ///< the scene on the refined models
+  GivenPenalties fine_penalties;         ///< what the runs on them take in place of the scene's penalties
   std::vector<format::Sid> fine_sids;
   std::vector<std::size_t> refined;      ///< the bodies on refined models
   std::vector<ElasticMap> maps;          ///< coarse to fine, per body
@@ -100,8 +102,8 @@ private:
   void keep(const PhaseRun& run);
   /// Runs the impact on `fine`, continuing after errors with a lower penalty while the search
   /// allows; `fine` ends as the last part's simulation.
-  ImpactRun run_impact(std::unique_ptr<Simulation>& fine, Scene fine_scene, const std::vector<format::Sid>& fine_sids,
-                       PhaseRecorder::Impact impact, const std::string& label, nlohmann::json entry);
+  ImpactRun run_impact(std::unique_ptr<Simulation>& fine, const Scene& fine_scene, GivenPenalties fine_penalties,
+                       const std::vector<format::Sid>& fine_sids, PhaseRecorder::Impact impact, const std::string& label, nlohmann::json entry);
   /// The touch that ended the coarse phase of `coarse`: the refined region's first width.
   TouchImpact start_touch(const Simulation& coarse, const PhaseRecorder::Found& found);
   /// Try `attempt` of the touch's impact: refined models for the current width, the impact

@@ -17,6 +17,14 @@ struct ShapeSpec {
   Eigen::Vector3d half_extents = Eigen::Vector3d::Zero();  ///< box (centred on point, axis-aligned), m
 };
 
+/// A contact's penalty factor and where it comes from (summary.json's penalty_source). The
+/// system decides it once per run (contact/penalty_decision.hpp); a caller may give one for a
+/// run in place of the scene's (the adaptive loop's penalty search).
+struct ContactPenalty {
+  double value = 0;    ///< N/m^3
+  std::string source;  ///< "scene", the rule that derived it, or the caller's reason
+};
+
 struct ContactSpec {
   std::string name;
   std::string body, surface;    ///< slave: a flexible body and a contact surface of its SID
@@ -31,9 +39,6 @@ struct ContactSpec {
   /// Solved in gap space (condensation/gap_space_solve.hpp): the points paired once per impact,
   /// the quasistatic modes condensed onto their gaps; else every point projected at every pass.
   bool gap_space = false;
-  /// Where a given penalty comes from, for the summary: the scene, or the adaptive loop's
-  /// penalty search (adapt/adaptive_run sets it with the penalty)
-  std::string penalty_source = "scene";
   std::string law = "penalty";  ///< the normal law's name in contact/contact_law.cpp's table
 };
 

@@ -1,7 +1,6 @@
 // Penalty contact of slave Gauss points against a target; see surface_contact.hpp.
 #include "contact/surface_contact.hpp"
 
-#include "contact/default_penalty.hpp"
 #include "contact/surface_edge.hpp"
 #include "isosid/format/error.hpp"
 
@@ -32,14 +31,7 @@ const format::ContactSurface& find_surface(const ContactSpec& spec, const Floati
 }  // namespace
 
 SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body, const ContactTarget& target)
-    : spec_(spec), penalty_source_(spec.penalty_source), body_(body), target_(target), surface_(find_surface(spec, body)), dim_(body.sid().dim()) {
-  if (spec_.penalty <= 0) {  // none in the scene: derived from the materials and the contact resolution
-    derived_ = true;
-    penalty_source_ = "derived: 1000 E*/h";
-    set_penalty(derived_penalty(0));
-  } else {
-    set_penalty(spec_.penalty);
-  }
+    : spec_(spec), body_(body), target_(target), surface_(find_surface(spec, body)), dim_(body.sid().dim()) {
   edge_ = edge_points(surface_, body.sid().analysis, format::find_master_patch(body.sid(), surface_.master_patch));
   shape_columns_ = surface_.Psi.transpose();
   const Eigen::Index nh = body.n_quasistatic();
@@ -62,23 +54,10 @@ SurfaceContact::SurfaceContact(const ContactSpec& spec, const FloatingBody& body
   bounds_ = GapBounds(std::move(row_norms), kRefreshPerRadius * bound_radius_);
 }
 
-double SurfaceContact::derived_penalty(double contact_radius) const {
-  const FloatingBody* master = target_.body();
-  return default_penalty(body_, surface_, master, master ? master->contact_surface(spec_.target_surface) : nullptr, contact_radius);
-}
-
-void SurfaceContact::fit_penalty_to_contact_radius(double contact_radius) {
-  if (!derived_) return;  // a given penalty stays (its source may tell how it was derived before)
-  const double fitted = derived_penalty(contact_radius);
-  if (fitted == penalty_) return;  // the elements are larger than the contact radius
-  set_penalty(fitted);
-  penalty_source_ = "derived: 1000 E*/a";
-}
-
-void SurfaceContact::set_penalty(double penalty) {
-  penalty_ = penalty;
+void SurfaceContact::set_penalty(ContactPenalty penalty) {
+  penalty_ = std::move(penalty);
   if (law_) superseded_laws_.push_back(std::move(law_));
-  law_ = make_contact_law(spec_.law, {penalty});
+  law_ = make_contact_law(spec_.law, {penalty_.value});
   if (!law_) throw format::InputError(spec_.name, "law", "no contact law named '" + spec_.law + "'");
 }
 

@@ -67,20 +67,19 @@ public:
   /// recorded points where they hold, as apply() does).
   std::vector<PointLoad> point_loads(const double* y) const;
   bool frictionless() const { return spec_.friction == 0; }
-  /// Penalty factor, N/m^3: the scene's, or derived by default_penalty() where it gave none.
-  double penalty() const { return penalty_; }
+  /// What the scene gave for this contact.
+  const ContactSpec& spec() const { return spec_; }
+  /// Penalty factor, N/m^3, as the system decided it (contact/penalty_decision.hpp).
+  double penalty() const { return penalty_.value; }
+  /// Where the penalty came from: "scene", the rule that derived it, or the caller's reason.
+  const std::string& penalty_source() const { return penalty_.source; }
+  /// Takes the penalty the system decided and builds the law of it. A contact has no law until
+  /// then: the decision needs the impact's estimate, which needs the contact.
+  void set_penalty(ContactPenalty penalty);
   /// The normal law, of the penalty's stiffness.
   const ContactLaw& law() const { return *law_; }
   /// Its name in the table of laws (the scene's `law`).
   const std::string& law_name() const { return spec_.law; }
-  /// Where the penalty came from: "scene", or the rule that derived it.
-  const std::string& penalty_source() const { return penalty_source_; }
-  /// A derived penalty follows the contact radius (or half-width) the impact is expected to
-  /// reach, m (default_penalty); a penalty the scene gave stays.
-  void fit_penalty_to_contact_radius(double contact_radius);
-  /// default_penalty() for this contact's surfaces and a contact radius (0: unknown, from the
-  /// contact elements alone).
-  double derived_penalty(double contact_radius) const;
   /// Smallest signed gap over the contact points (negative: penetration; exact contact: the
   /// gap less lambda / c_p, negative while pressed), for event location; while the broad phase
   /// finds the surface clear, a positive lower bound.
@@ -104,8 +103,6 @@ private:
   double multiplier(Eigen::Index g) const { return spec_.exact ? multiplier_[std::size_t(g)] : 0.0; }
   /// Contact pressure of point g at gap `gap`, Pa: the law's, with its multiplier.
   double pressure(Eigen::Index g, double gap) const { return law_->pressure(gap, multiplier(g)); }
-  /// Sets the penalty and builds the law of it.
-  void set_penalty(double penalty);
 
   /// Calls f(g, Psi_g, P, A, target point) for every slave point that is a candidate:
   /// Psi_g its shape rows, P its body-frame position, A the slave's rotation; the target
@@ -154,15 +151,14 @@ private:
 
   ContactSpec spec_;            ///< as the scene gave it (the penalty's state is penalty_)
   std::unique_ptr<ContactLaw> law_;
-  /// Laws a refit replaced: a recording of the quasistatic terms points at its points' laws
-  /// until its next pass, so they stay alive (a refit happens when a run's state is set).
+  /// Laws a later decision replaced: a recording of the quasistatic terms points at its points'
+  /// laws until its next pass, so they stay alive (the system decides again where a later phase
+  /// of a run starts).
   std::vector<std::unique_ptr<ContactLaw>> superseded_laws_;
   std::unique_ptr<GapPairing> pairing_;  ///< gap-space contacts
   mutable Eigen::VectorXd min_gap_key_, last_min_gap_key_;  ///< gap space: solution_key() of the last unpaired min_gap()
   mutable double last_min_gap_ = 0;
-  double penalty_ = 0;          ///< N/m^3: the spec's, or derived
-  std::string penalty_source_;  ///< the spec's, or "derived: ..."
-  bool derived_ = false;        ///< the penalty was derived here (none given)
+  ContactPenalty penalty_;      ///< as the system decided it
   const FloatingBody& body_;
   const ContactTarget& target_;
   const format::ContactSurface& surface_;

@@ -11,7 +11,8 @@
 
 namespace isosid::run {
 
-MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> sids) : gravity_(scene.gravity) {
+MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> sids, GivenPenalties given)
+    : gravity_(scene.gravity), given_penalties_(std::move(given)) {
   std::size_t next_sid = 0;
   for (const BodySpec& spec : scene.bodies) {
     format::Sid sid = spec.rigid ? rigid_body_sid(spec, scene.simulation.dimension) : std::move(sids.at(next_sid++));
@@ -64,6 +65,8 @@ MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> si
   initial_state(y0.data());
   joints_ = std::make_unique<JointConstraints>(scene.joints, scene.simulation.joint_stabilization, scene.gravity, scene.file, bodies_, size_,
                                                y0.data());
+  given_penalties_.resize(contacts_.size());
+  penalty_contact_radius_.assign(contacts_.size(), 0.0);
   estimate_impacts(y0.data());
 }
 
@@ -77,11 +80,14 @@ std::vector<format::Sid> MultibodySystem::release_sids() && {
 void MultibodySystem::estimate_impacts(const double* y) {
   impact_estimates_.clear();
   resolution_warnings_.clear();
-  for (SurfaceContact& c : contacts_) {
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    SurfaceContact& c = contacts_[k];
     impact_estimates_.push_back(estimate_impact(c, y));
-    if (!impact_estimates_.back()) continue;
-    c.fit_penalty_to_contact_radius(impact_estimates_.back()->contact_radius);
-    if (std::string w = resolution_warning(c, *impact_estimates_.back()); !w.empty()) resolution_warnings_.push_back({"resolution", w});
+    const auto& estimate = impact_estimates_.back();
+    if (estimate) penalty_contact_radius_[k] = estimate->contact_radius;
+    c.set_penalty(decide_penalty(c, given_penalties_[k], penalty_contact_radius_[k]));
+    if (!estimate) continue;
+    if (std::string w = resolution_warning(c, *estimate); !w.empty()) resolution_warnings_.push_back({"resolution", w});
   }
 }
 

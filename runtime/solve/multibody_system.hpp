@@ -7,6 +7,7 @@
 #include "contact/contact_target.hpp"
 #include "contact/hertz_contact.hpp"
 #include "contact/impact_estimate.hpp"
+#include "contact/penalty_decision.hpp"
 #include "contact/surface_contact.hpp"
 #include "contact/surface_touch.hpp"
 #include "joint/joint_constraints.hpp"
@@ -27,7 +28,8 @@ struct Energies {
 class MultibodySystem {
 public:
   /// `sids`: one per flexible body of the scene, in order (rigid bodies get theirs here).
-  MultibodySystem(const Scene& scene, std::vector<format::Sid> sids);
+  /// `given`: penalties a caller gives contacts for this run in place of the scene's.
+  MultibodySystem(const Scene& scene, std::vector<format::Sid> sids, GivenPenalties given = {});
   /// Gives up the SIDs of its flexible bodies, in the scene's order; the system is of no use
   /// after.
   std::vector<format::Sid> release_sids() &&;
@@ -90,9 +92,9 @@ public:
   std::size_t body_index(const std::string& name) const;
   /// What the user should know about the set-up (e.g. hundreds of dynamically integrated modes).
   std::vector<RunWarning> warnings() const;
-  /// The Hertz estimate of every contact at state y (impact_estimates()), the derived penalties
-  /// fitted to it and the resolution warnings: at the initial state, and again where a later
-  /// phase of a run starts (an impact long after t = 0).
+  /// The Hertz estimate of every contact at state y (impact_estimates()), each contact's
+  /// penalty decided from it (contact/penalty_decision.hpp) and the resolution warnings: at the
+  /// initial state, and again where a later phase of a run starts (an impact long after t = 0).
   void estimate_impacts(const double* y);
   /// Newton iterations of the quasistatic modes so far.
   long quasistatic_iterations() const { return quasistatic_iterations_; }
@@ -149,6 +151,8 @@ private:
   std::vector<RunWarning> warnings_;
   std::vector<RunWarning> resolution_warnings_;  ///< of the last estimate_impacts
   std::vector<std::optional<ImpactEstimate>> impact_estimates_;
+  GivenPenalties given_penalties_;
+  std::vector<double> penalty_contact_radius_;  ///< per contact: of its latest estimate, m (0: none yet)
 };
 
 }  // namespace isosid::run

@@ -45,7 +45,7 @@ void refuse_implausible_penalties(const MultibodySystem& system, const Scene& sc
     // an adaptive body's penalty is meant for its refined models, not the coarse one here
     const BodySpec* body = scene.body(c.body().name());
     if (body && body->adaptive) continue;
-    const double derived = c.derived_penalty(0);
+    const double derived = derived_penalty(c, 0);
     const std::string field = "contact[" + std::to_string(k) + "].penalty";
     if (c.penalty() < kMinPenaltyRatio * derived)
       throw format::InputError(scene.file, field,

@@ -47,8 +47,8 @@ Simulation::Simulation(Scene scene, std::vector<format::Sid> sids)
   if (!scene_.simulation.allow_initial_penetration) refuse_initial_penetration();
 }
 
-Simulation::Simulation(Scene scene, std::vector<format::Sid> sids, double t0, const StartState& start_state)
-    : scene_(std::move(scene)), system_(scene_, std::move(sids)), integrator_(make_integrator(system_, scene_.simulation, estimated(start_state(system_)), t0)),
+Simulation::Simulation(Scene scene, std::vector<format::Sid> sids, double t0, const StartState& start_state, GivenPenalties given)
+    : scene_(std::move(scene)), system_(scene_, std::move(sids), std::move(given)), integrator_(make_integrator(system_, scene_.simulation, estimated(start_state(system_)), t0)),
       t_(t0), continued_(true) {
   if (integrator_->y().size() != system_.size())
     throw format::ComputationError("a phase's start state has " + std::to_string(integrator_->y().size()) + " entries, its system " +

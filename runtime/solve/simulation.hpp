@@ -53,8 +53,9 @@ public:
   /// takes contacts that are closed there as they are. Its start reports no touches: where
   /// surfaces touch there, the phase before has seen it (MultibodySystem::touched/released
   /// set what the new phase should expect).
+  /// `given`: penalties the caller gives contacts for this phase in place of the scene's.
   using StartState = std::function<Eigen::VectorXd(const MultibodySystem&)>;
-  Simulation(Scene scene, std::vector<format::Sid> sids, double t0, const StartState& start_state);
+  Simulation(Scene scene, std::vector<format::Sid> sids, double t0, const StartState& start_state, GivenPenalties given = {});
 
   const Scene& scene() const { return scene_; }
   const MultibodySystem& system() const { return system_; }

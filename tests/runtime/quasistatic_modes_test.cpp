@@ -2,6 +2,7 @@
 // contact against a dense direct solve of the same equilibrium, and a partial contact against
 // the optimality conditions.
 #include "condensation/quasistatic_modes.hpp"
+#include "contact/penalty_decision.hpp"
 #include "contact/shape_target.hpp"
 #include "support/lumped_sid.hpp"
 
@@ -22,6 +23,7 @@ struct PlaneContact {
     bodies.push_back(std::make_unique<run::FloatingBody>(spec, sid, run::Dimension::Solid));
     const run::ContactSpec contact{"impact", "body", sid.contact_surfaces.front().name, plane.name, "", penalty, 0.0, 1e-6};
     contacts.emplace_back(contact, body(), ground);
+    contacts.back().set_penalty(run::decide_penalty(contacts.back(), std::nullopt, 0));
     modes = std::make_unique<run::QuasistaticModes>(bodies, contacts, Eigen::Vector3d::Zero());
   }
   PlaneContact(const PlaneContact&) = delete;  // the contacts refer to the members

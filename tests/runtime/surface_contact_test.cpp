@@ -2,6 +2,7 @@
 // penalty law, point by point, the direction and size of the friction force, and the
 // default penalty rule.
 #include "contact/default_penalty.hpp"
+#include "contact/penalty_decision.hpp"
 #include "contact/shape_target.hpp"
 #include "contact/surface_contact.hpp"
 #include "support/lumped_sid.hpp"
@@ -44,6 +45,7 @@ struct EvaluatedContact {
         ground(setup.plane),
         contact({"impact", "body", setup.surface().name, "ground", "", penalty, friction, 1e-6}, body, ground),
         y(body.state_size()) {
+    contact.set_penalty(run::decide_penalty(contact, std::nullopt, 0));
     body.initial_state(y.data());
     force.reset(body.nq());
     state = contact.apply(y.data(), force, nullptr);
@@ -97,36 +99,36 @@ TEST_CASE("SurfaceContact: a surface clear of the target carries no force", "[ru
   CHECK(evaluated.contact.min_gap(evaluated.y.data()) > 0.25);
 }
 
-TEST_CASE("SurfaceContact: without a penalty in the scene it takes 1000 E*/max(a, h)", "[runtime][unit]") {
+TEST_CASE("the penalty decision: one given for the run, else the scene's, else 1000 E*/max(a, h)", "[runtime][unit]") {
   const PenetratingBody setup(Eigen::Vector3d::Zero());
-  EvaluatedContact evaluated(setup, 0.0, 0.0);  // no penalty given
-  run::SurfaceContact& contact = evaluated.contact;
+  const EvaluatedContact evaluated(setup, 0.0, 0.0);  // no penalty in the scene
+  const run::SurfaceContact& contact = evaluated.contact;
   // every point of the lumped surface is its own element of area 1e-5 .. 4e-5 m^2: h = sqrt(1e-5);
   // a fixed plane is rigid: E* = E / (1 - nu^2)
   const format::Material& m = setup.sid.material;
   const double expected = 1000 * m.youngs_modulus / (1 - m.poisson_ratio * m.poisson_ratio) / std::sqrt(1e-5);
-  CHECK(contact.penalty_source() == "derived: 1000 E*/h");
+  CHECK(contact.penalty_source() == "derived: 1000 E*/h");  // as the fixture decided it, without an estimate
   CHECK(contact.penalty() == Approx(expected).epsilon(1e-12));
   // an expected contact radius below the element size changes nothing; above it, it rules
-  contact.fit_penalty_to_contact_radius(0.5 * std::sqrt(1e-5));
-  CHECK(contact.penalty() == Approx(expected).epsilon(1e-12));
-  contact.fit_penalty_to_contact_radius(4 * std::sqrt(1e-5));
-  CHECK(contact.penalty_source() == "derived: 1000 E*/a");
-  CHECK(contact.penalty() == Approx(expected / 4).epsilon(1e-12));
+  const run::ContactPenalty small = run::decide_penalty(contact, std::nullopt, 0.5 * std::sqrt(1e-5));
+  CHECK(small.source == "derived: 1000 E*/h");
+  CHECK(small.value == Approx(expected).epsilon(1e-12));
+  const run::ContactPenalty large = run::decide_penalty(contact, std::nullopt, 4 * std::sqrt(1e-5));
+  CHECK(large.source == "derived: 1000 E*/a");
+  CHECK(large.value == Approx(expected / 4).epsilon(1e-12));
 
-  // a penalty the scene gives stays
-  EvaluatedContact given(setup, 1e10, 0.0);
-  given.contact.fit_penalty_to_contact_radius(1.0);
-  CHECK(given.contact.penalty_source() == "scene");
-  CHECK(given.contact.penalty() == 1e10);
-  // and so does one the adaptive loop gives, whatever its source says: its penalty search
-  // starts from a derived value and probes ten times it
-  run::ContactSpec spec{"impact", "body", setup.surface().name, "ground", "", 1e10, 0.0, 1e-6};
-  spec.penalty_source = "derived: 1000 E*/a (the penalty search's start)";
-  run::SurfaceContact probed(spec, given.body, given.ground);
-  probed.fit_penalty_to_contact_radius(1.0);
-  CHECK(probed.penalty() == 1e10);
-  CHECK(probed.penalty_source() == spec.penalty_source);
+  // a penalty the scene gives stays, whatever the contact radius
+  const EvaluatedContact given(setup, 1e10, 0.0);
+  const run::ContactPenalty scene = run::decide_penalty(given.contact, std::nullopt, 1.0);
+  CHECK(scene.source == "scene");
+  CHECK(scene.value == 1e10);
+  // and one given for the run (the adaptive loop's penalty search) rules over both
+  const run::ContactPenalty search{3e11, "penalty search: found by trial"};
+  for (const run::SurfaceContact* c : {&contact, &given.contact}) {
+    const run::ContactPenalty decided = run::decide_penalty(*c, search, 1.0);
+    CHECK(decided.value == search.value);
+    CHECK(decided.source == search.source);
+  }
 
   // two elastic bodies add their compliances
   format::Sid aluminium = setup.sid;
@@ -175,7 +177,8 @@ TEST_CASE("SurfaceContact: a deformed body's pressed points and least gap on a p
     setup.plane.point = {0, level, 0};
     const run::FloatingBody body(setup.spec, setup.sid, run::Dimension::Solid);
     const run::ShapeTarget ground(setup.plane);
-    const run::SurfaceContact contact({"impact", "body", s.name, "ground", "", penalty, 0.0, 1e-6}, body, ground);
+    run::SurfaceContact contact({"impact", "body", s.name, "ground", "", penalty, 0.0, 1e-6}, body, ground);
+    contact.set_penalty(run::decide_penalty(contact, std::nullopt, 0));
     run::GeneralizedForce force;
     force.reset(body.nq());
     const run::ContactState state = contact.apply(y.data(), force, nullptr);
