@@ -69,11 +69,9 @@ void write_refmod(h5::Writer& w, const Sid& sid) {
   }
   const Damping& d = sid.damping;
   put_group(w, damping::group);
-  put(w, damping::kappa, d.kappa);
-  put(w, damping::f1_hz, d.f1_hz);
-  put(w, damping::f2_hz, d.f2_hz);
-  put(w, damping::alpha1, d.alpha1);
-  put(w, damping::alpha2, d.alpha2);
+  for (const auto& [item, value] : {std::pair{&damping::kappa, d.kappa}, {&damping::f1_hz, d.f1_hz}, {&damping::f2_hz, d.f2_hz},
+                                     {&damping::alpha1, d.alpha1}, {&damping::alpha2, d.alpha2}})
+    put(w, *item, value);
 }
 
 /// Writes a list group and, for each member, its group and then its content.

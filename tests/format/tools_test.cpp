@@ -5,6 +5,7 @@
 #include "support/hdf5_tamper.hpp"
 #include "support/lumped_sid.hpp"
 #include "support/run_program.hpp"
+#include "support/one_line_exit.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -137,9 +138,7 @@ TEST_CASE("isosid-diff refuses a tolerance that is not a finite number >= 0, in 
   for (const char* rtol : {"nan", "NaN", "-nan", "inf", "-inf", "1e400", "-1", "-1e-300", "abc", "0x"}) {
     INFO(rtol);
     const auto r = test::run_program(diff + rtol);
-    CHECK(r.exit_status == 2);
-    CHECK_THAT(r.err, Contains("--rtol: must be a finite number >= 0"));
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    test::check_one_line_exit(r, 2, "--rtol: must be a finite number >= 0");
     CHECK(r.err.size() < 160);
   }
   CHECK(test::run_program(diff + "0").exit_status == 1);  // exact: the stiffer mode differs
@@ -156,9 +155,7 @@ TEST_CASE("isosid-export onto a FIFO is refused in one line and leaves it a FIFO
   REQUIRE(::mkfifo(dir.path("fifo").c_str(), 0600) == 0);
   for (const char* format : {"sid-fem", "mbsim-h5"}) {
     const auto r = test::run_program(std::string(ISOSID_EXPORT_EXE) + " " + dir.path("a.sid.h5") + " --format " + format + " -o " + dir.path("fifo"));
-    CHECK(r.exit_status == 2);
-    CHECK_THAT(r.err, Contains("is a FIFO, not a file"));
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    test::check_one_line_exit(r, 2, "is a FIFO, not a file");
     CHECK(std::filesystem::is_fifo(dir.path("fifo")));
   }
 }

@@ -3,6 +3,7 @@
 // before the work too; --version; the reduction's steps in its progress.
 #include "support/run_program.hpp"
 #include "support/scene_text.hpp"
+#include "support/one_line_exit.hpp"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -33,9 +34,7 @@ TEST_CASE("isosid-prep refuses flags that exclude each other, one line each", "[
   for (const Case& c : cases) {
     INFO(c.arguments);
     const auto r = test::run_program(kPrep + " -q " + c.arguments + " -o " + dir.path("x.sid.h5"));
-    CHECK(r.exit_status == 2);
-    CHECK_THAT(r.err, Contains(c.expected));
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    test::check_one_line_exit(r, 2, c.expected);
     CHECK_FALSE(std::filesystem::exists(dir.path("x.sid.h5")));
   }
   // --modes alone reports, as before

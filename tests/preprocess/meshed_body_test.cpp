@@ -9,6 +9,7 @@
 #include "sid/node_data.hpp"
 #include "preprocess/body_fixtures.hpp"
 #include "support/run_program.hpp"
+#include "support/one_line_exit.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -114,8 +115,6 @@ TEST_CASE("bad meshed models: exit 2 with one line naming the field", "[mesh]") 
     std::ofstream(dir.path("m.model.toml")) << text;
     const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("m.model.toml") + " -o " + dir.path("m.sid.h5"));
     INFO(c.expected << "\n" << r.err);
-    CHECK(r.exit_status == 2);
-    CHECK_THAT(r.err, Contains(c.expected));
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    test::check_one_line_exit(r, 2, c.expected);
   }
 }

@@ -6,6 +6,7 @@
 #include "isosid/format/sid_io.hpp"
 #include "support/run_program.hpp"
 #include "preprocess/body_fixtures.hpp"
+#include "support/one_line_exit.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -256,9 +257,7 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
   std::filesystem::copy_file(golden, dir.path("self.model.toml"));
   const auto self = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("self.model.toml") + " -o " +
                                       dir.path("self.model.toml"));
-  CHECK(self.exit_status == 2);
-  CHECK_THAT(self.err, Contains("-o: is the model file itself"));
-  CHECK(std::count(self.err.begin(), self.err.end(), '\n') == 1);
+  test::check_one_line_exit(self, 2, "-o: is the model file itself");
   std::ifstream original(golden), kept(dir.path("self.model.toml"));
   CHECK(std::string(std::istreambuf_iterator<char>(original), {}) == std::string(std::istreambuf_iterator<char>(kept), {}));
 }
@@ -469,9 +468,7 @@ TEST_CASE("reduction settings are validated", "[model][sid]") {
     std::ofstream(dir.path("m.model.toml")) << base + c.extra;
     const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("m.model.toml"));
     INFO(c.extra);
-    CHECK(r.exit_status == 2);
-    CHECK_THAT(r.err, Contains(c.expected));
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    test::check_one_line_exit(r, 2, c.expected);
   }
 }
 
@@ -519,9 +516,7 @@ TEST_CASE("a stress line in metres must stay inside the body between its ends", 
                                                      "size = [0.1, 0.02]", "inner_radius = 0.8\nouter_radius = 1.0") +
                                                  "[[stress_line]]\nname = \"chord\"\nfrom_point = [0.9, 0.0]\nto_point = [0.0, 0.9]\npoints = 5\n";
   const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("m.model.toml"));
-  CHECK(r.exit_status == 2);
-  CHECK_THAT(r.err, Contains("m.model.toml") && Contains("stress_line[0].to_point: the line's point 2 lies"));
-  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  test::check_one_line_exit(r, 2, Contains("m.model.toml") && Contains("stress_line[0].to_point: the line's point 2 lies"));
 }
 
 TEST_CASE("contact elements sized from the expected contact radius", "[model][contact]") {
@@ -551,9 +546,7 @@ TEST_CASE("contact elements sized from the expected contact radius", "[model][co
   // a model that sizes nothing from a contact radius refuses the option
   const std::string beam = std::string(ISOSID_GOLDEN_DIR) + "/beam_small.model.toml";
   const auto refused = test::run_program(std::string(ISOSID_PREP_EXE) + " -q --contact-radius 4e-4 " + beam + " -o " + dir.path("b.sid.h5"));
-  CHECK(refused.exit_status == 2);
-  CHECK_THAT(refused.err, Contains("--contact-radius") && Contains("sizes no elements from a contact radius"));
-  CHECK(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);
+  test::check_one_line_exit(refused, 2, Contains("--contact-radius") && Contains("sizes no elements from a contact radius"));
 }
 
 
@@ -588,9 +581,7 @@ TEST_CASE("isosid-prep --refine-at moves a hierarchical refinement and its Craig
   const test::ScratchDir dir("refine-at");
   const auto refused = [&](const std::string& options, const std::string& problem) {
     const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + options + " " + thb + " -o " + dir.path("s.sid.h5"));
-    CHECK(r.exit_status == 2);
-    CHECK_THAT(r.err, Contains("sphere_axisym_thb.model.toml") && Contains("--refine-at") && Contains(problem));
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    test::check_one_line_exit(r, 2, Contains("sphere_axisym_thb.model.toml") && Contains("--refine-at") && Contains(problem));
     CHECK_FALSE(std::filesystem::exists(dir.path("s.sid.h5")));
   };
   refused("--refine-at contact:0.05", "goes with --refine-width");

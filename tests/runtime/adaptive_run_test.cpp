@@ -4,6 +4,7 @@
 #include "isosid/format/hdf5_file.hpp"
 #include "scene_runner.hpp"
 #include "support/hdf5_tamper.hpp"
+#include "support/one_line_exit.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -260,9 +261,7 @@ TEST_CASE("adaptive: bad adaptive input is refused with exit 2 and one line", "[
     std::ofstream(dir.path("bad.scene.toml")) << text;
     const auto r = test::run_program("ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_RUN_EXE + " -q " +
                                      dir.path("bad.scene.toml") + " -o " + dir.path("out-bad"));
-    CHECK(r.exit_status == 2);
-    CHECK_THAT(r.err, Contains(problem));
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    test::check_one_line_exit(r, 2, problem);
   };
   refused(test::replace(scene, "adaptive = true", "adaptive = true\nsid = \"x.sid.h5\""), "an adaptive body's SIDs are built from its model");
   refused(test::replace(scene, "model = \"sphere_axisym_thb.model.toml\"\n", ""), "an adaptive body needs its model file");

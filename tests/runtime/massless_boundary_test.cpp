@@ -5,6 +5,7 @@
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene_runner.hpp"
+#include "support/one_line_exit.hpp"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -186,8 +187,6 @@ TEST_CASE("scenes that ask for a fixed step or exact contact wrongly, or contact
     std::ofstream(dir.path("s.scene.toml")) << text;
     const auto r = test::run_program("ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_RUN_EXE + " -q " + dir.path("s.scene.toml") +
                                      " -o " + dir.path("out"));
-    CHECK(r.exit_status == 2);
-    CHECK_THAT(r.err, Catch::Matchers::Contains(c.expected));
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    test::check_one_line_exit(r, 2, c.expected);
   }
 }

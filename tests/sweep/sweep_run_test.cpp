@@ -4,6 +4,7 @@
 #include "support/impact_scene.hpp"
 #include "support/run_program.hpp"
 #include "support/scene_text.hpp"
+#include "support/one_line_exit.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -101,9 +102,7 @@ TEST_CASE("sweep: a study file that cannot make a study exits 2 with one line an
   const test::ScratchDir dir("sweep_bad");
   write_study(dir, "[-0.1]", "sampling = \"random\"\n");
   const test::ProgramResult r = sweep(dir, "-o " + dir.path("out"));
-  CHECK(r.exit_status == 2);
-  CHECK_THAT(r.err, Contains("speeds.study.toml: sampling: must be \"grid\", \"zip\" or \"latin_hypercube\""));
-  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  test::check_one_line_exit(r, 2, "speeds.study.toml: sampling: must be \"grid\", \"zip\" or \"latin_hypercube\"");
   CHECK_FALSE(fs::exists(dir.path("out")));
 }
 
