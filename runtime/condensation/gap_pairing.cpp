@@ -83,7 +83,7 @@ void GapPairing::pair(const double* y) {
   ++pairings_;
   paired_ = true;
   watching_ = false;
-  watched_.valid = evaluated_at_.valid = false;
+  watched_.valid = evaluated_at_.valid = pressed_at_.valid = false;
   slave_reach_ = target_reach_ = 0;
   slave_rows_.clear(), target_rows_.clear();
   target_.update(y);
@@ -123,6 +123,8 @@ void GapPairing::pair(const double* y) {
   slave_rows_.finish(), target_rows_.finish();
   for (Pair& p : pairs_) p.offset -= smallest;
   largest_ = std::max(largest_, pairs_.size());
+  pressed_pairs_.clear();
+  pressed_pairs_.reserve(pairs_.size());  // the solves record into it without allocating
   count_condensed();
   // no point found the target from where it stands: the contact stays unpaired (projected)
   if (pairs_.empty()) paired_ = false;

@@ -102,7 +102,7 @@ public:
   /// Ends the pairing once the contact has left (every pair open by twice the pairing
   /// distance). Its pairs are kept to watch the bodies: while no point has slid along the target
   /// by the pairing distance, they tell the contact's gap far more cheaply than projecting.
-  void release() { paired_ = false, watching_ = true, watched_.valid = false; }
+  void release() { paired_ = false, watching_ = true, watched_.valid = false, pressed_at_.valid = false; }
   bool watching() const { return watching_; }
   /// While watching: the pairs' smallest gap at y, or a lower bound of it, if it stays beyond
   /// twice the pairing distance and no point has slid by the pairing distance; otherwise
@@ -127,6 +127,17 @@ public:
   /// the static solve's result, the loads, the step's gaps and the recorder all ask at one
   /// state in turn.
   const std::vector<Evaluation>& evaluations(const Poses& at) const;
+  /// The gap-space solve's record of the pairs its forces press at the state it solved, kept for
+  /// the loads there: cleared (forget_pressed), filled in ascending order (add_pressed) and
+  /// closed with that state's poses (pressed_at). Pairs it does not list carry no force there
+  /// (their gaps are open).
+  void forget_pressed() { pressed_pairs_.clear(), pressed_at_.valid = false; }
+  void add_pressed(std::size_t k) { pressed_pairs_.push_back(k); }
+  void pressed_at(const Poses& at) { pressed_at_.assign(at); }
+  /// The pairs the solve pressed, if it solved at these poses; null otherwise.
+  const std::vector<std::size_t>* pressed_pairs(const Poses& at) const {
+    return pressed_at_.same(at, slave_rows_.columns(), target_rows_.columns()) ? &pressed_pairs_ : nullptr;
+  }
   /// The smallest gap of the pairs at y (+inf without pairs).
   double min_gap(const double* y) const;
   /// d gap / d z of pair k over the stacked quasistatic coordinates (n entries; each body's
@@ -185,6 +196,8 @@ private:
   WatchedState watched_;
   mutable PosesCopy evaluated_at_;  ///< the poses of evaluations_
   mutable std::vector<Evaluation> evaluations_;
+  std::vector<std::size_t> pressed_pairs_;  ///< see forget_pressed()
+  PosesCopy pressed_at_;                    ///< the poses of pressed_pairs_
   /// Counts the pairs within reach into largest_condensed_.
   void count_condensed();
 

@@ -143,6 +143,16 @@ int GapSpaceSolve::solve_forces() {
                               std::to_string(iterations) + " iterations");
 }
 
+void GapSpaceSolve::record_pressed(const double* y) {
+  // points_.pressed() ascends, and pairs_ runs contact by contact with each contact's pairs
+  // ascending: every contact's list ascends, the order in which its loads sum
+  for (const Eigen::Index a : points_.pressed()) pairs_[std::size_t(a)].contact->gap_pairing().add_pressed(pairs_[std::size_t(a)].k);
+  for (const SurfaceContact* c : contacts_) {
+    GapPairing& pairing = c->gap_pairing();
+    if (pairing.paired()) pairing.pressed_at(pairing.poses(y));
+  }
+}
+
 bool GapSpaceSolve::widen_outgrown() {
   // the pairs beyond run contact by contact: a contact widened once skips the rest of its run
   bool widened = false;

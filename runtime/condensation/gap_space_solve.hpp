@@ -47,6 +47,7 @@ public:
   /// problem's iterations.
   template <class Scatter>
   int solve(const double* y, Eigen::VectorXd& z, Scatter&& scatter) {
+    for (const SurfaceContact* c : contacts_) c->gap_pairing().forget_pressed();
     scatter(z);
     if (pair_approaching(y)) condense(y);
     // the pairs at z_h: their free gaps, and whether each pairing still holds (a pairing made
@@ -64,6 +65,7 @@ public:
     }
     z.noalias() += response_;
     scatter(z);
+    record_pressed(y);
     return iterations;
   }
 
@@ -88,6 +90,9 @@ private:
   /// Widens the reach of every contact with a pair beyond it that the forces found would press;
   /// true if any was.
   bool widen_outgrown();
+  /// Tells each paired contact which of its pairs the last solve pressed, at y's poses with the
+  /// solution set: its loads there evaluate those pairs alone.
+  void record_pressed(const double* y);
   /// The gaps' gradients of stacked pairs at y, a column each.
   Eigen::SparseMatrix<double> gradients(const double* y, const std::vector<StackedPair>& stacked) const;
   /// Throws QuasistaticDivergence: the pairings at one state did not hold after kMaxRepairings.

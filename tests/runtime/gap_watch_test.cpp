@@ -12,6 +12,7 @@
 #include "support/run_program.hpp"
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <vector>
@@ -103,6 +104,9 @@ namespace {
 struct KeptEvaluationsObserver : run::SimulationObserver {
   const run::Simulation* simulation = nullptr;
   int paired_steps = 0, mismatches = 0, unchanged_after_move = 0;
+  /// The solve's pressed pairs: steps without them, steps where they differ from the pairs whose
+  /// gap closes by more than round-off, and moved states at which they were still given.
+  int pressed_unknown = 0, pressed_mismatches = 0, pressed_after_move = 0;
   void sample(double, const double*) override {}
   void contact_event(int, bool, double) override {}
   void step(double, const double* y) override {
@@ -117,6 +121,7 @@ struct KeptEvaluationsObserver : run::SimulationObserver {
     Eigen::VectorXd deformed = quasistatic;
     deformed.array() += 1e-9;  // the quasistatic coordinates
     const std::vector<double> step_gaps = gaps(pairing, pairing.poses(y));
+    check_pressed(pairing.pressed_pairs(pairing.poses(y)), step_gaps);
     // each state in turn, and the step's own state last again: the kept evaluations must follow
     for (int state = 0; state < 4; ++state) {
       const double* at = state == 1 ? moved.data() : y;
@@ -128,9 +133,23 @@ struct KeptEvaluationsObserver : run::SimulationObserver {
         pairing.evaluate(poses, k, e);
         mismatches += kept[k].gap != e.gap || kept[k].slave_point != e.slave_point || kept[k].normal != e.normal;
       }
-      if (state == 1 || state == 2) unchanged_after_move += gaps_of(kept) == step_gaps;
+      if (state == 1 || state == 2) {
+        unchanged_after_move += gaps_of(kept) == step_gaps;
+        pressed_after_move += pairing.pressed_pairs(poses) != nullptr;
+      }
     }
     body.quasistatic_modes() = quasistatic;
+  }
+  void check_pressed(const std::vector<std::size_t>* pressed, const std::vector<double>& step_gaps) {
+    if (!pressed) return void(++pressed_unknown);
+    // a pair the solve presses has a closed gap, and one it leaves open a gap open but for
+    // round-off of the deepest penetration
+    const double deepest = -*std::min_element(step_gaps.begin(), step_gaps.end());
+    for (std::size_t k = 0; k < step_gaps.size(); ++k) {
+      const bool listed = std::find(pressed->begin(), pressed->end(), k) != pressed->end();
+      pressed_mismatches += listed ? !(step_gaps[k] < 0) : step_gaps[k] < -1e-9 * deepest;
+    }
+    pressed_mismatches += !std::is_sorted(pressed->begin(), pressed->end());
   }
   static std::vector<double> gaps(const run::GapPairing& pairing, const run::GapPairing::Poses& poses) {
     std::vector<double> out(pairing.pairs().size());
@@ -164,6 +183,10 @@ TEST_CASE("gap space: the pairs' kept evaluations are those of the state asked f
   CHECK(observer.mismatches == 0);
   // the moved states' gaps are the moved ones (evaluate() itself sees the move)
   CHECK(observer.unchanged_after_move == 0);
+  // the loads evaluate the pairs the solve pressed at its state, and only there
+  CHECK(observer.pressed_unknown == 0);
+  CHECK(observer.pressed_mismatches == 0);
+  CHECK(observer.pressed_after_move == 0);
 }
 
 TEST_CASE("gap space: the rows' bound holds for every pair's rows, and follows the columns' scales", "[runtime][unit][gap-space]") {
