@@ -50,12 +50,21 @@ void PenaltyComplementarity::update_gaps(const Eigen::VectorXd& free_gaps) {
   for (const Eigen::Index a : pressed_) gaps_.noalias() += forces_(a) * compliance_.col(a);
 }
 
+void PenaltyComplementarity::update_open_gaps(const Eigen::VectorXd& free_gaps) {
+  // fewer points open than pressed (about a quarter open at a sphere's peak): each open point's
+  // gap as its row of C (its column: C is symmetric) against the forces, zero off the pressed
+  const std::size_t open = std::size_t(size()) - pressed_.size();
+  if (open >= pressed_.size()) return update_gaps(free_gaps);
+  for (Eigen::Index i = 0; i < size(); ++i)
+    gaps_(i) = is_pressed_[std::size_t(i)] ? -flexibility_(i) * forces_(i) : free_gaps(i) + compliance_.col(i).dot(forces_);
+}
+
 bool PenaltyComplementarity::newton(const Eigen::VectorXd& free_gaps, int& iterations, Outcome& outcome) {
   for (int iteration = 1; iteration <= kNewtonIterations; ++iteration) {
     ++iterations;
     list_pressed();
     if (!pressed_forces(free_gaps, forces_)) return outcome = Outcome::NotPositiveDefinite, false;
-    update_gaps(free_gaps);
+    update_open_gaps(free_gaps);
     bool changed = false;
     for (Eigen::Index i = 0; i < size(); ++i) {
       const char now = is_pressed_[std::size_t(i)] ? forces_(i) > 0 : gaps_(i) < 0;

@@ -57,6 +57,9 @@ private:
   bool pressed_forces(const Eigen::VectorXd& free_gaps, Eigen::VectorXd& forces);
   /// gaps_ = g_free + C f for forces_.
   void update_gaps(const Eigen::VectorXd& free_gaps);
+  /// The same for the open points, which is all Newton reads; a pressed point's gap is
+  /// -f / k (its penalty law, which the forces solve), in whichever way costs less.
+  void update_open_gaps(const Eigen::VectorXd& free_gaps);
   void list_pressed();
 
   Eigen::MatrixXd compliance_;
