@@ -83,7 +83,7 @@ void GapPairing::pair(const double* y) {
   ++pairings_;
   paired_ = true;
   watching_ = false;
-  watched_.valid = evaluated_at_.valid = pressed_at_.valid = false;
+  watched_.valid = evaluated_at_.valid = false;
   slave_reach_ = target_reach_ = 0;
   slave_rows_.clear(), target_rows_.clear();
   target_.update(y);
@@ -123,8 +123,9 @@ void GapPairing::pair(const double* y) {
   slave_rows_.finish(), target_rows_.finish();
   for (Pair& p : pairs_) p.offset -= smallest;
   largest_ = std::max(largest_, pairs_.size());
-  pressed_pairs_.clear();
-  pressed_pairs_.reserve(pairs_.size());  // the solves record into it without allocating
+  forget_solution();
+  pressed_pairs_.reserve(pairs_.size());  // the solves record into them without allocating
+  pressed_evaluations_.reserve(pairs_.size());
   count_condensed();
   // no point found the target from where it stands: the contact stays unpaired (projected)
   if (pairs_.empty()) paired_ = false;
@@ -184,6 +185,16 @@ const std::vector<GapPairing::Evaluation>& GapPairing::evaluations(const Poses& 
   for (std::size_t k = 0; k < pairs_.size(); ++k) evaluate(at, k, evaluations_[k]);
   evaluated_at_.assign(at);
   return evaluations_;
+}
+
+const std::vector<GapPairing::Evaluation>* GapPairing::pressed_evaluations(const Poses& at) const {
+  if (!solved_at_.same(at, slave_rows_.columns(), target_rows_.columns())) return nullptr;
+  if (!pressed_evaluated_) {
+    pressed_evaluations_.resize(pressed_pairs_.size());  // within the capacity pair() reserved
+    for (std::size_t i = 0; i < pressed_pairs_.size(); ++i) evaluate(at, pressed_pairs_[i], pressed_evaluations_[i]);
+    pressed_evaluated_ = true;
+  }
+  return &pressed_evaluations_;
 }
 
 std::pair<double, double> GapPairing::watched_change(const Poses& at) const {
@@ -250,8 +261,10 @@ void GapPairing::count_condensed() {
 }
 
 double GapPairing::min_gap(const double* y) const {
+  const Poses at = poses(y);
+  if (solved_at_.same(at, slave_rows_.columns(), target_rows_.columns())) return solved_min_gap_;
   double smallest = INFINITY;
-  for (const Evaluation& e : evaluations(poses(y))) smallest = std::min(smallest, e.gap);
+  for (const Evaluation& e : evaluations(at)) smallest = std::min(smallest, e.gap);
   return smallest;
 }
 

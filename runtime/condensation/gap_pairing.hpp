@@ -102,7 +102,7 @@ public:
   /// Ends the pairing once the contact has left (every pair open by twice the pairing
   /// distance). Its pairs are kept to watch the bodies: while no point has slid along the target
   /// by the pairing distance, they tell the contact's gap far more cheaply than projecting.
-  void release() { paired_ = false, watching_ = true, watched_.valid = false, pressed_at_.valid = false; }
+  void release() { paired_ = false, watching_ = true, watched_.valid = false, forget_solution(); }
   bool watching() const { return watching_; }
   /// While watching: the pairs' smallest gap at y, or a lower bound of it, if it stays beyond
   /// twice the pairing distance and no point has slid by the pairing distance; otherwise
@@ -127,18 +127,21 @@ public:
   /// the static solve's result, the loads, the step's gaps and the recorder all ask at one
   /// state in turn.
   const std::vector<Evaluation>& evaluations(const Poses& at) const;
-  /// The gap-space solve's record of the pairs its forces press at the state it solved, kept for
-  /// the loads there: cleared (forget_pressed), filled in ascending order (add_pressed) and
-  /// closed with that state's poses (pressed_at). Pairs it does not list carry no force there
-  /// (their gaps are open).
-  void forget_pressed() { pressed_pairs_.clear(), pressed_at_.valid = false; }
+
+  /// The gap-space solve's record of the state it solved, kept for the loads and the gaps there:
+  /// cleared (forget_solution), filled (add_pressed: the pairs its forces press, ascending;
+  /// note_gap: every pair's gap, as the solve has them) and closed with that state's poses
+  /// (solved_at). Pairs it does not list as pressed carry no force there (their gaps are open).
+  void forget_solution() { pressed_pairs_.clear(), solved_at_.valid = pressed_evaluated_ = false, solved_min_gap_ = INFINITY; }
   void add_pressed(std::size_t k) { pressed_pairs_.push_back(k); }
-  void pressed_at(const Poses& at) { pressed_at_.assign(at); }
-  /// The pairs the solve pressed, if it solved at these poses; null otherwise.
-  const std::vector<std::size_t>* pressed_pairs(const Poses& at) const {
-    return pressed_at_.same(at, slave_rows_.columns(), target_rows_.columns()) ? &pressed_pairs_ : nullptr;
-  }
-  /// The smallest gap of the pairs at y (+inf without pairs).
+  void note_gap(double gap) { solved_min_gap_ = std::min(solved_min_gap_, gap); }
+  void solved_at(const Poses& at) { solved_at_.assign(at), pressed_evaluated_ = false; }
+  /// The pairs the last solve pressed (see forget_solution()), ascending.
+  const std::vector<std::size_t>& pressed_pairs() const { return pressed_pairs_; }
+  /// Their evaluations, in that order, if the solve solved at these poses (evaluated at the
+  /// first call there and kept); null at other poses.
+  const std::vector<Evaluation>* pressed_evaluations(const Poses& at) const;
+  /// The smallest gap of the pairs at y (+inf without pairs): the solve's where it solved at y.
   double min_gap(const double* y) const;
   /// d gap / d z of pair k over the stacked quasistatic coordinates (n entries; each body's
   /// block at its quasistatic_offset()), with the frames' rotations at y.
@@ -196,8 +199,11 @@ private:
   WatchedState watched_;
   mutable PosesCopy evaluated_at_;  ///< the poses of evaluations_
   mutable std::vector<Evaluation> evaluations_;
-  std::vector<std::size_t> pressed_pairs_;  ///< see forget_pressed()
-  PosesCopy pressed_at_;                    ///< the poses of pressed_pairs_
+  std::vector<std::size_t> pressed_pairs_;  ///< see forget_solution()
+  double solved_min_gap_ = INFINITY;        ///< the solve's smallest gap of the pairs
+  PosesCopy solved_at_;                     ///< the poses of the solve's record
+  mutable std::vector<Evaluation> pressed_evaluations_;  ///< at solved_at_, once asked for
+  mutable bool pressed_evaluated_ = false;
   /// Counts the pairs within reach into largest_condensed_.
   void count_condensed();
 

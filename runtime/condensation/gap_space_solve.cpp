@@ -143,26 +143,29 @@ int GapSpaceSolve::solve_forces() {
                               std::to_string(iterations) + " iterations");
 }
 
-void GapSpaceSolve::record_pressed(const double* y) {
+void GapSpaceSolve::record_solution(const double* y) {
   // points_.pressed() ascends, and pairs_ runs contact by contact with each contact's pairs
   // ascending: every contact's list ascends, the order in which its loads sum
   for (const Eigen::Index a : points_.pressed()) pairs_[std::size_t(a)].contact->gap_pairing().add_pressed(pairs_[std::size_t(a)].k);
+  for (std::size_t a = 0; a < pairs_.size(); ++a) pairs_[a].contact->gap_pairing().note_gap(points_.gaps()(Eigen::Index(a)));
+  for (std::size_t i = 0; i < beyond_.size(); ++i) beyond_[i].contact->gap_pairing().note_gap(gaps_beyond_(Eigen::Index(i)));
   for (const SurfaceContact* c : contacts_) {
     GapPairing& pairing = c->gap_pairing();
-    if (pairing.paired()) pairing.pressed_at(pairing.poses(y));
+    if (pairing.paired()) pairing.solved_at(pairing.poses(y));
   }
 }
 
 bool GapSpaceSolve::widen_outgrown() {
-  // the pairs beyond run contact by contact: a contact widened once skips the rest of its run
+  // the pairs beyond run contact by contact: a contact widens once however many of them press
   bool widened = false;
   const SurfaceContact* last_widened = nullptr;
+  gaps_beyond_.resize(V_beyond_.outerSize());
   for (Eigen::Index i = 0; i < V_beyond_.outerSize(); ++i) {
     const SurfaceContact* c = beyond_[std::size_t(i)].contact;
-    if (c == last_widened) continue;
     double gap = free_gaps_beyond_(i);
     for (Eigen::SparseMatrix<double>::InnerIterator it(V_beyond_, i); it; ++it) gap += it.value() * response_(it.index());
-    if (gap < 0) c->gap_pairing().widen(), last_widened = c, widened = true;
+    gaps_beyond_(i) = gap;
+    if (gap < 0 && c != last_widened) c->gap_pairing().widen(), last_widened = c, widened = true;
   }
   return widened;
 }

@@ -47,7 +47,7 @@ public:
   /// problem's iterations.
   template <class Scatter>
   int solve(const double* y, Eigen::VectorXd& z, Scatter&& scatter) {
-    for (const SurfaceContact* c : contacts_) c->gap_pairing().forget_pressed();
+    for (const SurfaceContact* c : contacts_) c->gap_pairing().forget_solution();
     scatter(z);
     if (pair_approaching(y)) condense(y);
     // the pairs at z_h: their free gaps, and whether each pairing still holds (a pairing made
@@ -65,7 +65,7 @@ public:
     }
     z.noalias() += response_;
     scatter(z);
-    record_pressed(y);
+    record_solution(y);
     return iterations;
   }
 
@@ -87,12 +87,13 @@ private:
   bool evaluate_pairs(const double* y);
   /// The points' forces at the free gaps, and their response W f; returns the iterations.
   int solve_forces();
-  /// Widens the reach of every contact with a pair beyond it that the forces found would press;
-  /// true if any was.
+  /// The gaps of the pairs beyond reach at the forces found (gaps_beyond_), and the reach widened
+  /// of every contact with such a pair that would press; true if any was.
   bool widen_outgrown();
-  /// Tells each paired contact which of its pairs the last solve pressed, at y's poses with the
-  /// solution set: its loads there evaluate those pairs alone.
-  void record_pressed(const double* y);
+  /// Tells each paired contact which of its pairs the last solve pressed and its pairs' smallest
+  /// gap, at y's poses with the solution set: its loads there evaluate those pairs alone, and its
+  /// gap there needs no evaluation.
+  void record_solution(const double* y);
   /// The gaps' gradients of stacked pairs at y, a column each.
   Eigen::SparseMatrix<double> gradients(const double* y, const std::vector<StackedPair>& stacked) const;
   /// Throws QuasistaticDivergence: the pairings at one state did not hold after kMaxRepairings.
@@ -104,7 +105,7 @@ private:
   std::vector<StackedPair> beyond_;  ///< paired beyond reach: checked
   Eigen::MatrixXd W_;
   Eigen::SparseMatrix<double> V_beyond_;  ///< the gaps' gradients of the pairs beyond reach
-  Eigen::VectorXd free_gaps_, free_gaps_beyond_;
+  Eigen::VectorXd free_gaps_, free_gaps_beyond_, gaps_beyond_;
   Eigen::VectorXd response_;  ///< W f of the last solve
   PenaltyComplementarity points_;  ///< the compliance C = V^T W and the penalty law on the points
 };

@@ -40,6 +40,8 @@ public:
   /// the active-set method found it.
   const Eigen::VectorXd& forces() const { return forces_; }
   const std::vector<Eigen::Index>& pressed() const { return pressed_; }
+  /// Every point's gap g_free + C f at the last solution (a pressed point's: -f / k).
+  const Eigen::VectorXd& gaps() const { return gaps_; }
   bool by_active_set() const { return by_active_set_; }
 
 private:

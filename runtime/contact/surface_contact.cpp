@@ -179,12 +179,12 @@ Eigen::Vector3d SurfaceContact::point_force(Eigen::Index g, double p, const Eige
 template <class F>
 void SurfaceContact::for_each_pressed_pair(const double* y, F&& f) const {
   const GapPairing::Poses at = pairing_->poses(y);
-  if (const std::vector<std::size_t>* pressed = pairing_->pressed_pairs(at)) {
+  if (const std::vector<GapPairing::Evaluation>* pressed = pairing_->pressed_evaluations(at)) {
     // the static solve's forces press these pairs at this state and no others: only they are
-    // evaluated (about half the pairs at the peak, fewer before and after)
-    GapPairing::Evaluation e;
-    for (const std::size_t k : *pressed) {
-      pairing_->evaluate(at, k, e);
+    // evaluated (about half the pairs at the peak, fewer before and after), once per state
+    for (std::size_t i = 0; i < pressed->size(); ++i) {
+      const std::size_t k = pairing_->pressed_pairs()[i];
+      const GapPairing::Evaluation& e = (*pressed)[i];
       const Eigen::Index g = pairing_->pairs()[k].g;
       if (pressure(g, e.gap) <= 0) continue;
       pairing_->target_point(y, k, e, point_);
