@@ -12,7 +12,7 @@
 namespace isosid::run {
 
 MultibodySystem::MultibodySystem(const Scene& scene, std::vector<format::Sid> sids, GivenPenalties given)
-    : gravity_(scene.gravity), given_penalties_(std::move(given)) {
+    : gravity_(scene.gravity), scene_file_(scene.file), given_penalties_(std::move(given)) {
   std::size_t next_sid = 0;
   for (const BodySpec& spec : scene.bodies) {
     format::Sid sid = spec.rigid ? rigid_body_sid(spec, scene.simulation.dimension) : std::move(sids.at(next_sid++));
@@ -85,7 +85,11 @@ void MultibodySystem::estimate_impacts(const double* y) {
     impact_estimates_.push_back(estimate_impact(c, y));
     const auto& estimate = impact_estimates_.back();
     if (estimate) penalty_contact_radius_[k] = estimate->contact_radius;
-    c.set_penalty(decide_penalty(c, given_penalties_[k], penalty_contact_radius_[k]));
+    try {
+      c.set_penalty(decide_penalty(c, given_penalties_[k], penalty_contact_radius_[k]));
+    } catch (const format::InputError& e) {  // a penalty that cannot be derived: name the scene file
+      throw format::InputError(scene_file_, "contact " + c.name() + "." + e.field(), e.problem());
+    }
     if (!estimate) continue;
     if (std::string w = resolution_warning(c, *estimate); !w.empty()) resolution_warnings_.push_back({"resolution", w});
   }

@@ -151,6 +151,7 @@ private:
   std::vector<RunWarning> warnings_;
   std::vector<RunWarning> resolution_warnings_;  ///< of the last estimate_impacts
   std::vector<std::optional<ImpactEstimate>> impact_estimates_;
+  std::string scene_file_;  ///< for the penalty's errors
   GivenPenalties given_penalties_;
   std::vector<double> penalty_contact_radius_;  ///< per contact: of its latest estimate, m (0: none yet)
 };

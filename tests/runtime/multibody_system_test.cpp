@@ -1,6 +1,7 @@
 // In-process tests of MultibodySystem: what it tells the user about a set-up (a body that
 // would integrate hundreds of modes dynamically draws a warning naming it and the way out),
 // and its answer to a repeated right-hand side.
+#include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
@@ -254,4 +255,32 @@ TEST_CASE("MultibodySystem: the contact loads kept from the static solve equal a
               << c.largest_force << " N");
   CHECK(c.pressed >= 20);
   CHECK(c.largest_difference <= 1e-8 * c.largest_force);
+}
+
+TEST_CASE("MultibodySystem: a penalty that cannot be derived is refused naming the scene file and the contact", "[runtime][unit]") {
+  // an infinitely stiff body against a fixed plane: no combined modulus to derive 1000 E*/h from
+  format::Sid sid = test::lumped_sid(test::random_lumped_body(12, 6, 5));
+  sid.material.youngs_modulus = INFINITY;
+  run::Scene scene;
+  scene.file = "in-process.scene.toml";
+  scene.simulation.end_time = 1e-3;
+  run::BodySpec body;
+  body.name = "block";
+  scene.bodies.push_back(body);
+  run::ShapeSpec plane;
+  plane.name = "ground";
+  plane.point = {0, sid.contact_surfaces.front().position.col(1).minCoeff() - 1, 0};
+  scene.fixed_surfaces.push_back(plane);
+  scene.contacts.push_back({"impact", "block", sid.contact_surfaces.front().name, "ground", "", 0.0, 0.0, 1e-6});
+  try {
+    const run::MultibodySystem system(scene, {sid});
+    FAIL("no error");
+  } catch (const format::InputError& e) {
+    CHECK_THAT(std::string(e.what()), Contains("in-process.scene.toml") && Contains("contact impact.penalty") && Contains("cannot be derived"));
+  }
+  // a penalty given for the run needs no derivation
+  run::GivenPenalties given(1, run::ContactPenalty{1e12, "a caller's"});
+  const run::MultibodySystem system(scene, {sid}, given);
+  CHECK(system.contacts()[0].penalty() == 1e12);
+  CHECK(system.contacts()[0].penalty_source() == "a caller's");
 }
