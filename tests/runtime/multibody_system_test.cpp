@@ -16,15 +16,23 @@
 using namespace isosid;
 using Catch::Matchers::Contains;
 
+namespace {
+/// A scene of one flexible body named `body`, read from no file (`file` names it in errors).
+run::Scene one_body_scene(const std::string& file, const std::string& body) {
+  run::Scene scene;
+  scene.file = file;
+  scene.simulation.end_time = 1e-3;
+  run::BodySpec spec;
+  spec.name = body;
+  scene.bodies.push_back(spec);
+  return scene;
+}
+}  // namespace
+
 TEST_CASE("MultibodySystem: hundreds of dynamic modes draw a warning", "[runtime][unit]") {
   const int nq = int(run::MultibodySystem::kManyDynamicModes) + 10;
   format::Sid sid = test::lumped_sid(test::random_lumped_body(90, nq, 3));
-  run::Scene scene;
-  scene.file = "in-process";
-  scene.simulation.end_time = 1e-3;
-  run::BodySpec body;
-  body.name = "plate";
-  scene.bodies.push_back(body);
+  run::Scene scene = one_body_scene("in-process", "plate");
 
   SECTION("all modes dynamic") {
     const run::MultibodySystem system(scene, {sid});
@@ -261,12 +269,7 @@ TEST_CASE("MultibodySystem: a penalty that cannot be derived is refused naming t
   // an infinitely stiff body against a fixed plane: no combined modulus to derive 1000 E*/h from
   format::Sid sid = test::lumped_sid(test::random_lumped_body(12, 6, 5));
   sid.material.youngs_modulus = INFINITY;
-  run::Scene scene;
-  scene.file = "in-process.scene.toml";
-  scene.simulation.end_time = 1e-3;
-  run::BodySpec body;
-  body.name = "block";
-  scene.bodies.push_back(body);
+  run::Scene scene = one_body_scene("in-process.scene.toml", "block");
   run::ShapeSpec plane;
   plane.name = "ground";
   plane.point = {0, sid.contact_surfaces.front().position.col(1).minCoeff() - 1, 0};
