@@ -180,7 +180,7 @@ bool GapPairing::PosesCopy::same(const Poses& at, const std::vector<Eigen::Index
 }
 
 const std::vector<GapPairing::Evaluation>& GapPairing::evaluations(const Poses& at) const {
-  if (evaluated_at_.same(at, slave_rows_.columns(), target_rows_.columns()) && evaluations_.size() == pairs_.size()) return evaluations_;
+  if (same_poses(evaluated_at_, at) && evaluations_.size() == pairs_.size()) return evaluations_;
   evaluations_.resize(pairs_.size());
   for (std::size_t k = 0; k < pairs_.size(); ++k) evaluate(at, k, evaluations_[k]);
   evaluated_at_.assign(at);
@@ -188,7 +188,7 @@ const std::vector<GapPairing::Evaluation>& GapPairing::evaluations(const Poses& 
 }
 
 const std::vector<GapPairing::Evaluation>* GapPairing::pressed_evaluations(const Poses& at) const {
-  if (!solved_at_.same(at, slave_rows_.columns(), target_rows_.columns())) return nullptr;
+  if (!same_poses(solved_at_, at)) return nullptr;
   if (!pressed_evaluated_) {
     pressed_evaluations_.resize(pressed_pairs_.size());  // within the capacity pair() reserved
     for (std::size_t i = 0; i < pressed_pairs_.size(); ++i) evaluate(at, pressed_pairs_[i], pressed_evaluations_[i]);
@@ -262,7 +262,7 @@ void GapPairing::count_condensed() {
 
 double GapPairing::min_gap(const double* y) const {
   const Poses at = poses(y);
-  if (solved_at_.same(at, slave_rows_.columns(), target_rows_.columns())) return solved_min_gap_;
+  if (same_poses(solved_at_, at)) return solved_min_gap_;
   double smallest = INFINITY;
   for (const Evaluation& e : evaluations(at)) smallest = std::min(smallest, e.gap);
   return smallest;

@@ -206,6 +206,8 @@ private:
   mutable bool pressed_evaluated_ = false;
   /// Counts the pairs within reach into largest_condensed_.
   void count_condensed();
+  /// Whether `copy` holds the poses `at` where the pairs' rows read them.
+  bool same_poses(const PosesCopy& copy, const Poses& at) const { return copy.same(at, slave_rows_.columns(), target_rows_.columns()); }
 
   bool paired_ = false, watching_ = false;
   double condensation_reach_ = INFINITY;

@@ -179,27 +179,20 @@ Eigen::Vector3d SurfaceContact::point_force(Eigen::Index g, double p, const Eige
 template <class F>
 void SurfaceContact::for_each_pressed_pair(const double* y, F&& f) const {
   const GapPairing::Poses at = pairing_->poses(y);
+  const auto load = [&](std::size_t k, const GapPairing::Evaluation& e) {
+    const Eigen::Index g = pairing_->pairs()[k].g;
+    if (pressure(g, e.gap) <= 0) return;
+    pairing_->target_point(y, k, e, point_);
+    f(g, surface_.Psi.middleRows(g * dim_, dim_), e.slave_point, at.A_slave, point_);
+  };
   if (const std::vector<GapPairing::Evaluation>* pressed = pairing_->pressed_evaluations(at)) {
     // the static solve's forces press these pairs at this state and no others: only they are
     // evaluated (about half the pairs at the peak, fewer before and after), once per state
-    for (std::size_t i = 0; i < pressed->size(); ++i) {
-      const std::size_t k = pairing_->pressed_pairs()[i];
-      const GapPairing::Evaluation& e = (*pressed)[i];
-      const Eigen::Index g = pairing_->pairs()[k].g;
-      if (pressure(g, e.gap) <= 0) continue;
-      pairing_->target_point(y, k, e, point_);
-      f(g, surface_.Psi.middleRows(g * dim_, dim_), e.slave_point, at.A_slave, point_);
-    }
+    for (std::size_t i = 0; i < pressed->size(); ++i) load(pairing_->pressed_pairs()[i], (*pressed)[i]);
     return;
   }
   const std::vector<GapPairing::Evaluation>& evaluations = pairing_->evaluations(at);
-  for (std::size_t k = 0; k < pairing_->pairs().size(); ++k) {
-    const GapPairing::Evaluation& e = evaluations[k];
-    const Eigen::Index g = pairing_->pairs()[k].g;
-    if (pressure(g, e.gap) <= 0) continue;
-    pairing_->target_point(y, k, e, point_);
-    f(g, surface_.Psi.middleRows(g * dim_, dim_), e.slave_point, at.A_slave, point_);
-  }
+  for (std::size_t k = 0; k < evaluations.size(); ++k) load(k, evaluations[k]);
 }
 
 template <class F>
