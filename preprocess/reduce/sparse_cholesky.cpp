@@ -2,7 +2,9 @@
 #include "reduce/sparse_cholesky.hpp"
 
 #include "isosid/format/error.hpp"
+#include "isosid/common/progress_line.hpp"
 #include "reduce/blas_threads.hpp"
+#include "reduce/factorization_progress.hpp"
 #include "reduce/memory_budget.hpp"
 
 #include <Eigen/CholmodSupport>
@@ -74,6 +76,7 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& A, const std::
   check_memory("refinement", size, impl_->llt.factorization_bytes(A));
   {
     const ParallelBlas threads(common.fl);  // the analysis's count of the factorization's flops
+    const FactorizationProgress progress(common.fl, common::work_step());
     impl_->llt.factorize(A);
   }
   if (common.status == CHOLMOD_OUT_OF_MEMORY || common.status == CHOLMOD_TOO_LARGE)
