@@ -26,8 +26,8 @@ std::string g_base_step;
 void count_blas_work(double flops) {
   if (!g_meter_armed.load(std::memory_order_relaxed)) return;
   const double counted = g_counted_flops.fetch_add(flops, std::memory_order_relaxed) + flops;
-  // the analysis counts a little differently from the calls (the diagonal blocks' halves):
-  // the fraction stays below 1 until the factorization is done
+  // the calls' count and the analysis's differ in terms of lower order (about 10 %): the
+  // fraction stays below 1 until the factorization is done
   const double fraction = std::min(0.99, counted / g_expected_flops);
   common::set_work_fraction(fraction);
   const int tenths = int(10 * fraction);
@@ -64,6 +64,7 @@ FactorizationProgress::FactorizationProgress(double expected_flops, std::string 
 FactorizationProgress::~FactorizationProgress() {
   g_meter_armed.store(false);
   common::set_work_fraction(-1);
+  if (g_tenths_shown.load() > 0) common::set_work_step(g_base_step);  // no share left standing for the work after
 }
 
 double FactorizationProgress::counted_flops() const { return g_counted_flops.load(); }

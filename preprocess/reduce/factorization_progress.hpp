@@ -14,7 +14,8 @@ class FactorizationProgress {
 public:
   /// While alive, the BLAS calls' work counts toward `expected_flops` (CHOLMOD's analysis
   /// count): the work fraction follows it (capped below 1) and the work step `step` gains
-  /// ", N % of its F flops". Afterwards the fraction is unknown again (-1).
+  /// ", N % of its F flops". Afterwards the fraction is unknown again (-1) and the step is
+  /// `step` again.
   FactorizationProgress(double expected_flops, std::string step);
   ~FactorizationProgress();
   FactorizationProgress(const FactorizationProgress&) = delete;
