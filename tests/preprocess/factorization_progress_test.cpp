@@ -54,10 +54,10 @@ TEST_CASE("FactorizationProgress: the counted BLAS work is the analysis's count 
   // terms of lower order: measured 1.10 times the analysis's count on this matrix
   CHECK(counted == Approx(expected).epsilon(0.15));
   CHECK(common::work_fraction() == -1);  // unknown again once the factorization is done
-  // no meter alive: the BLAS calls pass through uncounted
-  const double before = counted;
+  // no meter alive: the BLAS calls pass through and leave the fraction unknown
   llt.factorize(A);
-  CHECK(counted == before);
+  REQUIRE(llt.info() == Eigen::Success);
+  CHECK(common::work_fraction() == -1);
 }
 
 TEST_CASE("SparseCholesky: its factorization shows each tenth done in the work step", "[reduction]") {
