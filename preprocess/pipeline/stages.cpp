@@ -10,7 +10,8 @@ StageObserver& no_progress() {
   return silent;
 }
 
-StderrProgress::StderrProgress(std::string program) : line_(std::move(program)) {}
+StderrProgress::StderrProgress(std::string program, std::chrono::duration<double> log_interval)
+    : line_(std::move(program)), log_interval_(log_interval) {}
 
 StderrProgress::~StderrProgress() { stop_ticker(); }
 
@@ -18,17 +19,41 @@ void StderrProgress::started(const std::string& /*stage*/, const std::string& wh
   stop_ticker();
   if (!line_.terminal()) {
     // a log: a line for each new kind of step (its text up to a comma) as it is set, and for
-    // a step whose count moves on at most every 10 s, so that it stays readable through a
-    // long eigen solve
-    line_.show(what + " ...");
-    common::set_work_step_listener([this, what, kind = std::string(), t0 = std::chrono::steady_clock::now(),
-                                    shown_at = -1e300](const std::string& step) mutable {
-      const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    // a step whose count moves on at most every interval, so that it stays readable through a
+    // long eigen solve; and the stage's share (where it reports one) when an interval passed
+    // with no line
+    const auto t0 = std::chrono::steady_clock::now();
+    {
+      const std::lock_guard<std::mutex> lock(line_mutex_);
+      line_.show(what + " ...");
+      last_line_ = t0;
+    }
+    common::set_work_step_listener([this, what, kind = std::string(), shown_at = std::chrono::steady_clock::time_point()](
+                                       const std::string& step) mutable {
+      const auto now = std::chrono::steady_clock::now();
       const std::string step_kind = step.substr(0, step.find(','));
-      if (step.empty() || (step_kind == kind && now - shown_at < 10)) return;
+      if (step.empty() || (step_kind == kind && now - shown_at < log_interval_)) return;
+      const std::lock_guard<std::mutex> lock(line_mutex_);
       line_.show(what + " ... " + step);
       kind = step_kind;
-      shown_at = now;
+      shown_at = last_line_ = now;
+    });
+    running_ = true;
+    ticker_ = std::thread([this, what, t0] {
+      std::unique_lock<std::mutex> lock(mutex_);
+      while (!wake_.wait_for(lock, log_interval_, [this] { return !running_; })) {
+        const double fraction = common::work_fraction();
+        if (fraction < 0) continue;
+        // the step before the line's lock: the step listener holds the step's lock and takes the line's
+        const std::string step = common::work_step();
+        const auto now = std::chrono::steady_clock::now();
+        const std::lock_guard<std::mutex> line_lock(line_mutex_);
+        if (now - last_line_ < log_interval_) continue;
+        char text[64];
+        std::snprintf(text, sizeof text, " %.0f %%, %.1f s", 100 * fraction, std::chrono::duration<double>(now - t0).count());
+        line_.show(what + " ..." + (step.empty() ? "" : " " + step + ",") + text);
+        last_line_ = now;
+      }
     });
     return;
   }

@@ -30,10 +30,11 @@ StageObserver& no_progress();
 /// Progress on stderr: "PROGRAM: what ..." and "PROGRAM: stage done in 1.234 s". On a
 /// terminal the first is one line updated a few times a second with the step within the stage
 /// (common::work_step), its elapsed time, and its percentage and time left where the stage
-/// reports them (common::work_fraction); elsewhere each new step is a line of its own.
+/// reports them (common::work_fraction); elsewhere each new step is a line of its own, and a
+/// stage that reports its share gets a line with it whenever `log_interval` passed without one.
 class StderrProgress : public StageObserver {
 public:
-  explicit StderrProgress(std::string program);
+  explicit StderrProgress(std::string program, std::chrono::duration<double> log_interval = std::chrono::seconds(10));
   ~StderrProgress() override;
   void started(const std::string& stage, const std::string& what) override;
   void finished(const std::string& stage, double seconds) override;
@@ -42,6 +43,9 @@ private:
   void stop_ticker();
 
   common::ProgressLine line_;
+  std::chrono::duration<double> log_interval_;
+  std::mutex line_mutex_;  ///< a log's lines come from the step listener and the ticker
+  std::chrono::steady_clock::time_point last_line_;
   std::mutex mutex_;
   std::condition_variable wake_;
   bool running_ = false;
