@@ -5,6 +5,23 @@
 
 namespace isosid::prep {
 
+namespace {
+
+/// "what ... step, 40 %, 12.0 s" (with ", 18 s left" where `time_left`); without the step where
+/// there is none, and without the share where it is unknown (negative).
+std::string stage_line(const std::string& what, const std::string& step, double fraction, double elapsed, bool time_left) {
+  char text[96];
+  if (fraction >= 0) {
+    const std::string left = time_left ? common::ProgressLine::time_left(fraction, elapsed) : "";
+    std::snprintf(text, sizeof text, " %.0f %%, %.1f s%s%s", 100 * fraction, elapsed, left.empty() ? "" : ", ", left.c_str());
+  } else {
+    std::snprintf(text, sizeof text, " %.1f s", elapsed);
+  }
+  return what + " ..." + (step.empty() ? "" : " " + step + ",") + text;
+}
+
+}  // namespace
+
 StageObserver& no_progress() {
   static StageObserver silent;
   return silent;
@@ -49,9 +66,7 @@ void StderrProgress::started(const std::string& /*stage*/, const std::string& wh
         const auto now = std::chrono::steady_clock::now();
         const std::lock_guard<std::mutex> line_lock(line_mutex_);
         if (now - last_line_ < log_interval_) continue;
-        char text[64];
-        std::snprintf(text, sizeof text, " %.0f %%, %.1f s", 100 * fraction, std::chrono::duration<double>(now - t0).count());
-        line_.show(what + " ..." + (step.empty() ? "" : " " + step + ",") + text);
+        line_.show(stage_line(what, step, fraction, std::chrono::duration<double>(now - t0).count(), false));
         last_line_ = now;
       }
     });
@@ -64,17 +79,8 @@ void StderrProgress::started(const std::string& /*stage*/, const std::string& wh
     const auto t0 = std::chrono::steady_clock::now();
     std::unique_lock<std::mutex> lock(mutex_);
     do {
-      const std::string step = common::work_step();
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      const double fraction = common::work_fraction();
-      char text[96];
-      if (fraction >= 0) {
-        const std::string left = common::ProgressLine::time_left(fraction, elapsed);
-        std::snprintf(text, sizeof text, " %.0f %%, %.1f s%s%s", 100 * fraction, elapsed, left.empty() ? "" : ", ", left.c_str());
-      } else {
-        std::snprintf(text, sizeof text, " %.1f s", elapsed);
-      }
-      line_.show(what + " ..." + (step.empty() ? "" : " " + step + ",") + text);
+      line_.show(stage_line(what, common::work_step(), common::work_fraction(), elapsed, true));
     } while (!wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return !running_; }));
   });
 }
