@@ -46,56 +46,90 @@ NurbsPatch read_explicit_patch(const TomlView& g) {
   return p;
 }
 
+/// The primitives a [geometry] table names: each reads its own keys and builds its patch.
+struct PrimitiveReader {
+  const char* name;
+  NurbsPatch (*read)(const TomlView& g);
+};
+
+/// The lengths of `key`, one positive entry per axis of a `dim`-dimensional box.
+std::vector<double> box_lengths(const TomlView& g, const char* key, std::size_t dim) {
+  const auto s = g.numbers(key);
+  if (s.size() != dim || *std::min_element(s.begin(), s.end()) <= 0)
+    g.fail(key, dim == 2 ? "needs two positive lengths [lx, ly]" : "needs three positive lengths [lx, ly, lz]");
+  return s;
+}
+
+/// The box's `origin`: dim coordinates, zero if not given.
+std::vector<double> box_origin(const TomlView& g, std::size_t dim) {
+  const auto o = g.has("origin") ? g.numbers("origin") : std::vector<double>(dim, 0.0);
+  if (o.size() != dim) g.fail("origin", dim == 2 ? "needs two coordinates" : "needs three coordinates");
+  return o;
+}
+
+/// The two lengths of a primitive given by them alone, the second beyond the first.
+std::pair<double, double> ordered_lengths(const TomlView& g, const char* shorter, const char* longer) {
+  g.allow_only({"primitive", shorter, longer});
+  const double a = g.positive(shorter), b = g.positive(longer);
+  if (b <= a) g.fail(longer, std::string("must exceed ") + shorter);
+  return {a, b};
+}
+
+/// A primitive given by its radius alone.
+template <NurbsPatch (*build)(double)>
+NurbsPatch of_radius(const TomlView& g) {
+  g.allow_only({"primitive", "radius"});
+  return build(g.positive("radius"));
+}
+
+constexpr PrimitiveReader kPrimitives[] = {
+    {"half_disk", of_radius<primitives::half_disk>},
+    {"rod_with_spherical_end",
+     [](const TomlView& g) {
+       const auto [radius, length] = ordered_lengths(g, "radius", "length");
+       return primitives::rod_with_spherical_end(radius, length);
+     }},
+    {"disk", of_radius<primitives::disk>},
+    {"quarter_annulus",
+     [](const TomlView& g) {
+       const auto [inner, outer] = ordered_lengths(g, "inner_radius", "outer_radius");
+       return primitives::quarter_annulus(inner, outer);
+     }},
+    {"rectangle",
+     [](const TomlView& g) {
+       g.allow_only({"primitive", "size", "origin"});
+       const auto s = box_lengths(g, "size", 2), o = box_origin(g, 2);
+       return primitives::rectangle(s[0], s[1], o[0], o[1]);
+     }},
+    {"box",
+     [](const TomlView& g) {
+       g.allow_only({"primitive", "size", "origin"});
+       const auto s = box_lengths(g, "size", 3), o = box_origin(g, 3);
+       return primitives::box(s[0], s[1], s[2], Eigen::Vector3d(o[0], o[1], o[2]));
+     }},
+    {"ball", of_radius<primitives::ball>},
+    {"ball_spherical", of_radius<primitives::ball_spherical>},
+    {"cylinder_rod",
+     [](const TomlView& g) {
+       g.allow_only({"primitive", "radius", "length"});
+       return primitives::cylinder_rod(g.positive("radius"), g.positive("length"));
+     }},
+    {"patch",
+     [](const TomlView& g) {
+       g.allow_only({"primitive", "degrees", "knots", "control_points", "weights"});
+       return read_explicit_patch(g);
+     }},
+};
+
 NurbsPatch read_geometry(const TomlView& g, format::AnalysisType analysis) {
   const std::string primitive = g.string("primitive");
-  NurbsPatch p;
-  if (primitive == "half_disk") {
-    g.allow_only({"primitive", "radius"});
-    p = primitives::half_disk(g.positive("radius"));
-  } else if (primitive == "rod_with_spherical_end") {
-    g.allow_only({"primitive", "radius", "length"});
-    const double r = g.positive("radius"), l = g.positive("length");
-    if (l <= r) g.fail("length", "must exceed the radius");
-    p = primitives::rod_with_spherical_end(r, l);
-  } else if (primitive == "disk") {
-    g.allow_only({"primitive", "radius"});
-    p = primitives::disk(g.positive("radius"));
-  } else if (primitive == "quarter_annulus") {
-    g.allow_only({"primitive", "inner_radius", "outer_radius"});
-    const double ri = g.positive("inner_radius"), ro = g.positive("outer_radius");
-    if (ro <= ri) g.fail("outer_radius", "must exceed inner_radius");
-    p = primitives::quarter_annulus(ri, ro);
-  } else if (primitive == "rectangle") {
-    g.allow_only({"primitive", "size", "origin"});
-    const auto s = g.numbers("size");
-    if (s.size() != 2 || s[0] <= 0 || s[1] <= 0) g.fail("size", "needs two positive lengths [lx, ly]");
-    const auto o = g.has("origin") ? g.numbers("origin") : std::vector<double>{0, 0};
-    if (o.size() != 2) g.fail("origin", "needs two coordinates");
-    p = primitives::rectangle(s[0], s[1], o[0], o[1]);
-  } else if (primitive == "box") {
-    g.allow_only({"primitive", "size", "origin"});
-    const auto s = g.numbers("size");
-    if (s.size() != 3 || s[0] <= 0 || s[1] <= 0 || s[2] <= 0) g.fail("size", "needs three positive lengths [lx, ly, lz]");
-    const auto o = g.has("origin") ? g.numbers("origin") : std::vector<double>{0, 0, 0};
-    if (o.size() != 3) g.fail("origin", "needs three coordinates");
-    p = primitives::box(s[0], s[1], s[2], Eigen::Vector3d(o[0], o[1], o[2]));
-  } else if (primitive == "ball") {
-    g.allow_only({"primitive", "radius"});
-    p = primitives::ball(g.positive("radius"));
-  } else if (primitive == "ball_spherical") {
-    g.allow_only({"primitive", "radius"});
-    p = primitives::ball_spherical(g.positive("radius"));
-  } else if (primitive == "cylinder_rod") {
-    g.allow_only({"primitive", "radius", "length"});
-    p = primitives::cylinder_rod(g.positive("radius"), g.positive("length"));
-  } else if (primitive == "patch") {
-    g.allow_only({"primitive", "degrees", "knots", "control_points", "weights"});
-    p = read_explicit_patch(g);
-  } else {
-    g.fail("primitive", "unknown primitive '" + primitive +
-                            "' (half_disk, rod_with_spherical_end, disk, quarter_annulus, rectangle, box, ball, "
-                            "ball_spherical, cylinder_rod, patch)");
+  const auto reader = std::find_if(std::begin(kPrimitives), std::end(kPrimitives), [&](const PrimitiveReader& r) { return primitive == r.name; });
+  if (reader == std::end(kPrimitives)) {
+    std::string names;
+    for (const PrimitiveReader& r : kPrimitives) names += std::string(names.empty() ? "" : ", ") + r.name;
+    g.fail("primitive", "unknown primitive '" + primitive + "' (" + names + ")");
   }
+  const NurbsPatch p = reader->read(g);
   const int dim = format::spatial_dim(analysis);
   if (p.param_dim() != dim || p.phys_dim() != dim)
     g.fail("primitive", "'" + primitive + "' is a " + std::to_string(p.param_dim()) + "D patch in " +
