@@ -6,6 +6,14 @@
 
 namespace isosid::run {
 
+namespace {
+/// Semismooth Newton iterations before the active-set method takes over.
+constexpr int kNewtonIterations = 20;
+/// The active-set method's iterations per point before the solve gives up (measured: under two
+/// per pressed point on the unit test's flat faces).
+constexpr int kActiveSetIterationsPerPoint = 10;
+}  // namespace
+
 void PenaltyComplementarity::set(Eigen::MatrixXd compliance, Eigen::VectorXd stiffness) {
   compliance_ = std::move(compliance);
   stiffness_ = std::move(stiffness);

@@ -15,12 +15,6 @@ namespace isosid::run {
 
 class PenaltyComplementarity {
 public:
-  /// Semismooth Newton iterations before the active-set method takes over.
-  static constexpr int kNewtonIterations = 20;
-  /// The active-set method's iterations per point before the solve gives up (measured: under
-  /// two per pressed point on the unit test's flat faces).
-  static constexpr int kActiveSetIterationsPerPoint = 10;
-
   enum class Outcome { Solved, NotPositiveDefinite, NoActiveSet, NotFinite };
 
   PenaltyComplementarity() = default;
