@@ -8,6 +8,7 @@
 #include "pipeline/prepare.hpp"
 #include "sid/node_data.hpp"
 #include "preprocess/body_fixtures.hpp"
+#include "support/bad_input_cases.hpp"
 #include "support/run_program.hpp"
 #include "support/one_line_exit.hpp"
 
@@ -89,32 +90,10 @@ TEST_CASE("bad meshed models: exit 2 with one line naming the field", "[mesh]") 
   const test::ScratchDir dir("bad-mesh");
   std::ifstream in(kModels + "/rod_axisym_gmsh.model.toml");
   const std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  struct Case {
-    std::string from, to, expected;
-  };
-  for (const Case& c : std::vector<Case>{
-           {"length = 1.0", "length = 0.0100000001", "mesh: gmsh could not mesh the section"},
-           {"side = \"cap\"", "side = \"rim\"", "contact_surface[0].side: the primitive has no side 'rim'"},
-           {"within = 4e-3", "within = 1e-9", "contact_surface[0].within: no edge of side 'cap' lies that close"},
-           {"primitive = \"rod_with_spherical_end\"", "primitive = \"torus\"", "mesh.primitive: unknown primitive 'torus'"},
-           {"growth = 1.35", "growth = 1.0", "mesh.growth: must lie in (1.05, 3]"},
-           {"contact_element_size = 35e-6", "contact_element_size = 1e-9", "mesh.contact_element_size: below 1e-5 of the body's size"},
-           {"[damping]", "[[stress_line]]\nname = \"s\"\n[damping]", "stress_line: not used by a meshed body"},
-           {"method = \"craig-bampton\"", "method = \"macneal\"", "reduction.method: a meshed body is reduced by modal or craig-bampton"},
-           {"method = \"craig-bampton\"", "method = \"modal\"", "reduction.interface_surface: only used by method = \"craig-bampton\""},
-           {"point = [0.0, 1.0]", "point = [0.0, 1.5]", "node[0].point: lies outside the body"},
-           {"[reduction]", "[[contact_surface]]\nname = \"contact\"\nside = \"top\"\nwithin = 2.0\n[reduction]",
-            "contact_surface[1].name: duplicate name 'contact'"},
-           {"element_size = 2e-3\ncontact_element_size = 35e-6", "element_size = 1e-5\ncontact_element_size = 1e-5", "mesh.element_size: asks for about"},
-           {"analysis = \"axisymmetric\"", "analysis = \"solid\"", "body.analysis: meshed bodies are 2D sections"},
-       }) {
-    std::string text = base;
-    const std::size_t at = text.find(c.from);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, c.from.size(), c.to);
-    std::ofstream(dir.path("m.model.toml")) << text;
+  for (const auto& c : test::bad_input_cases("meshed_models.toml", {{"rod", base}}, "rod")) {
+    std::ofstream(dir.path("m.model.toml")) << c.text;
     const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("m.model.toml") + " -o " + dir.path("m.sid.h5"));
-    INFO(c.expected << "\n" << r.err);
+    INFO(c.label << ": " << c.expected << "\n" << r.err);
     test::check_one_line_exit(r, 2, c.expected);
   }
 }

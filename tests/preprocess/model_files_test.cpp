@@ -4,7 +4,9 @@
 #include "reduce/body_reduction.hpp"
 #include "reduce/modal_analysis.hpp"
 #include "isosid/format/sid_io.hpp"
+#include "support/bad_input_cases.hpp"
 #include "support/run_program.hpp"
+#include "support/scene_text.hpp"
 #include "preprocess/body_fixtures.hpp"
 #include "support/one_line_exit.hpp"
 
@@ -35,11 +37,7 @@ degrees = [2, 2]
 subdivisions = [4, 1]
 )";
 
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
-}
+using test::replace;
 
 test::ProgramResult prep_on(const test::ScratchDir& dir, const std::string& text) {
   const std::string file = dir.path("m.model.toml");
@@ -62,8 +60,6 @@ knots = [[0, 0, 0, 1, 1, 1], [0, 0, 1, 1]]
 control_points = [[0, 0], [0.5, 0], [1, 0], [0, 1], [0.5, 1], [1, 1]]
 weights = [1, 1, 1, 1, 1, 1]
 )";
-/// A model text with a [refinement.hierarchical] table of the given lines appended.
-std::string hierarchical(const std::string& model, const std::string& lines) { return model + "[refinement.hierarchical]\n" + lines; }
 
 const std::string kHalfDisk = R"(
 [body]
@@ -78,20 +74,6 @@ primitive = "half_disk"
 radius = 0.01
 [refinement]
 degrees = [2, 2]
-)";
-const std::string kBall = R"(
-[body]
-name = "ball"
-analysis = "solid"
-[material]
-youngs_modulus = 7e10
-poisson_ratio = 0.3
-density = 2700.0
-[geometry]
-primitive = "ball"
-radius = 0.01
-[refinement]
-degrees = [2, 2, 2]
 )";
 }  // namespace
 
@@ -130,67 +112,11 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
   struct Case {
     std::string text, expected;
   };
-  const std::vector<Case> cases = {
-      {replace(kValid, "[refinement]", "[refinement]\nsmoothing = 3"), "refinement.smoothing: unknown key"},
-      {replace(kValid, "[body]", "[body]\ncolour = \"red\""), "body.colour: unknown key"},
-      {replace(replace(replace(replace(kValid, "[material]", ""), "youngs_modulus = 2.1e11", ""),
-                       "poisson_ratio = 0.3", ""), "density = 7850.0", ""),
-       "material: missing"},
-      {replace(kValid, "poisson_ratio = 0.3", "poisson_ratio = 0.5"), "material.poisson_ratio: must lie in (-1, 0.5)"},
-      {replace(kValid, "youngs_modulus = 2.1e11", "youngs_modulus = 0"), "material.youngs_modulus: must be positive"},
-      {replace(kValid, "youngs_modulus = 2.1e11", "youngs_modulus = -1e9"), "material.youngs_modulus: must be positive"},
-      {replace(kValid, "density = 7850.0", "density = nan"), "material.density: must be finite"},
-      {replace(kValid, "density = 7850.0", "density = \"heavy\""), "material.density: must be a number"},
-      {replace(kValid, "analysis = \"plane_stress\"", "analysis = \"membrane\""), "body.analysis: unknown analysis"},
-      {replace(kValid, "primitive = \"rectangle\"", "primitive = \"torus\""), "geometry.primitive: unknown primitive"},
-      {replace(kValid, "size = [0.1, 0.02]", "size = [0.1, -0.02]"), "geometry.size"},
-      {replace(kValid, "degrees = [2, 2]", "degrees = [2]"), "refinement.degrees: needs 2 entries"},
-      {replace(kValid, "name = \"block\"", "name = \"block\"\nname = \"again\""), "TOML syntax error"},
-      {replace(kPatch, "knots = [[0, 0, 0, 1, 1, 1]", "knots = [[0, 0, 0, 1, 0.5, 1]"), "not non-decreasing"},
-      {replace(kPatch, "weights = [1, 1, 1, 1, 1, 1]", "weights = [1, 1, 0, 1, 1, 1]"), "weights: weight 2 must be positive"},
-      {replace(kPatch, "weights = [1, 1, 1, 1, 1, 1]", "weights = [1, 1, -2, 1, 1, 1]"), "weight 2 must be positive"},
-      {replace(kPatch, "degrees = [2, 1]", "degrees = [3, 1]"), "degree 3 too high for 6 knots"},
-      {replace(kPatch, "weights = [1, 1, 1, 1, 1, 1]", "weights = [1, 1, 1, 1, 1]"), "weights: 5 weights, expected 6"},
-      // a bowtie: the upper row of control points runs backwards, the patch crosses itself
-      {replace(kPatch, "[0, 1], [0.5, 1], [1, 1]]", "[1, 1], [0.5, 1], [0, 1]]"), "geometry: the patch folds over itself"},
-      // hierarchical refinement: degenerate requests
-      {hierarchical(kValid, "box = [[0.5, 1.2], [0.0, 1.0]]\n"),
-       "refinement.hierarchical.box: outside the parameter range of xi"},
-      {hierarchical(kValid, "box = [[0.5, 0.5], [0.0, 1.0]]\n"),
-       "refinement.hierarchical.box: zero or negative width along xi"},
-      {hierarchical(kValid, "point = [0.5, 0.5]\nwidth = 0.0\n"),
-       "refinement.hierarchical.width: must be positive"},
-      // wider than the patch (0.1 x 0.02 m): the whole patch refined, the global refinement THB avoids
-      {hierarchical(kValid, "point = [0.5, 0.5]\nwidth = 0.2\n"),
-       "refinement.hierarchical.width: a refined region 0.2 m wide exceeds the patch it refines (0.10198 m across its control net)"},
-      {hierarchical(kValid, "point = [0.5, 0.5]\nwidth = 1000.0\n"), "refinement.hierarchical.width: a refined region 1000 m wide"},
-      {hierarchical(kValid, "box = [[0.5, 0.6], [0.0, 1.0]]\nmax_levels = 6\n"),
-       "refinement.hierarchical.max_levels: must lie in 2..5"},
-      {hierarchical(kValid, "box = [[0.5, 0.6], [0.0, 1.0]]\nsmallest = 1e-7\n"),
-       "needs more than 5 levels"},
-      {hierarchical(kValid, "box = [[0.5, 0.6], [0.0, 1.0]]\nsmallest = 1e-12\n"),
-       "refinement.hierarchical.smallest: asks for a subdivision by"},
-      {hierarchical(kValid, "box = [[0.5, 0.6], [0.0, 1.0]]\nwidth = 1e-3\n"),
-       "refinement.hierarchical.width: only with a point"},
-      {hierarchical(kHalfDisk, "point = [1.0, 0.5]\nwidth = 1e-3\n"),
-       "refinement.hierarchical.point: the parametrization collapses at the point along eta"},
-      {hierarchical(kBall, "box = [[0.0, 0.1], [0.0, 0.1], [0.0, 0.5]]\nsmallest = 1e-3\n"),
-       "refinement.hierarchical.box: touches side xi0, which collapses along zeta, so it must span zeta whole"},
-      // element sizes from the expected contact radius
-      {replace(kValid, "subdivisions = [4, 1]", "subdivisions = [4, 1]\n[[refinement.graded]]\ndirection = \"xi\"\ntoward = 0.0\nsmallest = \"contact\""),
-       "refinement.graded[0].smallest: \"contact\" needs a [contact_resolution] table"},
-      {replace(kValid, "subdivisions = [4, 1]", "subdivisions = [4, 1]\n[[refinement.graded]]\ndirection = \"xi\"\ntoward = 0.0\nsmallest = \"fine\""),
-       "refinement.graded[0].smallest: must be a length in metres or \"contact\""},
-      {replace(kValid, "[refinement]", "[contact_resolution]\ncontact_radius = 1e-4\n[refinement]"),
-       "contact_resolution.contact_radius: no refinement uses it"},
-      {replace(kValid, "[refinement]", "[contact_resolution]\ncontact_radius = -1e-4\n[refinement]"),
-       "contact_resolution.contact_radius: must be positive"},
-      {replace(kValid, "[refinement]", "[contact_resolution]\ncontact_radius = 1e-4\nelements_per_radius = 0.5\n[refinement]"),
-       "contact_resolution.elements_per_radius: must lie in 1..100"},
-      {std::string(kValid) + "[damping]\nkappa = 1e300\n", "damping.kappa: is a damping ratio: must lie in [0, 1]"},
-      // counts that no machine here could reduce or store: refused before any work
-      {replace(kBall, "degrees = [2, 2, 2]", "degrees = [2, 2, 2]\nsubdivisions = [1000, 1000, 1000]"),
-       "refinement.subdivisions: gives 4.02e+09 control points, more than the 2000000"},
+  // the cases of tests/bad_inputs/model_files.toml, and two texts too long to keep there
+  std::vector<Case> cases;
+  for (const auto& c : test::bad_input_cases("model_files.toml", {{"valid", kValid}, {"patch", kPatch}, {"half_disk", kHalfDisk}}, "valid"))
+    cases.push_back({c.text, c.expected});
+  const std::vector<Case> long_texts = {
       {[] {
          std::string text = kValid;
          for (int i = 0; i <= 10000; ++i) text += "[[node]]\nname = \"n" + std::to_string(i) + "\"\nparameter = [0.5, 0.5]\n";
@@ -204,22 +130,8 @@ TEST_CASE("bad model files: exit 2 with one line naming file, field and problem"
          return text;
        }(),
        "stress_line[10].points: the stress lines together have more than 100000 points"},
-      // names end at a NUL in HDF5 and file systems: refused, not cut short
-      {replace(kValid, "name = \"block\"", "name = \"blo\\u0000ck\""), "body.name: contains a NUL character"},
-      // integers are bounded before they are narrowed: 2^32 + 4 must not become degree 4
-      {replace(kValid, "degrees = [2, 2]", "degrees = [4294967300, 2]"), "refinement.degrees[0]: must lie in 1..8, is 4294967300"},
-      {replace(kValid, "degrees = [2, 2]", "degrees = [9, 2]"), "refinement.degrees[0]: must lie in 1..8, is 9"},
-      {replace(kValid, "subdivisions = [4, 1]", "subdivisions = [4, -4294967295]"), "refinement.subdivisions[1]: must lie in 1..1000"},
-      {replace(kPatch, "degrees = [2, 1]", "degrees = [2, 4294967297]"), "degrees[1]: must lie in 1..8, is 4294967297"},
-      // graded knots are counted before they are marched: a tiny smallest with a growth near 1
-      // would march hundreds of millions of them
-      {replace(kValid, "subdivisions = [4, 1]", "subdivisions = [4, 1]\n[[refinement.graded]]\ndirection = \"xi\"\ntoward = 0.0\n"
-                                                "smallest = 1e-30\ngrowth = 1.0000001"),
-       "refinement.graded[0]: gives"},
-      {replace(kValid, "subdivisions = [4, 1]", "subdivisions = [4, 1]\n[[refinement.graded]]\ndirection = \"xi\"\ntoward = 0.5\n"
-                                                "smallest = 1e-9\ngrowth = 1.00001"),
-       "refinement.graded[0]: gives"},
   };
+  cases.insert(cases.end(), long_texts.begin(), long_texts.end());
   for (const Case& c : cases) {
     INFO(c.expected);
     const auto r = prep_on(dir, c.text);
@@ -268,36 +180,8 @@ TEST_CASE("a node where the mapping collapses gets its rotations from just insid
   // output SID). The rotation rows come from 1e-7 of the range inside: finite, and within 1e-4
   // of those taken 1e-5 inside (a smooth field)
   const test::ScratchDir dir("node-corner");
-  const std::string model = R"(
-[body]
-name = "rod"
-analysis = "axisymmetric"
-[material]
-youngs_modulus = 7.0e10
-poisson_ratio = 0.3
-density = 2700.0
-[geometry]
-primitive = "rod_with_spherical_end"
-radius = 0.01
-length = 0.1
-[refinement]
-degrees = [2, 2]
-subdivisions = [1, 3]
-[[contact_surface]]
-name = "contact"
-side = "cap"
-[reduction]
-method = "craig-bampton"
-normal_modes = 3
-interface_surface = "contact"
-interface_points = 3
-interface_center = [0.0]
-[[node]]
-name = "top"
-parameter = [PARAMETER]
-)";
   auto psi_at = [&](const std::string& parameter, const std::string& name) {
-    std::ofstream(dir.path(name + ".model.toml")) << replace(model, "PARAMETER", parameter);
+    std::ofstream(dir.path(name + ".model.toml")) << test::scene_fixture("rod_corner_node.model.toml", {{"@PARAMETER@", parameter}});
     const auto r = test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path(name + ".model.toml") + " -o " + dir.path(name + ".sid.h5"));
     INFO(r.err);
     REQUIRE(r.exit_status == 0);

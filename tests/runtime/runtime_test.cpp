@@ -4,6 +4,7 @@
 #include "isosid/format/hdf5_file.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "scene_runner.hpp"
+#include "support/bad_input_cases.hpp"
 #include "support/impact_scene.hpp"
 #include "support/one_line_exit.hpp"
 
@@ -40,6 +41,18 @@ void check_agree(const json& reference, const json& other, std::initializer_list
 using test::replace;
 
 const std::string kImpact = test::golden_impact_scene(kGolden + "/sphere_small.sid.h5");
+
+/// isosid-run of sphere_hertz.scene.toml in `dir` (its model's SID already prepared there)
+/// with `options` and its writes limited to `kib` KiB: the file size limit (ulimit -f, SIGXFSZ
+/// ignored) makes writes fail with EFBIG as a full disk does with ENOSPC. The run must end with
+/// exit 1 and one line that contains `message`; returns its summary.json.
+json run_on_full_disk(const test::ScratchDir& dir, int kib, const std::string& options, const std::string& message) {
+  const auto run = test::run_program("ulimit -f " + std::to_string(kib) + "; trap '' XFSZ; ISOSID_PREP=" + ISOSID_PREP_EXE + " " +
+                                     ISOSID_RUN_EXE + " -q " + options + " " + dir.path("sphere_hertz.scene.toml") + " -o " + dir.path("out"));
+  test::check_one_line_exit(run, 1, message);
+  std::ifstream in(dir.path("out/summary.json"));
+  return json::parse(in);
+}
 }  // namespace
 
 std::string beam_scene(const std::string& velocity, const std::string& angular_velocity, const std::string& gravity) {
@@ -202,50 +215,10 @@ TEST_CASE("an elastic sphere impact conserves energy and rebounds", "[runtime]")
 
 TEST_CASE("bad scenes: exit 2 with one line naming file, field and problem", "[runtime]") {
   const test::ScratchDir dir("bad-scenes");
-  struct Case {
-    std::string text, expected;
-  };
-  const std::vector<Case> cases = {
-      {replace(kImpact, "sphere_small.sid.h5", "missing.sid.h5"), "flexible_body[0].sid: file not found"},
-      {replace(kImpact, "penalty = 5e17", "penalty = -5e17"), "contact[0].penalty: must be positive"},
-      {replace(kImpact, "[[fixed_plane]]", "[[fixed_plane]]\ncolour = 1"), "fixed_plane[0].colour: unknown key"},
-      {replace(kImpact, "dimension = \"axisymmetric\"", "dimension = \"planar\""), "axisymmetric body in a planar scene"},
-      {replace(kImpact, "surface = \"contact\"", "surface = \"rim\""), "has no contact surface 'rim'"},
-      {replace(kImpact, "target = \"ground\"", "target = \"wall\""), "contact[0].target: no fixed surface or body named 'wall'"},
-      {replace(kImpact, "[[fixed_plane]]", "[[rigid_body]]\nname = \"block\"\nshape = \"box\"\nsize = [1, 1, 1]\ndensity = 1\n[[fixed_plane]]"),
-       "rigid_body[0].shape: a box is not axisymmetric"},
-      {replace(kImpact, "[[fixed_plane]]", "[[rigid_body]]\nname = \"ball\"\nshape = \"sphere\"\nradius = 0.01\nmass = 1\ndensity = 1\n[[fixed_plane]]"),
-       "rigid_body[0].mass: give either a mass or a density"},
-      {replace(kImpact, "[[fixed_plane]]", "[[fixed_sphere]]\nname = \"knob\"\ncenter = [0.1, 0, 0]\nradius = 0.01\n[[fixed_plane]]"),
-       "knob: a sphere must be centred on the axis"},
-      {replace(kImpact, "target = \"ground\"", "target = \"sphere\""), "contact[0].target: a body cannot be its own contact target"},
-      {kImpact + "[[monitor]]\nname = \"m\"\nbody = \"sphere\"\nstress = \"nowhere\"\n", "has no stress line 'nowhere'"},
-      {kImpact + "[[monitor]]\nname = \"m\"\nbody = \"sphere\"\nstress = \"axis\"\nnode = \"top\"\n",
-       "monitor[0].node: a stress monitor takes only name, body and stress"},
-      {replace(kImpact, "end_time = 100e-6", "end_time = nan"), "simulation.end_time: must be finite"},
-      {replace(kImpact, "position = [0.0, 0.0100001, 0.0]", "position = [0.001, 0.0100001, 0.0]"),
-       "flexible_body[0].position: an axisymmetric scene needs its bodies on the axis"},
-      {replace(kImpact, "position = [0.0, 0.0100001, 0.0]", "position = [0.0, 0.0095, 0.0]"),
-       "contact impact: 'sphere' starts 0.0005 m deep in 'ground'"},
-      {replace(kImpact, "output_interval = 1e-6", "output_interval = 1e-15"),
-       "simulation.output_interval: end_time / output_interval asks for 1e+11 samples, more than the limit of 1e7"},
-      {kImpact + "[output]\nparaview = true\n", "output.paraview: the SID of 'sphere' has no viewing mesh: add [visual] to its model file"},
-      {kImpact + "[output]\nparaview = true\nparaview_interval = 1e-7\n", "output.paraview_interval: is shorter than the output interval"},
-      {replace(kImpact, "output_interval = 1e-6", "output_interval = 1e-6\nmax_step = 1e-300"),
-       "simulation.max_step: end_time / max_step needs at least 1e+296 steps, more than max_steps = 10000000"},
-      // a penalty so soft that the bodies would pass through each other
-      {replace(kImpact, "penalty = 5e17", "penalty = 1e-300"), "contact[0].penalty: 1e-300 N/m^3 is below 1e-8 of the penalty derived"},
-      {replace(kImpact, "penalty = 5e17", "penalty = 1e8"), "contact[0].penalty: 1e+08 N/m^3 is below 1e-8 of the penalty derived"},
-      // so stiff that the steps collapse and the run crawls for hours (the golden sphere's
-      // derived penalty is 1.6e17 N/m^3; 5e28 is scene A's crawl, 1e40 into an overlap its hang)
-      {replace(kImpact, "penalty = 5e17", "penalty = 1e40"), "contact[0].penalty: 1e+40 N/m^3 is above 1e6 times the penalty derived"},
-      {replace(kImpact, "penalty = 5e17", "penalty = 5e28"), "contact[0].penalty: 5e+28 N/m^3 is above 1e6 times the penalty derived"},
-      {replace(kImpact, "penalty = 5e17", "penalty = 2e23"), "contact[0].penalty: 2e+23 N/m^3 is above 1e6 times the penalty derived"},
-  };
-  for (const Case& c : cases) {
+  for (const auto& c : test::bad_input_cases("scenes.toml", {{"impact", kImpact}}, "impact")) {
     std::ofstream(dir.path("s.scene.toml")) << c.text;
     const auto r = test::run_program(std::string(ISOSID_RUN_EXE) + " -q " + dir.path("s.scene.toml") + " -o " + dir.path("out"));
-    INFO(c.expected << "\n" << r.err);
+    INFO(c.label << ": " << c.expected << "\n" << r.err);
     test::check_one_line_exit(r, 2, c.expected);
     CHECK_FALSE(std::filesystem::exists(dir.path("out")));  // a refused run leaves no results folder
   }
@@ -275,30 +248,19 @@ TEST_CASE("a scene or SID that is a FIFO, a folder or a link loop is named for w
 }
 
 TEST_CASE("a full disk ends both programs with one line and exit 1, and the run keeps summary.json", "[runtime][faults]") {
-  // the file size limit (ulimit -f, SIGXFSZ ignored) makes writes fail with EFBIG as a full disk
-  // does with ENOSPC; libhdf5 used to crash at exit after the failed write, and isosid-run
-  // lost the whole run
+  // writes limited as on a full disk (run_on_full_disk); libhdf5 used to crash at exit after the
+  // failed write, and isosid-run lost the whole run
   const test::ScratchDir dir("disk-full");
   test::copy_model_file(dir, "sphere_axisym.model.toml");
   test::copy_model_file(dir, "sphere_hertz.scene.toml");
-  const std::string limited = "ulimit -f 100; trap '' XFSZ; ";  // 100 KiB: the SID and results.h5 need more
-  const auto prep = test::run_program(limited + ISOSID_PREP_EXE + " -q " + dir.path("sphere_axisym.model.toml") + " -o " +
-                                      dir.path("limited.sid.h5"));
-  INFO(prep.err);
-  CHECK(prep.exit_status == 1);
-  CHECK(std::count(prep.err.begin(), prep.err.end(), '\n') == 1);
-  CHECK(prep.err.find("File too large") != std::string::npos);
+  // 100 KiB: the SID and results.h5 need more
+  const auto prep = test::run_program("ulimit -f 100; trap '' XFSZ; " + std::string(ISOSID_PREP_EXE) + " -q " +
+                                      dir.path("sphere_axisym.model.toml") + " -o " + dir.path("limited.sid.h5"));
+  test::check_one_line_exit(prep, 1, "File too large");
   CHECK_FALSE(std::filesystem::exists(dir.path("limited.sid.h5")));
   // the run itself, with a SID built without the limit
   REQUIRE(test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("sphere_axisym.model.toml")).exit_status == 0);
-  const auto run = test::run_program(limited + "ISOSID_PREP=" + ISOSID_PREP_EXE + " " + ISOSID_RUN_EXE + " -q " +
-                                     dir.path("sphere_hertz.scene.toml") + " -o " + dir.path("out"));
-  INFO(run.err);
-  CHECK(run.exit_status == 1);
-  CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
-  CHECK(run.err.find("summary.json") != std::string::npos);
-  std::ifstream in(dir.path("out/summary.json"));
-  const json summary = json::parse(in);
+  const json summary = run_on_full_disk(dir, 100, "", "summary.json");
   CHECK(summary["status"] == "completed");
   CHECK(summary.contains("results_h5_error"));
   CHECK(summary["contacts"][0]["peak_force_n"].get<double>() > 50);
@@ -312,14 +274,7 @@ TEST_CASE("ParaView frames that cannot be written fail the run with exit 1 and k
   test::copy_model_file(dir, "sphere_hertz.scene.toml");
   REQUIRE(test::run_program(std::string(ISOSID_PREP_EXE) + " -q " + dir.path("sphere_axisym.model.toml")).exit_status == 0);
   // 300 KiB: summary.json and a short results.h5 fit, one frame of the sphere (0.37 MB) does not
-  const auto run = test::run_program("ulimit -f 300; trap '' XFSZ; ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_RUN_EXE +
-                                     " -q --paraview " + dir.path("sphere_hertz.scene.toml") + " -o " + dir.path("out"));
-  INFO(run.err);
-  CHECK(run.exit_status == 1);
-  CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
-  CHECK(run.err.find("body_sphere_00000.vtu: cannot write") != std::string::npos);
-  std::ifstream in(dir.path("out/summary.json"));
-  const json summary = json::parse(in);
+  const json summary = run_on_full_disk(dir, 300, "--paraview", "body_sphere_00000.vtu: cannot write");
   CHECK(summary["status"] == "failed");
   CHECK(std::filesystem::exists(dir.path("out/results.h5")));
   CHECK(std::filesystem::exists(dir.path("out/paraview/scene.pvd")));  // the frames so far: none
