@@ -4,8 +4,18 @@
 #include "adapt/penalty_search.hpp"
 
 #include <catch2/catch.hpp>
+#include <vector>
 
 using namespace isosid::run;
+
+namespace {
+/// A search from the penalty `start` that has recorded these probes in turn.
+PenaltySearch probed(double start, const std::vector<PenaltyProbe>& probes) {
+  PenaltySearch search(PenaltyFactor{start});
+  for (const PenaltyProbe& p : probes) search.record(p);
+  return search;
+}
+}  // namespace
 
 TEST_CASE("penalty factor: quick increase by decades, slow decrease by the leading digit ([R2] eq. 8)", "[runtime][adaptive]") {
   // exact in binary to the last bit is not the point: one unit of the leading digit off, to round-off
@@ -37,27 +47,24 @@ TEST_CASE("penalty search: the increase stops where the force stops changing, at
 }
 
 TEST_CASE("penalty search: an error ends the increase at the last penalty without one", "[runtime][adaptive]") {
+  const auto probe = [](double penalty, double force, long steps, const char* error = "") {
+    return PenaltyProbe{PenaltyFactor(penalty), force, steps, error};
+  };
   SECTION("a failed probe") {
-    PenaltySearch search(PenaltyFactor(1e15));
-    search.record({PenaltyFactor(1e15), 1.0, 100, ""});
-    search.record({PenaltyFactor(1e16), 2.0, 100, "the quasistatic modes did not converge"});
+    const PenaltySearch search = probed(1e15, {probe(1e15, 1.0, 100), probe(1e16, 2.0, 100, "the quasistatic modes did not converge")});
     REQUIRE(search.done());
     CHECK(search.result().value() == Approx(1e15));
     CHECK_THAT(search.reason(), Catch::Matchers::Contains("did not converge"));
   }
   SECTION("a probe that needs more than twice the steps for the same window") {
-    PenaltySearch search(PenaltyFactor(1e15));
-    search.record({PenaltyFactor(1e15), 1.0, 100, ""});
-    search.record({PenaltyFactor(1e16), 2.0, 200, ""});  // twice: still fine
-    REQUIRE_FALSE(search.done());
-    search.record({PenaltyFactor(1e17), 3.0, 401, ""});
+    CHECK_FALSE(probed(1e15, {probe(1e15, 1.0, 100), probe(1e16, 2.0, 200)}).done());  // twice: still fine
+    const PenaltySearch search = probed(1e15, {probe(1e15, 1.0, 100), probe(1e16, 2.0, 200), probe(1e17, 3.0, 401)});
     REQUIRE(search.done());
     CHECK(search.result().value() == Approx(1e16));
     CHECK_THAT(search.reason(), Catch::Matchers::Contains("steps grew from 200 to 401"));
   }
   SECTION("an error at the start penalty lowers it one step (the seed's slow decrease)") {
-    PenaltySearch search(PenaltyFactor(5e22));
-    search.record({PenaltyFactor(5e22), 1.0, 100, "failed"});
+    const PenaltySearch search = probed(5e22, {probe(5e22, 1.0, 100, "failed")});
     REQUIRE(search.done());
     CHECK(search.result().value() == Approx(4e22));
   }
