@@ -4,7 +4,10 @@
 # Debian's dist-packages layout.
 include(CMakePackageConfigHelpers)
 
-install(TARGETS isosid-prep isosid-run isosid-sweep isosid-info isosid-diff isosid-export RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS isosid-prep isosid-run isosid-info isosid-diff isosid-export RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+if(TARGET isosid-sweep)
+  install(TARGETS isosid-sweep RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
 install(TARGETS isosid_format isosid_common isosid_prep isosid_runtime isosid_options EXPORT isosidTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}/isosid)
 
