@@ -2,12 +2,12 @@
 // file, the dataset and the problem; it never crashes.
 #include "isosid/format/error.hpp"
 #include "isosid/format/sid_io.hpp"
+#include "support/bad_input_cases.hpp"
 #include "support/hdf5_tamper.hpp"
 #include "support/lumped_sid.hpp"
 #include "support/run_program.hpp"
 
 #include <catch2/catch.hpp>
-#include <toml++/toml.h>
 #include <functional>
 #include <filesystem>
 #include <fstream>
@@ -33,7 +33,7 @@ std::string message_after(const test::ScratchDir& dir, Damage damage) {
 
 /// tests/bad_inputs/sids.toml: its cases of damage done to a valid SID.
 toml::table damaged_sids() {
-  const toml::table t = toml::parse_file(std::string(ISOSID_BAD_INPUTS_DIR) + "/sids.toml");
+  toml::table t = test::read_bad_inputs("sids.toml");
   REQUIRE(t["case"].as_array());
   return t;
 }

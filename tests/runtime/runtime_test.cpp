@@ -42,12 +42,15 @@ using test::replace;
 
 const std::string kImpact = test::golden_impact_scene(kGolden + "/sphere_small.sid.h5");
 
+/// The shell's prefix that limits a command's writes to `kib` KiB: the file size limit (ulimit -f,
+/// SIGXFSZ ignored) makes writes fail with EFBIG as a full disk does with ENOSPC.
+std::string on_full_disk(int kib) { return "ulimit -f " + std::to_string(kib) + "; trap '' XFSZ; "; }
+
 /// isosid-run of sphere_hertz.scene.toml in `dir` (its model's SID already prepared there)
-/// with `options` and its writes limited to `kib` KiB: the file size limit (ulimit -f, SIGXFSZ
-/// ignored) makes writes fail with EFBIG as a full disk does with ENOSPC. The run must end with
-/// exit 1 and one line that contains `message`; returns its summary.json.
+/// with `options` and its writes limited to `kib` KiB (on_full_disk). The run must end with exit 1
+/// and one line that contains `message`; returns its summary.json.
 json run_on_full_disk(const test::ScratchDir& dir, int kib, const std::string& options, const std::string& message) {
-  const auto run = test::run_program("ulimit -f " + std::to_string(kib) + "; trap '' XFSZ; ISOSID_PREP=" + ISOSID_PREP_EXE + " " +
+  const auto run = test::run_program(on_full_disk(kib) + "ISOSID_PREP=" + ISOSID_PREP_EXE + " " +
                                      ISOSID_RUN_EXE + " -q " + options + " " + dir.path("sphere_hertz.scene.toml") + " -o " + dir.path("out"));
   test::check_one_line_exit(run, 1, message);
   std::ifstream in(dir.path("out/summary.json"));
@@ -248,13 +251,13 @@ TEST_CASE("a scene or SID that is a FIFO, a folder or a link loop is named for w
 }
 
 TEST_CASE("a full disk ends both programs with one line and exit 1, and the run keeps summary.json", "[runtime][faults]") {
-  // writes limited as on a full disk (run_on_full_disk); libhdf5 used to crash at exit after the
+  // writes limited as on a full disk (on_full_disk); libhdf5 used to crash at exit after the
   // failed write, and isosid-run lost the whole run
   const test::ScratchDir dir("disk-full");
   test::copy_model_file(dir, "sphere_axisym.model.toml");
   test::copy_model_file(dir, "sphere_hertz.scene.toml");
   // 100 KiB: the SID and results.h5 need more
-  const auto prep = test::run_program("ulimit -f 100; trap '' XFSZ; " + std::string(ISOSID_PREP_EXE) + " -q " +
+  const auto prep = test::run_program(on_full_disk(100) + ISOSID_PREP_EXE + " -q " +
                                       dir.path("sphere_axisym.model.toml") + " -o " + dir.path("limited.sid.h5"));
   test::check_one_line_exit(prep, 1, "File too large");
   CHECK_FALSE(std::filesystem::exists(dir.path("limited.sid.h5")));

@@ -1,21 +1,26 @@
 // Bad inputs kept as data; see bad_input_cases.hpp.
 #include "support/bad_input_cases.hpp"
 
-#include <toml++/toml.h>
-
 #include <stdexcept>
 
 namespace isosid::test {
 
+namespace {
+std::string bad_inputs_path(const std::string& file) { return std::string(ISOSID_BAD_INPUTS_DIR) + "/" + file; }
+}  // namespace
+
+toml::table read_bad_inputs(const std::string& file) {
+  try {
+    return toml::parse_file(bad_inputs_path(file));
+  } catch (const toml::parse_error& e) {
+    throw std::runtime_error(bad_inputs_path(file) + ": " + std::string(e.description()));
+  }
+}
+
 std::vector<BadInputCase> bad_input_cases(const std::string& file, const std::map<std::string, std::string>& bases,
                                           const std::string& default_base) {
-  const std::string path = std::string(ISOSID_BAD_INPUTS_DIR) + "/" + file;
-  toml::table table;
-  try {
-    table = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw std::runtime_error(path + ": " + std::string(e.description()));
-  }
+  const std::string path = bad_inputs_path(file);
+  const toml::table table = read_bad_inputs(file);
   const toml::array* cases = table["case"].as_array();
   if (!cases || cases->empty()) throw std::runtime_error(path + ": no [[case]]");
   std::vector<BadInputCase> out;
