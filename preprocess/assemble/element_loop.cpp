@@ -1,8 +1,9 @@
 // The element loop; see element_loop.hpp.
 #include "assemble/element_loop.hpp"
 
-#include "space/reference_rule.hpp"
+#include "isosid/common/dense_decompositions.hpp"
 #include "isosid/common/progress_line.hpp"
+#include "space/reference_rule.hpp"
 
 #include <atomic>
 

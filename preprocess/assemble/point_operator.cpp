@@ -1,6 +1,7 @@
 // Pointwise displacement and strain operators; see point_operator.hpp.
 #include "assemble/point_operator.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
 #include "space/element_evaluator.hpp"
 
 namespace isosid::prep {

@@ -2,6 +2,7 @@
 #include "model/placement.hpp"
 
 #include "geometry/multi_index.hpp"
+#include "isosid/common/dense_decompositions.hpp"
 #include "model/body_model.hpp"
 
 #include <algorithm>
@@ -63,7 +64,7 @@ BodyPoint nearest_point(const NurbsPatch& patch, const Eigen::VectorXd& target) 
       if (!(p.parameter(d) <= lo(d) && descent(d) < 0) && !(p.parameter(d) >= hi(d) && descent(d) > 0)) free.push_back(d);
     if (free.empty()) break;  // a corner of the box, pushed outward along every direction
     // least squares: a singular Jacobian (a collapsed side) takes the shortest step
-    const Eigen::VectorXd free_step = J(Eigen::all, free).completeOrthogonalDecomposition().solve(r);
+    const Eigen::VectorXd free_step = common::minimum_norm_solve(J(Eigen::all, free), r);
     Eigen::VectorXd step = Eigen::VectorXd::Zero(pd);
     step(free) = free_step;
     bool improved = false;

@@ -1,9 +1,9 @@
 // Block Lanczos with full orthogonalization and thick restarts; see block_lanczos.hpp.
 #include "reduce/block_lanczos.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
 #include "isosid/format/error.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -99,9 +99,9 @@ BlockLanczosResult block_lanczos_largest(const BlockOperator& C, Index size, int
     T.block(done, done, w, w) = 0.5 * (H.bottomRows(w) + H.bottomRows(w).transpose());
     done = m;
 
-    const Eigen::SelfAdjointEigenSolver<MatrixXd> eig(T.topLeftCorner(m, m));
-    const VectorXd theta = eig.eigenvalues().reverse();
-    const MatrixXd S = eig.eigenvectors().rowwise().reverse();
+    const common::SymmetricEigen eig = common::symmetric_eigen(T.topLeftCorner(m, m));
+    const VectorXd theta = eig.values.reverse();
+    const MatrixXd S = eig.vectors.rowwise().reverse();
     bool converged = m >= n;  // the first blocks hold fewer Ritz pairs than asked for
     if (converged) {
       const VectorXd residual = (R * S.block(m - w, 0, w, n)).colwise().norm().transpose();

@@ -1,6 +1,7 @@
 // MacNeal reduction; see macneal.hpp.
 #include "reduce/macneal.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
 #include "isosid/common/progress_line.hpp"
 #include "isosid/format/error.hpp"
 #include "reduce/modal_analysis.hpp"

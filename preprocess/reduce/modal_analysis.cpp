@@ -1,6 +1,7 @@
 // Block Lanczos with a CHOLMOD factor on a symmetric form of the inverted pencil; see modal_analysis.hpp.
 #include "reduce/modal_analysis.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
 #include "isosid/common/progress_line.hpp"
 
 #include "isosid/format/error.hpp"
@@ -11,7 +12,6 @@
 #include "reduce/sparse_cholesky.hpp"
 #include "reduce/sparse_products.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -123,11 +123,11 @@ ModalResult dense_lowest(const Eigen::SparseMatrix<double>& K, const Eigen::Spar
   if (K.rows() > 6000)
     throw format::ComputationError("a dense eigen solve of " + std::to_string(K.rows()) + " DOFs is too large (limit 6000)");
   const Eigen::MatrixXd Kd = K, Md = M;
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Kd, Md);
-  if (dense.info() != Eigen::Success) throw format::ComputationError("dense generalized eigen solve failed");
+  const common::SymmetricEigen dense = common::generalized_symmetric_eigen(Kd, Md);
+  if (!dense.converged) throw format::ComputationError("dense generalized eigen solve failed");
   ModalResult r;
-  r.eigenvalues = dense.eigenvalues().head(n);
-  r.modes = dense.eigenvectors().leftCols(n);
+  r.eigenvalues = dense.values.head(n);
+  r.modes = dense.vectors.leftCols(n);
   return r;
 }
 

@@ -1,9 +1,8 @@
 // Buckens projection and orthonormalization; see mode_basis.hpp.
 #include "reduce/mode_basis.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
 #include "reduce/sparse_products.hpp"
-
-#include <Eigen/Eigenvalues>
 
 namespace isosid::prep {
 
@@ -74,21 +73,20 @@ Eigen::VectorXd orthonormalize(Eigen::MatrixXd& Phi, const Eigen::SparseMatrix<d
   const Eigen::VectorXd scale = (norms.array() > 0).select(norms.cwiseInverse(), 1.0);
   Phi *= scale.asDiagonal();
   G = scale.asDiagonal() * G * scale.asDiagonal();
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> g(G);
-  const double largest = g.eigenvalues().maxCoeff();
+  const common::SymmetricEigen g = common::symmetric_eigen(G);
+  const double largest = g.values.maxCoeff();
   Eigen::Index first = 0;
-  while (first < g.eigenvalues().size() && g.eigenvalues()(first) <= rank_tolerance * largest) ++first;
-  const Eigen::Index rank = g.eigenvalues().size() - first;
-  Eigen::MatrixXd B = Phi * g.eigenvectors().rightCols(rank) *
-                      g.eigenvalues().tail(rank).cwiseSqrt().cwiseInverse().asDiagonal();
+  while (first < g.values.size() && g.values(first) <= rank_tolerance * largest) ++first;
+  const Eigen::Index rank = g.values.size() - first;
+  Eigen::MatrixXd B = Phi * g.vectors.rightCols(rank) * g.values.tail(rank).cwiseSqrt().cwiseInverse().asDiagonal();
   // 2) diagonalize K in that basis (a standard symmetric eigenproblem now), ascending
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> k(projected(K, B));
-  Phi = B * k.eigenvectors();
+  const common::SymmetricEigen k = common::symmetric_eigen(projected(K, B));
+  Phi = B * k.vectors;
   // 3) one re-orthonormalization pass against round-off growth in the products above
   Eigen::LLT<Eigen::MatrixXd> llt(projected(M, Phi));
   Phi = llt.matrixU().solve(Phi.transpose()).transpose();
-  canonicalize_modes(Phi, k.eigenvalues());
-  return k.eigenvalues();
+  canonicalize_modes(Phi, k.values);
+  return k.values;
 }
 
 void canonicalize_modes(Eigen::MatrixXd& Phi, const Eigen::VectorXd& omega2) {
@@ -107,8 +105,7 @@ void canonicalize_modes(Eigen::MatrixXd& Phi, const Eigen::VectorXd& omega2) {
     const Eigen::Index k = last - first;
     // Q with (Phi Q)^T G upper triangular, positive diagonal: unique for any basis of the cluster
     const Eigen::MatrixXd A = Phi.middleCols(first, k).transpose() * generic(k);
-    Eigen::HouseholderQR<Eigen::MatrixXd> qr(A);
-    Eigen::MatrixXd Q = qr.householderQ();
+    Eigen::MatrixXd Q = common::qr_orthogonal_factor(A);
     const Eigen::MatrixXd R = Q.transpose() * A;
     for (Eigen::Index j = 0; j < k; ++j)
       if (R(j, j) < 0) Q.col(j) *= -1;

@@ -1,6 +1,8 @@
 // Order elevation by collocation; see degree_elevation.hpp.
 #include "refine/degree_elevation.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
+
 #include <Eigen/LU>
 
 namespace isosid::prep {

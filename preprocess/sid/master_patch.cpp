@@ -2,6 +2,7 @@
 #include "sid/master_patch.hpp"
 
 #include "assemble/point_operator.hpp"
+#include "isosid/common/dense_decompositions.hpp"
 #include "refine/patch_refinement.hpp"
 
 #include <Eigen/LU>

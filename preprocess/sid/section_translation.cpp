@@ -1,9 +1,9 @@
 // Cross-section translation shares of modes; see section_translation.hpp.
 #include "sid/section_translation.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
 #include "reduce/sparse_products.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -23,12 +23,12 @@ SectionTranslation section_translation(const Eigen::MatrixXd& modes, const Eigen
     const Eigen::VectorXd d = node_points.row(i).transpose() - center;
     spread += lumped(i) * d * d.transpose();
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> principal(spread);
+  const common::SymmetricEigen principal = common::symmetric_eigen(spread);
   // without a distinct long axis (a ball, a cube) there are no beam modes, and the axis would be
   // round-off's choice
-  const Eigen::VectorXd moments = principal.eigenvalues();
+  const Eigen::VectorXd& moments = principal.values;
   if (dim < 2 || moments(dim - 1) < 1.05 * moments(dim - 2)) return {Eigen::Vector3d::Zero(), Eigen::MatrixXd()};
-  const Eigen::VectorXd axis = principal.eigenvectors().col(dim - 1);  // largest second moment
+  const Eigen::VectorXd axis = principal.vectors.col(dim - 1);  // largest second moment
   SectionTranslation out;
   out.shares = Eigen::MatrixXd::Zero(n, 3);
   out.long_axis.setZero();

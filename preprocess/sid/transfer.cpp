@@ -1,6 +1,7 @@
 // Coarse <-> fine transfer; see transfer.hpp.
 #include "sid/transfer.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
 #include "space/gauss_quadrature.hpp"
 #include "assemble/point_operator.hpp"
 #include "sid/sid_builder.hpp"

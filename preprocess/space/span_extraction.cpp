@@ -1,6 +1,7 @@
 // 1D and tensor Bezier extraction; see span_extraction.hpp.
 #include "space/span_extraction.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
 #include "space/bernstein.hpp"
 
 #include <Eigen/LU>

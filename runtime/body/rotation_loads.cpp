@@ -3,7 +3,7 @@
 // floating_body.hpp.
 #include "body/floating_body.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "isosid/common/dense_decompositions.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -51,7 +51,7 @@ void FloatingBody::form_rotation_bound() {
   // diagonal in the normal form; dense where a massless boundary is held with the modes)
   const MatrixXd held = sid_.Ke.M0.bottomRightCorner(n - first, n - first);
   const double softest = stiffness_.is_diagonal() ? held.diagonal().minCoeff()
-                                                  : Eigen::SelfAdjointEigenSolver<MatrixXd>(held, Eigen::EigenvaluesOnly).eigenvalues()(0);
+                                                  : common::symmetric_eigenvalues(held)(0);
   if (!(softest > 0)) return;
   const Index nv = std::min(n_inertial_, n_dynamic_);
   const Eigen::Map<const MatrixXd> ge(sid_.Ge.M0.data(), 3 * n, nv);

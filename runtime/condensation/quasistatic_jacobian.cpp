@@ -1,6 +1,8 @@
 // Stiffness of the quasistatic modes and its Newton Jacobian; see quasistatic_jacobian.hpp.
 #include "condensation/quasistatic_jacobian.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -36,7 +38,7 @@ QuasistaticJacobian::QuasistaticJacobian(const std::vector<Eigen::MatrixXd>& blo
     const Eigen::LLT<Eigen::MatrixXd> llt(K);
     if (llt.info() != Eigen::Success) dense_inverse_.resize(0, 0);
     if (dense_inverse_.size()) dense_inverse_.block(first, first, nb, nb) = llt.solve(Eigen::MatrixXd::Identity(nb, nb));
-    smallest_eigenvalue_ = std::min(smallest_eigenvalue_, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K, Eigen::EigenvaluesOnly).eigenvalues()(0));
+    smallest_eigenvalue_ = std::min(smallest_eigenvalue_, common::symmetric_eigenvalues(K)(0));
   }
   smallest_eigenvalue_ = std::max(0.0, smallest_eigenvalue_);
   used_rows_.resize(std::size_t(n));

@@ -8,6 +8,8 @@
 // of a step alternate between a handful of active sets: scene A finds 80 % of its solves
 // among the last eight).
 #pragma once
+#include "isosid/common/dense_decompositions.hpp"
+
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 

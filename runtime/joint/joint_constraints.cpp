@@ -1,10 +1,10 @@
 // Joint reactions by Lagrange multipliers; see joint_constraints.hpp.
 #include "joint/joint_constraints.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
 #include "isosid/common/number_text.hpp"
 #include "isosid/format/error.hpp"
 
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 
@@ -66,11 +66,11 @@ std::vector<Eigen::Index> JointConstraints::refuse_redundant_rows(const std::vec
     for (std::size_t b = 0; b < moving.size(); ++b) W(Eigen::Index(a), Eigen::Index(b)) = response_(moving[a], moving[b]);
   // scaled to unit diagonal: rows of forces and of torques compare alike
   const Eigen::VectorXd scale = W.diagonal().cwiseAbs().cwiseSqrt().cwiseInverse();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(scale.asDiagonal() * (0.5 * (W + W.transpose())) * scale.asDiagonal());
-  const Eigen::VectorXd& values = eig.eigenvalues();
+  const common::SymmetricEigen eig = common::symmetric_eigen(scale.asDiagonal() * (0.5 * (W + W.transpose())) * scale.asDiagonal());
+  const Eigen::VectorXd& values = eig.values;
   if (values.size() == 0 || values(0) > 1e-9 * values(values.size() - 1)) return moving;
   // the joints with a share in the dependent combination
-  const Eigen::VectorXd null = eig.eigenvectors().col(0).cwiseAbs();
+  const Eigen::VectorXd null = eig.vectors.col(0).cwiseAbs();
   std::string names, first;
   for (std::size_t k = 0; k < joints_.size(); ++k) {
     double share = 0;
@@ -115,7 +115,7 @@ void JointConstraints::apply(const double* y, const Eigen::Vector3d& gravity, st
   if (moving_lambda_.allFinite())
     for (Eigen::Index a = 0; a < m; ++a) lambda_(moving_[std::size_t(a)]) = moving_lambda_(a);
   else
-    lambda_ = response_.completeOrthogonalDecomposition().solve(-residual_);
+    lambda_ = common::minimum_norm_solve(response_, -residual_);
   for (std::size_t k = 0; k < joints_.size(); ++k)
     for (int row = 0; row < joints_[k].rows(); ++row)
       for (int s = 0; s < 2; ++s)

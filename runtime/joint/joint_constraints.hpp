@@ -4,6 +4,7 @@
 // through the body's own equations of motion (FloatingBody::derivatives) once, giving the
 // rows' response W = G M^-1 G^T, and W lambda = -(the rows' acceleration without reactions).
 #pragma once
+#include "isosid/common/dense_decompositions.hpp"
 #include "joint/joint.hpp"
 
 namespace isosid::run {

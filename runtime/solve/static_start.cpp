@@ -1,6 +1,7 @@
 // Static start of flexible bodies; see static_start.hpp.
 #include "solve/static_start.hpp"
 
+#include "isosid/common/dense_decompositions.hpp"
 #include "isosid/format/error.hpp"
 
 #include <algorithm>
@@ -133,7 +134,7 @@ void settle_static_start(const MultibodySystem& system, const std::vector<bool>&
     }
     // the least change that solves the linearized equations: the frame's free motions (a
     // pendulum's swing) stay as placed
-    x += J.completeOrthogonalDecomposition().solve(-F);
+    x += common::minimum_norm_solve(J, -F);
     if (!x.allFinite()) break;
     equations(x, F);
   }
