@@ -1,14 +1,14 @@
 # `cmake --install build [--prefix P]` (scripts/install): the five programs; the libraries with
 # their headers and a CMake package (find_package(isosid), targets isosid::isosid_runtime,
-# isosid::isosid_prep, isosid::isosid_format, isosid::isosid_common); the Python package in
-# Debian's dist-packages layout.
+# isosid::isosid_prep, isosid::isosid_format, isosid::isosid_format_tools, isosid::isosid_common);
+# the Python package in Debian's dist-packages layout.
 include(CMakePackageConfigHelpers)
 
 install(TARGETS isosid-prep isosid-run isosid-info isosid-diff isosid-export RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 if(TARGET isosid-sweep)
   install(TARGETS isosid-sweep RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
-install(TARGETS isosid_format isosid_common isosid_prep isosid_runtime isosid_options EXPORT isosidTargets
+install(TARGETS isosid_format isosid_format_tools isosid_common isosid_prep isosid_runtime isosid_options EXPORT isosidTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}/isosid)
 
 # headers: format's and common's as isosid/format, isosid/common; the runtime's and the
