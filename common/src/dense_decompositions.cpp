@@ -1,3 +1,4 @@
+// Eigen's dense decompositions on MatrixXd, instantiated once; see dense_decompositions.hpp.
 #include "isosid/common/dense_decompositions.hpp"
 
 template class Eigen::PartialPivLU<Eigen::MatrixXd>;
