@@ -15,6 +15,7 @@
 #include <deque>
 #include <mutex>
 #include <thread>
+#include <time.h>
 #include <unistd.h>
 
 namespace isosid::sweep {
@@ -24,12 +25,26 @@ constexpr int kReport = 1;  ///< rank -> 0: a JSON report (below), asking for th
 constexpr int kAssign = 2;  ///< 0 -> rank: the next case, or -1: stop
 
 /// What a rank reports with each request: "case" it ran (-1: none yet), "outcome" ("row": its
-/// row follows under "row"; "interrupted": hand it out again), and "stopping" (a signal reached
-/// this rank: send it no more cases).
-nlohmann::json report(int index, const nlohmann::json& row, bool stopping) {
-  if (index < 0) return {{"case", -1}, {"outcome", "none"}, {"stopping", stopping}};
-  if (row["status"] == "interrupted") return {{"case", index}, {"outcome", "interrupted"}, {"stopping", stopping}};
-  return {{"case", index}, {"outcome", "row"}, {"row", row}, {"stopping", stopping}};
+/// row follows under "row"; "interrupted": hand it out again), "stopping" (a signal reached
+/// this rank: send it no more cases), and "waited_s", how long it waited for the answer to its
+/// previous request (-1: none yet).
+nlohmann::json report(int index, const nlohmann::json& row, bool stopping, double waited_s) {
+  nlohmann::json r = {{"case", index}, {"outcome", "none"}, {"stopping", stopping}, {"waited_s", waited_s}};
+  if (index < 0) return r;
+  r["outcome"] = row["status"] == "interrupted" ? "interrupted" : "row";
+  if (r["outcome"] == "row") r["row"] = row;
+  return r;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The calling thread's CPU time [s].
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 /// Rank 0's side: the queue of cases and the other ranks' reports, answered by a thread of
@@ -74,6 +89,12 @@ public:
     for (const nlohmann::json& row : take_rows()) on_row(row);
   }
 
+  /// What answering cost so far (final after drain()).
+  DispatchCost cost() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return cost_;
+  }
+
 private:
   int next_locked() {
     if (work_.stop_requested() || queue_.empty()) return -1;
@@ -93,6 +114,8 @@ private:
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
         continue;
       }
+      const auto arrived = std::chrono::steady_clock::now();
+      const double cpu_at_arrival = thread_cpu_seconds();
       int size = 0;
       MPI_Get_count(&status, MPI_CHAR, &size);
       std::string text(std::size_t(size), '\0');
@@ -109,15 +132,28 @@ private:
         done = running_ == 0;
       }
       MPI_Send(&assigned, 1, MPI_INT, status.MPI_SOURCE, kAssign, MPI_COMM_WORLD);
+      const double busy = seconds_since(arrived), cpu = thread_cpu_seconds() - cpu_at_arrival;
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        ++cost_.requests;
+        cost_.cpu_s += cpu;
+        cost_.busy_s += busy;
+        cost_.busiest_s = std::max(cost_.busiest_s, busy);
+        if (const double waited = r["waited_s"].get<double>(); waited >= 0) {
+          ++cost_.waits;
+          cost_.waited_s += waited;
+        }
+      }
       if (done) return;
     }
   }
 
   const CaseWork& work_;
-  std::mutex mutex_;  ///< guards the queue, the rows and the count
+  std::mutex mutex_;  ///< guards the queue, the rows, the count and the cost
   std::deque<int> queue_;
   std::vector<nlohmann::json> rows_;
   int running_;  ///< other ranks not yet told to stop
+  DispatchCost cost_;
   std::atomic<bool> quit_{false};
   std::thread thread_;
 };
@@ -170,7 +206,7 @@ void Ranks::abort(int status) const {
   std::exit(status);
 }
 
-void run_cases(const Ranks& ranks, const CaseWork& work, const std::vector<int>& todo, const std::function<void(const nlohmann::json&)>& on_row) {
+DispatchCost run_cases(const Ranks& ranks, const CaseWork& work, const std::vector<int>& todo, const std::function<void(const nlohmann::json&)>& on_row) {
   if (ranks.rank() == 0) {
     Dispatcher dispatcher(ranks, work, todo);
     const bool others = ranks.size() > 1;
@@ -180,16 +216,19 @@ void run_cases(const Ranks& ranks, const CaseWork& work, const std::vector<int>&
       for (const nlohmann::json& r : dispatcher.take_rows()) on_row(r);
     }
     if (others) dispatcher.drain(on_row);
-    return;
+    return dispatcher.cost();
   }
   int ran = -1;
   nlohmann::json row;
+  double waited = -1;
   for (;;) {
-    const std::string text = report(ran, row, work.stop_requested()).dump();
+    const std::string text = report(ran, row, work.stop_requested(), waited).dump();
+    const auto sent = std::chrono::steady_clock::now();
     MPI_Send(text.data(), int(text.size()), MPI_CHAR, 0, kReport, MPI_COMM_WORLD);
     int assigned = -1;
     MPI_Recv(&assigned, 1, MPI_INT, 0, kAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    if (assigned < 0) return;
+    waited = seconds_since(sent);
+    if (assigned < 0) return {};
     row = run_one(work, assigned, work.stop_requested);
     ran = assigned;
   }

@@ -43,11 +43,25 @@ struct CaseWork {
   std::function<bool()> stop_requested;  ///< a signal: the running cases stop, no new case starts
 };
 
+/// What handing out the cases cost rank 0 (counted on rank 0 under mpirun): the dispatcher
+/// thread's CPU time per request (receiving a report, parsing its row, answering), against
+/// which the cases' own time sets how many ranks one dispatcher serves; its wall time per
+/// request (more where the thread waits for a core); and the time a rank waited for each
+/// answer, as the ranks measured it (it includes the thread's polling).
+struct DispatchCost {
+  long requests = 0;   ///< reports answered
+  double cpu_s = 0;    ///< the thread's CPU time from a report's arrival to its answer, summed
+  double busy_s = 0;   ///< the same in wall time
+  double busiest_s = 0;  ///< the longest of those
+  long waits = 0;      ///< answers whose wait a rank reported
+  double waited_s = 0;  ///< the ranks' time from sending a report to its answer, summed
+};
+
 /// Runs the cases numbered in `todo` (rank 0's list; the other ranks' is ignored) over all
 /// ranks. On rank 0, `on_row` receives every case's row: its own as each ends, the other ranks'
 /// (sent with their next request) between its cases and after its last; it returns once every
 /// rank has stopped. A rank a signal reached stops taking cases, and a case it interrupted goes
-/// back to the queue.
-void run_cases(const Ranks& ranks, const CaseWork& work, const std::vector<int>& todo, const std::function<void(const nlohmann::json&)>& on_row);
+/// back to the queue. Returns, on rank 0, what the dispatching cost.
+DispatchCost run_cases(const Ranks& ranks, const CaseWork& work, const std::vector<int>& todo, const std::function<void(const nlohmann::json&)>& on_row);
 
 }  // namespace isosid::sweep

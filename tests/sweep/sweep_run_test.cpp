@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -164,6 +165,14 @@ TEST_CASE("sweep: mpirun -np 2 gives the table of one process", "[sweep][mpi]") 
   REQUIRE(r.exit_status == 0);
   CHECK_THAT(r.err, Contains("10 cases, 10 to run on 2 ranks"));
   CHECK(results_of(dir.path("two/study.csv")) == results_of(dir.path("one/study.csv")));
+  // what dispatching cost: rank 1 asked once before its first case and once after each, and
+  // the last rewrite of the table held every row
+  std::smatch m;
+  REQUIRE(std::regex_search(r.err, m, std::regex(R"(dispatch: (\d+) requests answered with ([0-9.e+-]+) ms CPU each)")));
+  CHECK(std::stoi(m[1]) >= 1);
+  CHECK(std::stoi(m[1]) <= 11);
+  CHECK(std::stod(m[2]) > 0);
+  CHECK_THAT(r.err, Contains("(the last: 10 rows in"));
 }
 
 TEST_CASE("sweep: cases on 2 ranks build each distinct SID once", "[sweep][mpi]") {
