@@ -69,6 +69,8 @@ int main(int argc, char** argv) {
                    "SURFACE:U[,V]: centre the model's [refinement.hierarchical] (and a Craig-Bampton interface on that "
                    "surface) at tangential parameter(s) U[,V] of contact surface SURFACE (isosid-run asks so at an impact)");
     app.add_option("--refine-width", refine_width, "with --refine-at: physical width of the refined region, m");
+    bool check_only = false;
+    app.add_flag("--check", check_only, "only read and check the model file (and the options above): builds and writes nothing");
     double memory_limit_gib = 0;
     app.add_option("--memory-limit", memory_limit_gib,
                    "GiB the preparation may use (default: what the machine has available); a model whose factorization or "
@@ -78,7 +80,9 @@ int main(int argc, char** argv) {
     // flags that cannot all be honoured are refused, not some of them silently dropped
     if (n_modes > 0 && app.count("--output")) throw format::InputError(model_file, "--modes", "reports only; it writes no SID (drop -o)");
     if (coarse && app.count("--refine-at")) throw format::InputError(model_file, "--coarse", "and --refine-at exclude each other");
-    if (n_modes == 0) output = prep::sid_output(model_file, output, "-o");  // checked before any work
+    if (check_only && (n_modes > 0 || app.count("--output")))
+      throw format::InputError(model_file, "--check", "builds nothing: drop " + std::string(n_modes > 0 ? "--modes" : "-o"));
+    if (n_modes == 0 && !check_only) output = prep::sid_output(model_file, output, "-o");  // checked before any work
 
     if (memory_limit_gib > 0) prep::set_memory_limit(memory_limit_gib * 1024.0 * 1024.0 * 1024.0);
     prep::ModelSpec spec = prep::read_model_file(model_file);  // progress starts on valid input (a meshed body is meshed here: gmsh takes well under a second)
@@ -98,6 +102,7 @@ int main(int argc, char** argv) {
         throw format::InputError(model_file, "--coarse", "the model has no [refinement.hierarchical]");
       spec = prep::coarse_model_spec(std::move(spec));
     }
+    if (check_only) return 0;
     prep::StderrProgress progress("isosid-prep");
     prep::StageObserver& observer = quiet ? prep::no_progress() : progress;
     if (n_modes > 0) {

@@ -70,7 +70,8 @@ PrepProcess start_prep(const std::string& model, const std::string& sid, const s
   const std::string prep = find_prep();
   if (!quiet) std::fprintf(stderr, "isosid-run: building %s from %s%s\n", sid.c_str(), model.c_str(), what.c_str());
   // everything the child needs is built before fork: only async-signal-safe calls after it
-  std::vector<std::string> arguments = {prep, model, "-o", sid};
+  std::vector<std::string> arguments = {prep, model};
+  if (!sid.empty()) arguments.insert(arguments.end(), {"-o", sid});
   if (quiet) arguments.push_back("-q");
   arguments.insert(arguments.end(), extra.begin(), extra.end());
   std::vector<const char*> args;
@@ -140,12 +141,17 @@ void finish_prep(PrepProcess& process) {
   if (code != 0)
     throw format::ComputationError("isosid-prep failed on " + model + " (exit " + std::to_string(code) + ")" +
                                    (message.empty() ? "" : ": " + message));
-  record_sid_digest(process.sid);
+  if (!process.sid.empty()) record_sid_digest(process.sid);
 }
 
 void run_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,
               const std::string& what) {
   PrepProcess process = start_prep(model, sid, extra, quiet, what);
+  finish_prep(process);
+}
+
+void check_model(const std::string& model) {
+  PrepProcess process = start_prep(model, "", {"--check"}, true, "");
   finish_prep(process);
 }
 

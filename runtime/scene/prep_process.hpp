@@ -29,7 +29,7 @@ struct PrepProcess {
 /// The cores this process may run on (its CPU affinity), at least 1.
 int usable_cores();
 
-/// Starts isosid-prep on `model`, writing `sid`, with further options `extra` (e.g. --coarse);
+/// Starts isosid-prep on `model`, writing `sid` (none: empty), with further options `extra` (e.g. --coarse);
 /// `threads` > 0 limits its OpenMP assembly and its BLAS to that many threads (for builds side
 /// by side), unless the user set OMP_NUM_THREADS or OPENBLAS_NUM_THREADS.
 PrepProcess start_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,
@@ -43,5 +43,9 @@ void finish_prep(PrepProcess& process);
 /// start_prep, then finish_prep (`what` says why it runs, in the progress line).
 void run_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,
               const std::string& what);
+
+/// isosid-prep --check on `model`: returns if it reads as a valid model, else throws its
+/// InputError (or a ComputationError when isosid-prep cannot run).
+void check_model(const std::string& model);
 
 }  // namespace isosid::run

@@ -55,6 +55,19 @@ TEST_CASE("isosid-prep -o onto a FIFO or a folder is refused before the work and
   CHECK(std::filesystem::is_directory(dir.path("folder")));
 }
 
+TEST_CASE("isosid-prep --check reads and checks a model and writes nothing", "[prep][command-line]") {
+  const test::ScratchDir dir("prep-check");
+  std::filesystem::copy_file(kSphere, dir.path("s.model.toml"));
+  const auto valid = test::run_program(kPrep + " --check " + dir.path("s.model.toml"));
+  CHECK(valid.exit_status == 0);
+  CHECK(valid.err.empty());
+  CHECK(std::distance(std::filesystem::directory_iterator(dir.path("")), std::filesystem::directory_iterator()) == 1);
+  std::ofstream(dir.path("s.model.toml"), std::ios::app) << "\n[damping]\nkappa = -1.0\n";  // a second [damping] or a bad value
+  test::check_one_line_exit(test::run_program(kPrep + " --check " + dir.path("s.model.toml")), 2, "s.model.toml");
+  test::check_one_line_exit(test::run_program(kPrep + " --check --modes 4 " + kSphere), 2, "--check: builds nothing: drop --modes");
+  test::check_one_line_exit(test::run_program(kPrep + " --check " + kSphere + " -o " + dir.path("x.sid.h5")), 2, "--check: builds nothing: drop -o");
+}
+
 TEST_CASE("isosid-prep prints the project's version", "[prep][command-line]") {
   const auto r = test::run_program(kPrep + " --version");
   CHECK(r.exit_status == 0);
