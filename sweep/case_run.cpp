@@ -2,10 +2,14 @@
 #include "case_run.hpp"
 
 #include "isosid/format/error.hpp"
+#include "model_settings.hpp"
 #include "output/run_folder.hpp"
 #include "pipeline/run_scene.hpp"
+#include "scene/prep_process.hpp"
+#include "study_table.hpp"
 
 #include <charconv>
+#include <map>
 #include <new>
 
 namespace isosid::sweep {
@@ -25,9 +29,22 @@ nlohmann::json row_of(const Case& c, const std::string& status, int exit_class, 
 
 }  // namespace
 
-std::string case_input_problem(const Study& study, const Case& c) {
+std::string case_input_problem(const Study& study, const Case& c, const std::string& study_dir) {
+  static std::map<std::string, std::string> checked;  // model copy -> its problem: each checked once
   try {
-    run::read_scene_file(study.scene_file, c.settings);
+    const CaseScene scene = case_scene(study, c, study_dir);
+    run::read_scene_file(study.scene_file, scene.settings);
+    for (const std::string& copy : scene.model_copies) {
+      if (!checked.count(copy)) {
+        try {
+          run::check_model(copy);
+          checked[copy] = "";
+        } catch (const format::InputError& e) {
+          checked[copy] = e.what();
+        }
+      }
+      if (!checked[copy].empty()) return checked[copy];
+    }
     return "";
   } catch (const format::InputError& e) {
     return e.what();
@@ -69,10 +86,11 @@ std::vector<std::string> default_collect(const Study& study) {
   return out;
 }
 
-nlohmann::json run_case(const Study& study, const Case& c, const std::string& folder, const std::vector<std::string>& collect,
+nlohmann::json run_case(const Study& study, const Case& c, const std::string& study_dir, const std::vector<std::string>& collect,
                         const std::function<bool()>& stop_requested) {
   try {
-    run::Scene scene = run::read_scene_file(study.scene_file, c.settings);
+    const std::string folder = case_folder(study_dir, c.index);
+    run::Scene scene = run::read_scene_file(study.scene_file, case_scene(study, c, study_dir).settings);
     run::RunFolder results(folder, scene);
     const run::RunResult result = run::run_scene(std::move(scene), results, {true, stop_requested});
     if (!result.started || result.outcome.status == "interrupted") return row_of(c, "interrupted", 130, "");

@@ -161,7 +161,7 @@ private:
 /// Runs case `index` on this rank and writes its row, unless a signal interrupted it.
 nlohmann::json run_one(const CaseWork& work, int index, const std::function<bool()>& at_step) {
   const Case& c = work.cases[std::size_t(index)];
-  nlohmann::json row = run_case(work.study, c, case_folder(work.dir, index), work.collect, at_step);
+  nlohmann::json row = run_case(work.study, c, work.dir, work.collect, at_step);
   if (row["status"] != "interrupted") write_row(work.dir, row);
   return row;
 }

@@ -167,8 +167,8 @@ int run_study(const sweep::Ranks& ranks, const std::string& study_file, std::str
       if (!quiet) std::fprintf(stderr, "isosid-sweep: case %d is done (its row.json); nothing to run\n", only_case);
       return 0;
     }
-    const std::string problem = sweep::case_input_problem(study, c);
-    const nlohmann::json row = problem.empty() ? sweep::run_case(study, c, sweep::case_folder(out_dir, only_case), collect, work.stop_requested)
+    const std::string problem = sweep::case_input_problem(study, c, out_dir);
+    const nlohmann::json row = problem.empty() ? sweep::run_case(study, c, out_dir, collect, work.stop_requested)
                                                : sweep::refused_case(c, problem);
     if (row["status"] == "interrupted") return 128 + int(g_stop_signal);
     sweep::write_row(out_dir, row);
@@ -192,7 +192,7 @@ int run_study(const sweep::Ranks& ranks, const std::string& study_file, std::str
         record->add(*row, false);  // done by an earlier start of the study: never run twice
         continue;
       }
-      if (const std::string problem = sweep::case_input_problem(study, c); !problem.empty()) {
+      if (const std::string problem = sweep::case_input_problem(study, c, out_dir); !problem.empty()) {
         const nlohmann::json row = sweep::refused_case(c, problem);
         sweep::write_row(out_dir, row);
         record->add(row, false);

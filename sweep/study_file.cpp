@@ -50,12 +50,22 @@ std::vector<std::string> spaced(double lo, double hi, int count, bool log_scale)
   return out;
 }
 
+/// A key's syntax: names between dots, and `model.<body>.<key>` with both parts.
+void check_key(const common::TomlView& p, const std::string& key) {
+  if (key.empty() || key.front() == '.' || key.back() == '.' || key.find("..") != std::string::npos)
+    p.fail("key", "'" + key + "' is not a dotted key (e.g. flexible_body.0.velocity, model.beam.material.density)");
+  if (key.rfind("model.", 0) == 0 && key.find('.', 6) == std::string::npos)
+    p.fail("key", "'" + key + "': a model key is model.<body>.<key into its model file>");
+}
+
 /// `raw` is the [[parameter]] table `p` views (its values may be of any TOML type).
 Parameter read_parameter(const common::TomlView& p, const toml::table& raw, Sampling sampling) {
   p.allow_only({"key", "values", "range", "count", "spacing"});
   Parameter out;
-  out.key = p.string("key");
-  if (out.key.empty()) p.fail("key", "needs a dotted key into the scene, e.g. flexible_body.0.velocity");
+  const bool together = raw.get_as<toml::array>("key") != nullptr;
+  out.keys = together ? p.strings("key") : std::vector<std::string>{p.string("key")};
+  if (out.keys.empty()) p.fail("key", "needs at least one dotted key");
+  for (const std::string& key : out.keys) check_key(p, key);
   if (p.has("values") == p.has("range")) p.fail("values", "give either values (a list) or a range [from, to]");
   const std::string spacing = p.string("spacing", "linear");
   if (spacing != "linear" && spacing != "log") p.fail("spacing", "must be \"linear\" or \"log\", is \"" + spacing + "\"");
@@ -64,9 +74,22 @@ Parameter read_parameter(const common::TomlView& p, const toml::table& raw, Samp
     if (sampling == Sampling::LatinHypercube) p.fail("values", "a Latin hypercube samples ranges: give range = [from, to]");
     const toml::array* values = raw.get_as<toml::array>("values");
     if (!values || values->empty()) p.fail("values", "must be a non-empty list");
-    for (const toml::node& v : *values) out.values.push_back(value_text(v));
+    for (const toml::node& v : *values) {
+      if (!together) {
+        out.values.push_back({value_text(v)});
+        continue;
+      }
+      const toml::array* set = v.as_array();  // keys set together: one list of values per case
+      if (!set || set->size() != out.keys.size())
+        p.fail("values", "with " + std::to_string(out.keys.size()) + " keys set together, each value is a list of " +
+                             std::to_string(out.keys.size()) + " (one per key)");
+      std::vector<std::string> texts;
+      for (const toml::node& x : *set) texts.push_back(value_text(x));
+      out.values.push_back(texts);
+    }
     return out;
   }
+  if (together) p.fail("range", "keys set together take values (a list of lists), not a range");
   const std::vector<double> range = p.numbers("range");
   if (range.size() != 2) p.fail("range", "must be [from, to]");
   out.lo = range[0];
@@ -76,11 +99,17 @@ Parameter read_parameter(const common::TomlView& p, const toml::table& raw, Samp
     if (p.has("count")) p.fail("count", "a Latin hypercube takes study.samples points, not a count per parameter");
     return out;
   }
-  out.values = spaced(out.lo, out.hi, p.integer_in("count", 1, 100000), out.log_scale);
+  for (std::string& v : spaced(out.lo, out.hi, p.integer_in("count", 1, 100000), out.log_scale)) out.values.push_back({std::move(v)});
   return out;
 }
 
 }  // namespace
+
+std::string Parameter::name() const {
+  std::string out;
+  for (const std::string& k : keys) out += (out.empty() ? "" : " + ") + k;
+  return out;
+}
 
 Study read_study_file(const std::string& path) {
   const toml::table root = common::parse_toml_file(path);
@@ -105,13 +134,16 @@ Study read_study_file(const std::string& path) {
   for (std::size_t i = 0; i < parameters.size(); ++i)
     s.parameters.push_back(read_parameter(parameters[i], *root["parameter"][i].as_table(), s.sampling));
   if (s.parameters.empty()) top.fail("parameter", "a study needs at least one [[parameter]]");
-  for (std::size_t i = 0; i < s.parameters.size(); ++i)
-    for (std::size_t j = 0; j < i; ++j)
-      if (s.parameters[i].key == s.parameters[j].key) top.fail("parameter", "key '" + s.parameters[i].key + "' is varied twice");
+  std::vector<std::string> varied;
+  for (const Parameter& p : s.parameters)
+    for (const std::string& key : p.keys) {
+      if (std::find(varied.begin(), varied.end(), key) != varied.end()) top.fail("parameter", "key '" + key + "' is varied twice");
+      varied.push_back(key);
+    }
   if (s.sampling == Sampling::Zip)
     for (const Parameter& p : s.parameters)
       if (p.values.size() != s.parameters.front().values.size())
-        top.fail("parameter", "sampling = \"zip\" needs as many values of '" + p.key + "' as of '" + s.parameters.front().key + "'");
+        top.fail("parameter", "sampling = \"zip\" needs as many values of '" + p.name() + "' as of '" + s.parameters.front().name() + "'");
   if (s.sampling == Sampling::Grid) {
     double cases = 1;
     for (const Parameter& p : s.parameters) cases *= double(p.values.size());
@@ -146,15 +178,18 @@ std::vector<Case> plan_cases(const Study& study) {
     }
     for (int i = 0; i < n; ++i) {
       Case c{i, {}};
-      for (std::size_t j = 0; j < np; ++j) c.settings.push_back({study.parameters[j].key, columns[j][std::size_t(i)]});
+      for (std::size_t j = 0; j < np; ++j) c.settings.push_back({study.parameters[j].keys.front(), columns[j][std::size_t(i)]});
       cases.push_back(c);
     }
     return cases;
   }
+  const auto set = [](Case& c, const Parameter& p, std::size_t value) {
+    for (std::size_t k = 0; k < p.keys.size(); ++k) c.settings.push_back({p.keys[k], p.values[value][k]});
+  };
   if (study.sampling == Sampling::Zip) {
     for (std::size_t i = 0; i < study.parameters.front().values.size(); ++i) {
       Case c{int(i), {}};
-      for (const Parameter& p : study.parameters) c.settings.push_back({p.key, p.values[i]});
+      for (const Parameter& p : study.parameters) set(c, p, i);
       cases.push_back(c);
     }
     return cases;
@@ -162,7 +197,7 @@ std::vector<Case> plan_cases(const Study& study) {
   std::vector<std::size_t> at(np, 0);  // a mixed-radix counter, the last parameter fastest
   for (int index = 0;; ++index) {
     Case c{index, {}};
-    for (std::size_t j = 0; j < np; ++j) c.settings.push_back({study.parameters[j].key, study.parameters[j].values[at[j]]});
+    for (std::size_t j = 0; j < np; ++j) set(c, study.parameters[j], at[j]);
     cases.push_back(c);
     std::size_t j = np;
     while (j > 0 && ++at[j - 1] == study.parameters[j - 1].values.size()) at[--j] = 0;

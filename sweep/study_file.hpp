@@ -15,11 +15,15 @@ enum class Sampling {
   LatinHypercube,  ///< `samples` points, one per stratum of each parameter's range, seeded
 };
 
+/// One varied quantity: one dotted key, or several keys set together (an impact point that
+/// moves the sphere and the beam's contact region at once). A key is into the scene, or
+/// `model.<body>.<key>` into the model file of the scene's body <body> (see model_settings).
 struct Parameter {
-  std::string key;                  ///< dotted key into the scene
-  std::vector<std::string> values;  ///< TOML value texts (grid and zip)
-  double lo = 0, hi = 0;            ///< range (Latin hypercube)
-  bool log_scale = false;           ///< range sampled in log (positive ends)
+  std::vector<std::string> keys;                 ///< one, or several set together
+  std::vector<std::vector<std::string>> values;  ///< per value, one TOML text per key (grid and zip)
+  double lo = 0, hi = 0;                         ///< range, one key (Latin hypercube)
+  bool log_scale = false;                        ///< range sampled in log (positive ends)
+  std::string name() const;                      ///< the key, or the keys joined by " + "
 };
 
 struct Study {
@@ -35,7 +39,7 @@ struct Study {
 /// Reads and checks a study file (InputError naming file and field).
 Study read_study_file(const std::string& path);
 
-/// One case: its number (from 0) and its values, one per parameter, as TOML text.
+/// One case: its number (from 0) and its values, one per key of every parameter, as TOML text.
 struct Case {
   int index = 0;
   std::vector<common::TomlOverride> settings;

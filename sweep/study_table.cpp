@@ -71,7 +71,8 @@ std::vector<Column> columns_of(const Study& study, const std::vector<std::string
   add("exit_class", [](const nlohmann::json& r) { return r["exit_class"]; });
   add("message", [](const nlohmann::json& r) { return r["message"]; });
   for (const Parameter& p : study.parameters)
-    add(p.key, [&](const nlohmann::json& r) { return setting_cell(r["settings"].value(p.key, nlohmann::json())); });
+    for (const std::string& key : p.keys)
+      add(key, [&](const nlohmann::json& r) { return setting_cell(r["settings"].value(key, nlohmann::json())); });
   for (const std::string& path : collect)
     add(path, [&](const nlohmann::json& r) { return r["collected"].contains(path) ? r["collected"][path] : nlohmann::json(); });
   add("wall_time_s", [](const nlohmann::json& r) { return r["wall_time_s"]; });

@@ -45,6 +45,23 @@ TEST_CASE("sweep: a grid's cases vary the last parameter fastest, zip pairs valu
   CHECK(zipped[2].settings[1].value == "-3");
 }
 
+TEST_CASE("sweep: keys set together take one list of values per case, each key its own setting", "[sweep][unit]") {
+  const test::ScratchDir dir("study_together");
+  const sweep::Study study = study_of(dir, "[[parameter]]\nkey = [\"p.0\", \"model.beam.t\", \"model.beam.i\"]\n"
+                                           "values = [[0.1, 0.5, [1, 2]], [0.2, 0.6, [3, 4]]]\n[[parameter]]\nkey = \"v\"\nvalues = [1, 2, 3]\n");
+  REQUIRE(study.parameters.size() == 2);
+  CHECK(study.parameters[0].name() == "p.0 + model.beam.t + model.beam.i");
+  const std::vector<sweep::Case> cases = sweep::plan_cases(study);
+  REQUIRE(cases.size() == 6);  // the group is one parameter of the grid
+  REQUIRE(cases[4].settings.size() == 4);
+  CHECK(cases[4].settings[0].key == "p.0");
+  CHECK(cases[4].settings[0].value == "0.2");
+  CHECK(cases[4].settings[1].value == "0.6");
+  CHECK(cases[4].settings[2].key == "model.beam.i");
+  CHECK(cases[4].settings[2].value == "[ 3, 4 ]");
+  CHECK(cases[4].settings[3].value == "2");
+}
+
 TEST_CASE("sweep: a Latin hypercube puts one point in every stratum of each range, the same for the same seed", "[sweep][unit]") {
   const test::ScratchDir dir("study_lhs");
   const std::string text = "sampling = \"latin_hypercube\"\nsamples = 40\nseed = 7\n[[parameter]]\nkey = \"v\"\nrange = [0.1, 0.5]\n"
@@ -68,10 +85,10 @@ TEST_CASE("sweep: a Latin hypercube puts one point in every stratum of each rang
 
 TEST_CASE("sweep: values in a summary by dotted path, list entries by number, name or label", "[sweep][unit]") {
   const nlohmann::json summary = nlohmann::json::parse(R"({"contacts": [{"name": "impact", "peak_force_n": 51.7,
-      "impact_modes": [{"label": "1F", "energy_ratio": 0.02}, {"label": "3F", "energy_ratio": 0.01}]}], "steps": 9})");
+      "impact_modes": {"modes": [{"label": "1F", "energy_ratio": 0.02}, {"label": "3F", "energy_ratio": 0.01}]}}], "steps": 9})");
   CHECK(sweep::value_at(summary, "contacts.impact.peak_force_n") == 51.7);
   CHECK(sweep::value_at(summary, "contacts.0.peak_force_n") == 51.7);
-  CHECK(sweep::value_at(summary, "contacts.impact.impact_modes.3F.energy_ratio") == 0.01);
+  CHECK(sweep::value_at(summary, "contacts.impact.impact_modes.modes.3F.energy_ratio") == 0.01);
   CHECK(sweep::value_at(summary, "steps") == 9);
   CHECK(sweep::value_at(summary, "contacts.other.peak_force_n").is_null());
   CHECK(sweep::value_at(summary, "steps.x").is_null());
@@ -98,6 +115,12 @@ TEST_CASE("sweep: study files that cannot make a study are refused naming the fi
   refused("[[parameter]]\nkey = \"a\"\nrange = [1, 2]\ncount = 100000\n[[parameter]]\nkey = \"b\"\nrange = [1, 2]\ncount = 100\n",
           "more than 1e6");
   refused("[[parameter]]\nkey = \"a\"\nvalues = [1]\nstep = 2\n", "step");
+  refused("[[parameter]]\nkey = [\"a\", \"b\"]\nvalues = [[1, 2], [3]]\n", "with 2 keys set together, each value is a list of 2");
+  refused("[[parameter]]\nkey = [\"a\", \"b\"]\nvalues = [1, 2]\n", "each value is a list of 2 (one per key)");
+  refused("[[parameter]]\nkey = [\"a\", \"b\"]\nrange = [1, 2]\ncount = 2\n", "keys set together take values");
+  refused("[[parameter]]\nkey = [\"a\", \"b\"]\nvalues = [[1, 2]]\n[[parameter]]\nkey = \"b\"\nvalues = [2]\n", "key 'b' is varied twice");
+  refused("[[parameter]]\nkey = \"model.sphere\"\nvalues = [1]\n", "a model key is model.<body>.<key into its model file>");
+  refused("[[parameter]]\nkey = \"a..b\"\nvalues = [1]\n", "'a..b' is not a dotted key");
 }
 
 TEST_CASE("sweep: ranks building SIDs side by side share their node's cores", "[sweep][unit]") {

@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
@@ -151,6 +152,54 @@ TEST_CASE("sweep: one case of a job array, then the study around it", "[sweep]")
   const test::ProgramResult changed = sweep(dir, "-o " + dir.path("out"));
   CHECK(changed.exit_status == 2);
   CHECK_THAT(changed.err, Contains("case 2 there was run with flexible_body.0.velocity.1 = -0.1, the study file now says -0.12"));
+}
+
+TEST_CASE("sweep: model keys run each case on its own copy of the model, one per distinct value, checked before any case runs",
+          "[sweep]") {
+  const test::ScratchDir dir("sweep_model_keys");
+  for (const char* f : {"sphere_hertz.scene.toml", "sphere_axisym.model.toml"})
+    std::filesystem::copy_file(std::string(ISOSID_MODELS_DIR) + "/" + f, dir.path(f));
+  std::ofstream(dir.path("speeds.study.toml")) << "scene = \"sphere_hertz.scene.toml\"\n"
+                                               << "[[parameter]]\nkey = \"model.sphere.material.density\"\nvalues = [2789.0, 7800.0, -1.0]\n"
+                                               << "[[parameter]]\nkey = [\"flexible_body.0.velocity.1\", \"simulation.end_time\"]\n"
+                                               << "values = [[-0.1, 150e-6], [-0.12, 150e-6]]\n";
+  const test::ProgramResult r = test::run_program("ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_SWEEP_EXE + " " +
+                                                  dir.path("speeds.study.toml") + " -o " + dir.path("out"));
+  INFO(r.err);
+  REQUIRE(r.exit_status == 0);
+  CHECK_THAT(r.err, Contains("6 cases, 4 to run on 1 rank (0 done before, 2 refused)"));  // refused before any case ran
+  for (int i : {4, 5}) {  // isosid-prep's own check of the copy with the negative density
+    const nlohmann::json bad = row(dir, "out", i);
+    CHECK(bad["status"] == "bad input");
+    CHECK_THAT(bad["message"].get<std::string>(), Contains("/out/models/sphere_axisym-") && Contains("material.density"));
+  }
+  std::map<std::string, std::set<std::string>> models;  // density -> the model files its cases read
+  for (int i = 0; i < 4; ++i) {
+    const nlohmann::json done = row(dir, "out", i);
+    CHECK(done["status"] == "completed");
+    for (const auto& input : done["inputs"])
+      if (input["role"] == "model sphere") models[done["settings"]["model.sphere.material.density"]].insert(input["path"].get<std::string>());
+  }
+  REQUIRE(models.size() == 2);
+  CHECK(models["2789.0"].size() == 1);  // one copy per distinct value, shared by its speeds
+  CHECK(models["7800.0"].size() == 1);
+  CHECK(*models["2789.0"].begin() != *models["7800.0"].begin());
+  CHECK_THAT(*models["7800.0"].begin(), Contains("/out/models/sphere_axisym-"));
+  std::ifstream copy(*models["7800.0"].begin());
+  std::stringstream text;
+  text << copy.rdbuf();
+  CHECK_THAT(text.str(), Contains("density = 7800"));
+  CHECK_THAT(text.str(), Contains("model.sphere.material.density = 7800.0"));  // its header says what was set
+  // the heavier sphere (Al's stiffness, steel's density) hits harder at the same speed
+  CHECK(row(dir, "out", 2)["collected"]["contacts.impact.peak_force_n"].get<double>() >
+        1.2 * row(dir, "out", 0)["collected"]["contacts.impact.peak_force_n"].get<double>());
+  // the scene's own model is untouched and no SID was built beside it
+  CHECK_FALSE(fs::exists(dir.path("sphere_axisym.sid.h5")));
+  // a body the scene does not have, as bad input of the study
+  std::ofstream(dir.path("speeds.study.toml"), std::ios::app) << "[[parameter]]\nkey = \"model.ball.material.density\"\nvalues = [1.0]\n";
+  const test::ProgramResult unknown = test::run_program(std::string(ISOSID_SWEEP_EXE) + " -q " + dir.path("speeds.study.toml") + " -o " + dir.path("other"));
+  CHECK(unknown.exit_status == 0);
+  CHECK_THAT(row(dir, "other", 0)["message"].get<std::string>(), Contains("model.ball: the scene has no flexible body 'ball'"));
 }
 
 #ifdef ISOSID_MPIRUN
