@@ -195,6 +195,22 @@ TEST_CASE("sweep: model keys run each case on its own copy of the model, one per
         1.2 * row(dir, "out", 0)["collected"]["contacts.impact.peak_force_n"].get<double>());
   // the scene's own model is untouched and no SID was built beside it
   CHECK_FALSE(fs::exists(dir.path("sphere_axisym.sid.h5")));
+  // the study's plots: against one parameter, and as a map over two
+  const std::string plot = std::string(ISOSID_SCRIPTS_DIR) + "/plot-study " + dir.path("out");
+  const test::ProgramResult curve = test::run_program(plot + " --x model.sphere.material.density --quantity 'contacts.*.peak_force_n'");
+  INFO(curve.err);
+  CHECK(curve.exit_status == 0);
+  CHECK(fs::file_size(dir.path("out/study_model-sphere-material-density.png")) > 1000);
+  const test::ProgramResult map = test::run_program(plot + " --x model.sphere.material.density --y flexible_body.0.velocity.1");
+  INFO(map.err);
+  CHECK(map.exit_status == 0);
+  CHECK(fs::exists(dir.path("out/study_model-sphere-material-density_flexible_body-0-velocity-1.png")));
+  test::check_one_line_exit(test::run_program(plot + " --x contact.0.penalty"), 2, "--x contact.0.penalty: not a parameter of the study");
+  test::check_one_line_exit(test::run_program(plot + " --x model.sphere.material.density --where contact.0.penalty=1"), 2,
+                            "--where contact.0.penalty=1: contact.0.penalty is not a parameter of the study");
+  CHECK(test::run_program(plot + " --x model.sphere.material.density --where flexible_body.0.velocity.1=-0.1 -o " + dir.path("one.png"))
+            .exit_status == 0);
+  CHECK(fs::exists(dir.path("one.png")));
   // a body the scene does not have, as bad input of the study
   std::ofstream(dir.path("speeds.study.toml"), std::ios::app) << "[[parameter]]\nkey = \"model.ball.material.density\"\nvalues = [1.0]\n";
   const test::ProgramResult unknown = test::run_program(std::string(ISOSID_SWEEP_EXE) + " -q " + dir.path("speeds.study.toml") + " -o " + dir.path("other"));
