@@ -27,7 +27,7 @@ constexpr int kAssign = 2;  ///< 0 -> rank: the next case, or -1: stop
 /// What a rank reports with each request: "case" it ran (-1: none yet), "outcome" ("row": its
 /// row follows under "row"; "interrupted": hand it out again), "stopping" (a signal reached
 /// this rank: send it no more cases), and "waited_s", how long it waited for the answer to its
-/// previous request (-1: none yet).
+/// previous report of a case (-1: none yet).
 nlohmann::json report(int index, const nlohmann::json& row, bool stopping, double waited_s) {
   nlohmann::json r = {{"case", index}, {"outcome", "none"}, {"stopping", stopping}, {"waited_s", waited_s}};
   if (index < 0) return r;
@@ -142,6 +142,7 @@ private:
         if (const double waited = r["waited_s"].get<double>(); waited >= 0) {
           ++cost_.waits;
           cost_.waited_s += waited;
+          cost_.longest_wait_s = std::max(cost_.longest_wait_s, waited);
         }
       }
       if (done) return;
@@ -227,7 +228,7 @@ DispatchCost run_cases(const Ranks& ranks, const CaseWork& work, const std::vect
     MPI_Send(text.data(), int(text.size()), MPI_CHAR, 0, kReport, MPI_COMM_WORLD);
     int assigned = -1;
     MPI_Recv(&assigned, 1, MPI_INT, 0, kAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    waited = seconds_since(sent);
+    waited = ran >= 0 ? seconds_since(sent) : -1;  // the first answer waits for rank 0's check of every case: not dispatch
     if (assigned < 0) return {};
     row = run_one(work, assigned, work.stop_requested);
     ran = assigned;

@@ -46,8 +46,9 @@ struct CaseWork {
 /// What handing out the cases cost rank 0 (counted on rank 0 under mpirun): the dispatcher
 /// thread's CPU time per request (receiving a report, parsing its row, answering), against
 /// which the cases' own time sets how many ranks one dispatcher serves; its wall time per
-/// request (more where the thread waits for a core); and the time a rank waited for each
-/// answer, as the ranks measured it (it includes the thread's polling).
+/// request (more where the thread waits for a core); and the time a rank waited for the answer
+/// after each case, as the ranks measured it (it includes the thread's polling; the answer to a
+/// rank's first request waits for rank 0's check of every case and is not counted).
 struct DispatchCost {
   long requests = 0;   ///< reports answered
   double cpu_s = 0;    ///< the thread's CPU time from a report's arrival to its answer, summed
@@ -55,6 +56,7 @@ struct DispatchCost {
   double busiest_s = 0;  ///< the longest of those
   long waits = 0;      ///< answers whose wait a rank reported
   double waited_s = 0;  ///< the ranks' time from sending a report to its answer, summed
+  double longest_wait_s = 0;
 };
 
 /// Runs the cases numbered in `todo` (rank 0's list; the other ranks' is ignored) over all

@@ -215,9 +215,10 @@ int run_study(const sweep::Ranks& ranks, const std::string& study_file, std::str
     if (dispatch.requests > 0)
       std::fprintf(stderr,
                    "isosid-sweep: dispatch: %ld requests answered with %.3g ms CPU each, in %.3g ms (the longest %.3g ms); "
-                   "a rank waited %.3g ms per answer\n",
+                   "a rank waited %.3g ms per answer (the longest %.3g ms)\n",
                    dispatch.requests, 1e3 * dispatch.cpu_s / double(dispatch.requests), 1e3 * dispatch.busy_s / double(dispatch.requests),
-                   1e3 * dispatch.busiest_s, dispatch.waits ? 1e3 * dispatch.waited_s / double(dispatch.waits) : 0.0);
+                   1e3 * dispatch.busiest_s, dispatch.waits ? 1e3 * dispatch.waited_s / double(dispatch.waits) : 0.0,
+                   1e3 * dispatch.longest_wait_s);
   }
   if (g_stop_signal) {
     std::fprintf(stderr, "isosid-sweep: interrupted by %s; the same command resumes the study\n", strsignal(g_stop_signal));
