@@ -59,6 +59,13 @@ std::string results_of(const std::string& csv) {
   return out;
 }
 
+/// Scene A (models/sphere_hertz.scene.toml and its model) beside a study of it with `parameters`.
+void write_scene_a_study(const test::ScratchDir& dir, const std::string& parameters) {
+  for (const char* f : {"sphere_hertz.scene.toml", "sphere_axisym.model.toml"})
+    std::filesystem::copy_file(std::string(ISOSID_MODELS_DIR) + "/" + f, dir.path(f));
+  std::ofstream(dir.path("speeds.study.toml")) << "scene = \"sphere_hertz.scene.toml\"\n" << parameters;
+}
+
 nlohmann::json row(const test::ScratchDir& dir, const std::string& out, int index) {
   char name[16];
   std::snprintf(name, sizeof name, "%06d", index);
@@ -157,12 +164,9 @@ TEST_CASE("sweep: one case of a job array, then the study around it", "[sweep]")
 TEST_CASE("sweep: model keys run each case on its own copy of the model, one per distinct value, checked before any case runs",
           "[sweep]") {
   const test::ScratchDir dir("sweep_model_keys");
-  for (const char* f : {"sphere_hertz.scene.toml", "sphere_axisym.model.toml"})
-    std::filesystem::copy_file(std::string(ISOSID_MODELS_DIR) + "/" + f, dir.path(f));
-  std::ofstream(dir.path("speeds.study.toml")) << "scene = \"sphere_hertz.scene.toml\"\n"
-                                               << "[[parameter]]\nkey = \"model.sphere.material.density\"\nvalues = [2789.0, 7800.0, -1.0]\n"
-                                               << "[[parameter]]\nkey = [\"flexible_body.0.velocity.1\", \"simulation.end_time\"]\n"
-                                               << "values = [[-0.1, 150e-6], [-0.12, 150e-6]]\n";
+  write_scene_a_study(dir, "[[parameter]]\nkey = \"model.sphere.material.density\"\nvalues = [2789.0, 7800.0, -1.0]\n"
+                           "[[parameter]]\nkey = [\"flexible_body.0.velocity.1\", \"simulation.end_time\"]\n"
+                           "values = [[-0.1, 150e-6], [-0.12, 150e-6]]\n");
   const test::ProgramResult r = test::run_program("ISOSID_PREP=" + std::string(ISOSID_PREP_EXE) + " " + ISOSID_SWEEP_EXE + " " +
                                                   dir.path("speeds.study.toml") + " -o " + dir.path("out"));
   INFO(r.err);
@@ -244,12 +248,9 @@ TEST_CASE("sweep: cases on 2 ranks build each distinct SID once", "[sweep][mpi]"
   // scene A's sphere sizes its contact elements from each impact's contact radius: 0.05 and
   // 0.2 m/s need SIDs other than the scene's (made for 0.1 m/s), each wanted by three cases
   const test::ScratchDir dir("sweep_sids");
-  for (const char* f : {"sphere_hertz.scene.toml", "sphere_axisym.model.toml"})
-    std::filesystem::copy_file(std::string(ISOSID_MODELS_DIR) + "/" + f, dir.path(f));
-  std::ofstream(dir.path("speeds.study.toml")) << "scene = \"sphere_hertz.scene.toml\"\n"
-                                               << "[[parameter]]\nkey = \"flexible_body.0.velocity.1\"\nvalues = [-0.05, -0.2]\n"
-                                               << "[[parameter]]\nkey = \"simulation.end_time\"\nvalues = [120e-6]\n"
-                                               << "[[parameter]]\nkey = \"contact.0.penalty\"\nvalues = [5e18, 2e18, 1e18]\n";
+  write_scene_a_study(dir, "[[parameter]]\nkey = \"flexible_body.0.velocity.1\"\nvalues = [-0.05, -0.2]\n"
+                           "[[parameter]]\nkey = \"simulation.end_time\"\nvalues = [120e-6]\n"
+                           "[[parameter]]\nkey = \"contact.0.penalty\"\nvalues = [5e18, 2e18, 1e18]\n");
   const test::ProgramResult r = test::run_program("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ISOSID_PREP=" +
                                                   std::string(ISOSID_PREP_EXE) + " " + ISOSID_MPIRUN + " -np 2 " + ISOSID_SWEEP_EXE + " " +
                                                   dir.path("speeds.study.toml") + " -o " + dir.path("out"));
