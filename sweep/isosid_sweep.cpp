@@ -41,8 +41,8 @@ std::string default_output(const std::string& study_file) {
 /// Rank 0's record of the study: every case's row, the table rewritten as rows arrive (and at
 /// the end), and the progress line. A rewrite is linear in the rows (about 3 s at 1e5), so it
 /// waits at least 2 s and ten times the last one's time: rewriting takes at most a tenth of
-/// rank 0's time at any study size.
-/// It times itself: with many ranks, rank 0's share of each case bounds how many it can serve.
+/// rank 0's time at any study size. The record times itself, since with many ranks rank 0's
+/// share of each case bounds how many ranks it can serve.
 class StudyRecord {
 public:
   StudyRecord(const sweep::Study& study, const std::vector<sweep::Case>& cases, std::string dir, std::vector<std::string> collect, bool quiet)
