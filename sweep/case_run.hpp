@@ -14,10 +14,11 @@ namespace isosid::sweep {
 /// message of the command line's exit 2. Writes the case's model copies into `study_dir`.
 std::string case_input_problem(const Study& study, const Case& c, const std::string& study_dir);
 
-/// The row of a case: "case", "settings" {key: value text}, "status" (completed, failed,
-/// bad input or interrupted), "exit_class" (0, 1, 2 as isosid-run's exit status), "message",
-/// "collected" {path: value or null}, "wall_time_s", "cpu_time_s", "program_version" and
-/// "inputs" (each input file's role, path and SHA-256, from the run's provenance).
+/// Runs a case into its folder, case_folder(study_dir, c.index), and returns its row: "case",
+/// "settings" {key: value text}, "status" (completed, failed, bad input or interrupted),
+/// "exit_class" (0, 1, 2 as isosid-run's exit status), "message", "collected" {path: value or
+/// null}, "wall_time_s", "cpu_time_s", "program_version" and "inputs" (each input file's role,
+/// path and SHA-256, from the run's provenance).
 nlohmann::json run_case(const Study& study, const Case& c, const std::string& study_dir, const std::vector<std::string>& collect,
                         const std::function<bool()>& stop_requested);
 

@@ -63,7 +63,8 @@ struct DispatchCost {
 /// ranks. On rank 0, `on_row` receives every case's row: its own as each ends, the other ranks'
 /// (sent with their next request) between its cases and after its last; it returns once every
 /// rank has stopped. A rank a signal reached stops taking cases, and a case it interrupted goes
-/// back to the queue. Returns, on rank 0, what the dispatching cost.
+/// back to the queue. Returns, on rank 0, what the dispatching cost (no requests in one
+/// process); the other ranks count nothing and return zeros.
 DispatchCost run_cases(const Ranks& ranks, const CaseWork& work, const std::vector<int>& todo, const std::function<void(const nlohmann::json&)>& on_row);
 
 }  // namespace isosid::sweep

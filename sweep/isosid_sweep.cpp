@@ -102,7 +102,7 @@ private:
     const auto now = std::chrono::steady_clock::now();
     if (rows_.size() < total_ && now - shown_ < (line_.terminal() ? std::chrono::milliseconds(200) : std::chrono::milliseconds(10'000))) return;
     shown_ = now;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double elapsed = seconds_between(start_, now);
     const double fraction = double(rows_.size()) / double(total_);
     char text[160];
     std::snprintf(text, sizeof text, "%zu/%zu cases (%d failed, %d bad input)", rows_.size(), total_, count("failed"), count("bad input"));

@@ -31,8 +31,13 @@ std::string toml_string(const std::string& text) {
   return out.str();
 }
 
-/// The case's copy of `model_file` with the body's keys: its absolute path, written if new.
-std::string model_copy(const Study& study, const std::string& model_file, const ModelKeys& keys, const std::string& study_dir) {
+/// A model's copy in the study folder (absolute) and the SID built from it, beside it.
+struct ModelCopy {
+  std::string model, sid;
+};
+
+/// The case's copy of `model_file` with the body's keys, written if new.
+ModelCopy model_copy(const Study& study, const std::string& model_file, const ModelKeys& keys, const std::string& study_dir) {
   toml::table model = common::parse_toml_file(model_file);
   std::vector<common::TomlOverride> named = keys.settings;
   for (common::TomlOverride& s : named) s.key = kModelPrefix + keys.body + "." + s.key;
@@ -45,15 +50,16 @@ std::string model_copy(const Study& study, const std::string& model_file, const 
   text << "# " << model_file << " as isosid-sweep set it:";
   for (const common::TomlOverride& s : named) text << " " << s.text() << ";";
   text << "\n" << model << "\n";
-  const std::string stem = fs::path(model_file).filename().string();
-  const std::string name = stem.substr(0, stem.find('.')) + "-" + common::sha256_hex(text.str()).substr(0, 16) + ".model.toml";
-  const fs::path copy = fs::absolute(fs::path(study_dir) / "models" / name);
+  const std::string name = fs::path(model_file).filename().string();
+  const fs::path stem =
+      fs::absolute(fs::path(study_dir) / "models" / (name.substr(0, name.find('.')) + "-" + common::sha256_hex(text.str()).substr(0, 16)));
+  const ModelCopy copy{stem.string() + ".model.toml", stem.string() + ".sid.h5"};
   std::error_code ec;
-  if (!fs::exists(copy, ec)) {  // equal copies by any rank: the rename leaves one whole file
-    fs::create_directories(copy.parent_path());
-    format::write_text_atomically(copy.string(), text.str());
+  if (!fs::exists(copy.model, ec)) {  // equal copies by any rank: the rename leaves one whole file
+    fs::create_directories(stem.parent_path());
+    format::write_text_atomically(copy.model, text.str());
   }
-  return copy.string();
+  return copy;
 }
 
 /// The case's settings split into the scene's and each body's model keys.
@@ -94,12 +100,12 @@ CaseScene case_scene(const Study& study, const Case& c, const std::string& study
     if (!body) throw format::InputError(study.file, "parameter", "model." + keys.body + ": the scene has no flexible body '" + keys.body + "'");
     if (body->model_file.empty())
       throw format::InputError(study.file, "parameter", "model." + keys.body + ": body '" + keys.body + "' names no model file in the scene");
-    const std::string copy = model_copy(study, body->model_file, keys, study_dir);
+    const ModelCopy copy = model_copy(study, body->model_file, keys, study_dir);
     const std::string at = "flexible_body." + std::to_string(index) + ".";
-    out.settings.push_back({at + "model", toml_string(copy)});
+    out.settings.push_back({at + "model", toml_string(copy.model)});
     if (!body->adaptive)  // its SID beside the copy, built from it once (an adaptive body's come from the run's cache)
-      out.settings.push_back({at + "sid", toml_string(copy.substr(0, copy.size() - std::string(".model.toml").size()) + ".sid.h5")});
-    out.model_copies.push_back(copy);
+      out.settings.push_back({at + "sid", toml_string(copy.sid)});
+    out.model_copies.push_back(copy.model);
   }
   return out;
 }
