@@ -1,6 +1,8 @@
 // Memory limit of a preparation; see memory_budget.hpp.
 #include "reduce/memory_budget.hpp"
 
+#include "isosid/common/heap_reuse.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
@@ -20,6 +22,8 @@ double available_bytes() {
   std::string unit;
   while (meminfo >> key >> kib >> unit)
     if (key == "MemAvailable:") bytes = kib * 1024.0;
+  // what this process has freed stays in its heap for reuse (common/heap_reuse), uncounted there
+  if (bytes > 0) bytes += common::freed_bytes_held();
   for (int resource : {RLIMIT_AS, RLIMIT_DATA}) {
     rlimit r{};
     if (::getrlimit(resource, &r) == 0 && r.rlim_cur != RLIM_INFINITY)
