@@ -5,6 +5,7 @@
 #include "dispatch.hpp"
 #include "isosid/common/cli_guard.hpp"
 #include "isosid/common/cli_parse.hpp"
+#include "isosid/common/heap_reuse.hpp"
 #include "isosid/common/file_lock.hpp"
 #include "isosid/common/progress_line.hpp"
 #include "isosid/common/toml_override.hpp"
@@ -248,6 +249,7 @@ int run_command(const sweep::Ranks& ranks, int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  isosid::common::keep_freed_memory_for_reuse();  // reading SIDs and the solvers' blocks reuse pages instead of faulting anew
   sweep::Ranks ranks(argc, argv);
   const int status = common::run_guarded("isosid-sweep", [&]() -> int {
     try {

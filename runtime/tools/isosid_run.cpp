@@ -1,6 +1,7 @@
 // isosid-run: simulates a scene of reduced flexible bodies (SIDs) and writes results.h5 and
 // summary.json (the work is run::run_scene's); this file is the command line and the report.
 #include "isosid/common/cli_parse.hpp"
+#include "isosid/common/heap_reuse.hpp"
 #include "output/output_layout.hpp"
 #include "output/run_folder.hpp"
 #include "output/run_report.hpp"
@@ -59,6 +60,7 @@ int report(const run::RunResult& run, const std::string& out_dir, bool as_json, 
 }  // namespace
 
 int main(int argc, char** argv) {
+  isosid::common::keep_freed_memory_for_reuse();  // reading SIDs and the solvers' blocks reuse pages instead of faulting anew
   return common::run_guarded("isosid-run", [&] {
     CLI::App app{"Simulates impacts of reduced flexible bodies (SIDs) described by a scene file.", "isosid-run"};
     std::string scene_file, out_dir;
