@@ -364,7 +364,7 @@ std::vector<hsize_t> Reader::shape(const std::string& dataset) const {
   return dims;
 }
 
-std::vector<double> Reader::read_doubles(const std::string& dataset, std::vector<hsize_t>& dims) const {
+Eigen::VectorXd Reader::read_doubles(const std::string& dataset, std::vector<hsize_t>& dims) const {
   dims = shape(dataset);
   Handle ds = open_dataset(dataset);
   Handle type(H5Dget_type(ds.get()), H5Tclose);
@@ -372,17 +372,17 @@ std::vector<double> Reader::read_doubles(const std::string& dataset, std::vector
   if (type_class != H5T_FLOAT && type_class != H5T_INTEGER) fail(dataset, "is not numeric");
   check_fits_file(dataset, dims, sizeof(double));
   const hsize_t count = std::accumulate(dims.begin(), dims.end(), hsize_t{1}, std::multiplies<>());
-  std::vector<double> data(count);
+  Eigen::VectorXd data(static_cast<Eigen::Index>(count));  // not cleared: H5Dread writes every value
   if (count > 0 && H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
     fail(dataset, "cannot be read (truncated or corrupt file)");
-  for (std::size_t i = 0; i < data.size(); ++i)
-    if (!std::isfinite(data[i])) fail(dataset, "non-finite value (" + std::to_string(data[i]) + ") at flat index " + std::to_string(i));
+  for (Eigen::Index i = 0; i < data.size(); ++i)
+    if (!std::isfinite(data(i))) fail(dataset, "non-finite value (" + std::to_string(data(i)) + ") at flat index " + std::to_string(i));
   return data;
 }
 
 Eigen::MatrixXd Reader::matrix(const std::string& dataset) const {
   std::vector<hsize_t> dims;
-  std::vector<double> data = read_doubles(dataset, dims);
+  Eigen::VectorXd data = read_doubles(dataset, dims);
   if (dims.size() != 2) fail(dataset, "expected a matrix, found shape " + shape_text(dims));
   return Eigen::Map<RowMatrix>(data.data(), Eigen::Index(dims[0]), Eigen::Index(dims[1]));
 }
@@ -397,9 +397,9 @@ Eigen::MatrixXd Reader::matrix(const std::string& dataset, Eigen::Index rows, Ei
 
 Eigen::VectorXd Reader::vector(const std::string& dataset) const {
   std::vector<hsize_t> dims;
-  std::vector<double> data = read_doubles(dataset, dims);
+  Eigen::VectorXd data = read_doubles(dataset, dims);
   if (dims.size() != 1) fail(dataset, "expected a vector, found shape " + shape_text(dims));
-  return Eigen::Map<Eigen::VectorXd>(data.data(), Eigen::Index(dims[0]));
+  return data;
 }
 
 Eigen::VectorXd Reader::vector(const std::string& dataset, Eigen::Index size) const {
@@ -411,7 +411,7 @@ Eigen::VectorXd Reader::vector(const std::string& dataset, Eigen::Index size) co
 
 std::vector<Eigen::MatrixXd> Reader::tensor(const std::string& dataset) const {
   std::vector<hsize_t> dims;
-  std::vector<double> data = read_doubles(dataset, dims);
+  Eigen::VectorXd data = read_doubles(dataset, dims);
   if (dims.size() != 3) fail(dataset, "expected a rank-3 array, found shape " + shape_text(dims));
   std::vector<Eigen::MatrixXd> slices;
   const std::size_t block = dims[1] * dims[2];
@@ -435,9 +435,9 @@ Eigen::VectorXi Reader::integers(const std::string& dataset) const {
 
 double Reader::scalar(const std::string& dataset) const {
   std::vector<hsize_t> dims;
-  std::vector<double> data = read_doubles(dataset, dims);
+  Eigen::VectorXd data = read_doubles(dataset, dims);
   if (!dims.empty()) fail(dataset, "expected a scalar, found shape " + shape_text(dims));
-  return data.at(0);
+  return data(0);
 }
 
 long long Reader::integer(const std::string& dataset) const {

@@ -96,7 +96,8 @@ public:
 
 private:
   Handle open_dataset(const std::string& dataset) const;
-  std::vector<double> read_doubles(const std::string& dataset, std::vector<hsize_t>& dims) const;
+  /// The dataset's values in its (row-major) order, into memory that is not cleared first
+  Eigen::VectorXd read_doubles(const std::string& dataset, std::vector<hsize_t>& dims) const;
   /// Fails unless a dataset of this shape, `bytes` per value, could come from this file, alone
   /// and together with the datasets read before it: deflate shrinks data at most about
   /// 1000-fold, so a forged shape (or many) is caught before allocation.
