@@ -249,7 +249,8 @@ int run_command(const sweep::Ranks& ranks, int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  isosid::common::keep_freed_memory_for_reuse();  // reading SIDs and the solvers' blocks reuse pages instead of faulting anew
+  // reading SIDs and the solvers' blocks reuse pages instead of faulting anew (a run's memory is small)
+  const isosid::common::HeapReuse heap_reuse;
   sweep::Ranks ranks(argc, argv);
   const int status = common::run_guarded("isosid-sweep", [&]() -> int {
     try {

@@ -5,6 +5,7 @@
 #include "isosid/format/file_kind.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "reduce/body_reduction.hpp"
+#include "isosid/common/heap_reuse.hpp"
 #include "reduce/memory_budget.hpp"
 #include "sid/sid_builder.hpp"
 #include "sid/transfer.hpp"
@@ -61,6 +62,9 @@ PreparedBody prepare_body(const ModelSpec& spec, const PrepareOptions& options, 
       nodal = nodal_transfer(coarse->body, a.body);
       coarse_modes = prolongated_modes({coarse->body, coarse->system, coarse->basis}, a.body, *nodal);
     });
+  // the reduction's and the SID terms' dense blocks come and go by the hundred; the assembly
+  // before, whose arrays are the largest, keeps to glibc's default
+  const common::HeapReuse heap_reuse;
   ReducedBasis basis = clock.run("reduction", format::name(spec.reduction.method) + " reduction", [&] { return reduce_body(a.body, a.system, coarse_modes); });
   PreparedBody out{std::move(a.body), std::move(a.system), std::move(a.scalar_mass), std::move(basis), {}, {}};
   if (options.build_sid) {

@@ -6,11 +6,13 @@
 #include "reduce/blas_threads.hpp"
 #include "reduce/factorization_progress.hpp"
 #include "reduce/memory_budget.hpp"
+#include "reduce/node_ordering.hpp"
 
 #include <Eigen/CholmodSupport>
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <vector>
 
 namespace isosid::prep {
 
@@ -30,6 +32,21 @@ struct SparseCholesky::Impl {
              lower * double(sizeof(double) + sizeof(int)) + double(A.rows()) * 4 * sizeof(std::int64_t);
     }
     cholmod_factor* factor() const { return m_cholmodFactor; }
+    /// Eigen's analyzePattern with the fill-reducing permutation given (CHOLMOD postorders it)
+    void analyze_in_order(const Eigen::SparseMatrix<double>& A, std::vector<int>& perm) {
+      if (m_cholmodFactor) cholmod_free_factor(&m_cholmodFactor, &cholmod());
+      cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+      const int methods = cholmod().nmethods, ordering = cholmod().method[0].ordering;
+      cholmod().nmethods = 1;
+      cholmod().method[0].ordering = CHOLMOD_GIVEN;
+      m_cholmodFactor = cholmod_analyze_p(&view, perm.data(), nullptr, 0, &cholmod());
+      cholmod().nmethods = methods;
+      cholmod().method[0].ordering = ordering;
+      m_isInitialized = true;
+      m_info = Eigen::Success;
+      m_analysisIsOk = true;
+      m_factorizationIsOk = false;
+    }
   };
   mutable Llt llt;
   // CHOLMOD's reused workspaces of the half solves: no allocation per Krylov vector
@@ -60,9 +77,18 @@ struct SparseCholesky::Impl {
 SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& A, const std::string& what) : impl_(std::make_unique<Impl>()) {
   use_single_threaded_blas();
   impl_->llt.cholmod().print = 0;  // failures become the exception below, not text on stdout (which may be JSON)
-  impl_->llt.analyzePattern(A);
   const std::string size = what + " of " + std::to_string(A.rows()) + " DOFs";
   cholmod_common& common = impl_->llt.cholmod();
+  {
+    const std::string step = common::work_step();
+    common::set_work_step((step.empty() ? "" : step + ": ") + "ordering its node graph");
+    std::vector<int> order = node_graph_ordering(A, common);
+    if (order.empty())
+      impl_->llt.analyzePattern(A);  // no memory for the node graph: CHOLMOD's analysis says what it can
+    else
+      impl_->llt.analyze_in_order(A, order);
+    common::set_work_step(step);
+  }
   if (!impl_->llt.factor()) {
     // the analysis allocates no factor where its size overflows CHOLMOD's 32-bit indices
     // (2^31 entries) or memory ran out; its count of the factor's entries is then the estimate

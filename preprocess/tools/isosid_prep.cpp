@@ -2,7 +2,6 @@
 // writes its SID (or, with --modes, reports its size and natural frequencies).
 #include "isosid/format/atomic_output.hpp"
 #include "isosid/common/cli_parse.hpp"
-#include "isosid/common/heap_reuse.hpp"
 #include "pipeline/prepare.hpp"
 #include "reduce/blas_kernels.hpp"
 #include "reduce/memory_budget.hpp"
@@ -41,7 +40,6 @@ std::pair<std::string, std::vector<double>> parse_refinement_point(const std::st
 int main(int argc, char** argv) {
   using namespace isosid;
   prep::rerun_with_better_blas_kernels(argv);  // before any work: OpenBLAS reads its kernel choice at load
-  common::keep_freed_memory_for_reuse();         // the solvers' large blocks reuse pages instead of faulting anew
   // a preprocessing run killed midway leaves nothing behind, not even its temporary SID
   format::remove_temporaries_on_signals("isosid-prep");
   return common::run_guarded("isosid-prep", [&] {

@@ -60,7 +60,8 @@ int report(const run::RunResult& run, const std::string& out_dir, bool as_json, 
 }  // namespace
 
 int main(int argc, char** argv) {
-  isosid::common::keep_freed_memory_for_reuse();  // reading SIDs and the solvers' blocks reuse pages instead of faulting anew
+  // reading SIDs and the solvers' blocks reuse pages instead of faulting anew (a run's memory is small)
+  const isosid::common::HeapReuse heap_reuse;
   return common::run_guarded("isosid-run", [&] {
     CLI::App app{"Simulates impacts of reduced flexible bodies (SIDs) described by a scene file.", "isosid-run"};
     std::string scene_file, out_dir;
