@@ -58,11 +58,18 @@ TEST_CASE("gap space: impacts on a beam equal the general path's on the same SID
   INFO("pairs " << c["pairs"] << ", condensed " << c["condensed_points"]);
   CHECK(c["condensed_points"].get<int>() < c["pairs"].get<int>());
   CHECK(c["reach_widenings"].get<int>() == 0);
-  // the beam's modes take the same energy (1F and 3F carry 4-9 % of it)
-  for (std::size_t k : {0, 4}) {
-    const json &m = c["impact_modes"]["modes"][k], &n = general["contacts"][0]["impact_modes"]["modes"][k];
-    CHECK(m["label"] == n["label"]);
-    CHECK(relative(m["energy_ratio"], n["energy_ratio"]) < 1e-3);
+  // the beam's modes take the same energy (1F and 3F carry 4-9 % of it); found by label, since
+  // an index may hold a mode the impact does not excite, whose share is round-off (1e-31)
+  for (const std::string label : {"1F", "3F"}) {
+    const auto share = [&](const json& contact) {
+      for (const json& mode : contact["impact_modes"]["modes"])
+        if (mode["label"] == label) return mode["energy_ratio"].get<double>();
+      FAIL("no mode labelled " << label);
+      return 0.0;
+    };
+    INFO(label);
+    CHECK(share(c) > 0.01);
+    CHECK(relative(share(c), share(general["contacts"][0])) < 1e-3);
   }
 
   // sliding along the beam at 0.5 m/s (frictionless): the points slide past their pairs by
