@@ -1,8 +1,6 @@
 // Fill-reducing ordering on the supervariable graph; see node_ordering.hpp.
 #include "reduce/node_ordering.hpp"
 
-#include "isosid/format/error.hpp"
-
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -47,8 +45,14 @@ std::vector<int> supervariables(const Pattern& p, int& groups) {
   const std::size_t n = p.start.size() - 1;
   std::vector<std::uint64_t> hash(n);
   for (std::size_t c = 0; c < n; ++c) {
+    // a sum of mixed row numbers: the same for the same set, rarely for two sets of equal sums
     std::uint64_t h = std::uint64_t(p.start[c + 1] - p.start[c]);
-    for (std::int64_t k = p.start[c]; k < p.start[c + 1]; ++k) h += (std::uint64_t(p.rows[std::size_t(k)]) + 1) * 0x9E3779B97F4A7C15ull;
+    for (std::int64_t k = p.start[c]; k < p.start[c + 1]; ++k) {
+      std::uint64_t z = std::uint64_t(p.rows[std::size_t(k)]) + 0x9E3779B97F4A7C15ull;  // splitmix64's finalizer
+      z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+      z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+      h += z ^ (z >> 31);
+    }
     hash[c] = h;
   }
   std::vector<int> order(n);
