@@ -3,6 +3,7 @@
 
 #include "assemble/boundary_quadrature.hpp"
 #include "assemble/element_loop.hpp"
+#include "isosid/common/progress_line.hpp"
 
 namespace isosid::prep {
 
@@ -10,8 +11,10 @@ SystemMatrices assemble_system(const AnalysisSpace& space, const DofMap& dofs, c
                                int extra_points) {
   const StiffnessIntegrand stiffness(elasticity);
   const MassIntegrand mass(elasticity);
+  common::set_work_step("the matrices' patterns");  // a minute for a million DOFs, before the element loop reports
   const ElementPattern coupled(space, dofs, Unknowns::FreeDofs, Coupling::AllComponents);
   const ElementPattern per_component(space, dofs, Unknowns::FreeDofs, Coupling::SameComponent);
+  common::set_work_step("the element loop");
   std::vector<SparseMatrix> m =
       assemble_matrices(space, elasticity, {{stiffness, coupled}, {mass, per_component}}, extra_points);
   return {std::move(m[0]), std::move(m[1])};

@@ -37,8 +37,8 @@ void StderrProgress::started(const std::string& /*stage*/, const std::string& wh
   if (!line_.terminal()) {
     // a log: a line for each new kind of step (its text up to a comma) as it is set, and for
     // a step whose count moves on at most every interval, so that it stays readable through a
-    // long eigen solve; and the stage's share (where it reports one) when an interval passed
-    // with no line
+    // long eigen solve; and, when an interval passed with no line, the stage's step, share
+    // (where it reports one) and elapsed time
     const auto t0 = std::chrono::steady_clock::now();
     {
       const std::lock_guard<std::mutex> lock(line_mutex_);
@@ -60,7 +60,6 @@ void StderrProgress::started(const std::string& /*stage*/, const std::string& wh
       std::unique_lock<std::mutex> lock(mutex_);
       while (!wake_.wait_for(lock, log_interval_, [this] { return !running_; })) {
         const double fraction = common::work_fraction();
-        if (fraction < 0) continue;
         // the step before the line's lock: the step listener holds the step's lock and takes the line's
         const std::string step = common::work_step();
         const auto now = std::chrono::steady_clock::now();

@@ -69,6 +69,11 @@ TEST_CASE("SparseCholesky: its factorization shows each tenth done in the work s
   common::set_work_step_listener(nullptr);
   CHECK(common::work_step() == "factorizing the test's matrix");  // the share gone with the factorization
   steps.pop_back();
+  // first the ordering of the node graph, as a step of its own
+  REQUIRE(steps.size() >= 2);
+  CHECK(steps[0] == "factorizing the test's matrix: ordering its node graph");
+  CHECK(steps[1] == "factorizing the test's matrix");
+  steps.erase(steps.begin(), steps.begin() + 2);
   // a tenth at a time, in order; one large call (a separator's dpotrf) may pass more than one
   REQUIRE(steps.size() >= 5);
   for (std::size_t i = 0; i < steps.size(); ++i) {
