@@ -1,11 +1,11 @@
 // The preprocessing pipeline; see prepare.hpp.
 #include "pipeline/prepare.hpp"
 
+#include "isosid/common/heap_reuse.hpp"
 #include "isosid/format/error.hpp"
 #include "isosid/format/file_kind.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "reduce/body_reduction.hpp"
-#include "isosid/common/heap_reuse.hpp"
 #include "reduce/memory_budget.hpp"
 #include "sid/sid_builder.hpp"
 #include "sid/transfer.hpp"

@@ -1,7 +1,7 @@
 // The fill-reducing ordering on the node graph: the columns of one node (equal patterns) form
 // one supervariable whichever way the DOFs are numbered, the ordering is a permutation that
 // keeps each node's DOFs together, its factor fills no more than CHOLMOD's ordering of the DOF
-// graph (within 10 %: both are heuristics; a random order fills several times more), and the
+// graph (within 10 %: both are heuristics; the natural order fills 2.6 times more), and the
 // factorization analysed with it solves. The matrix: a 3D vector Laplacian, a 3 x 3 coupling
 // block per pair of neighbouring nodes, as an elasticity stiffness has.
 #include "reduce/node_ordering.hpp"
