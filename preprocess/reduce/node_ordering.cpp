@@ -96,21 +96,19 @@ Eigen::Index supervariable_count(const Eigen::SparseMatrix<double>& A) {
 }
 
 std::vector<int> node_graph_ordering(const Eigen::SparseMatrix<double>& A, cholmod_common& common) {
-  std::vector<int> group;
-  int groups = 0;
-  std::vector<int> leader;  // a column of each group
+  std::vector<std::vector<int>> members;  // each group's columns, ascending
   cholmod_sparse* graph = nullptr;
   {
     const Pattern p = symmetric_pattern(A);
-    group = supervariables(p, groups);
-    leader.assign(std::size_t(groups), -1);
-    for (std::size_t c = 0; c < group.size(); ++c)
-      if (leader[std::size_t(group[c])] < 0) leader[std::size_t(group[c])] = int(c);
+    int groups = 0;
+    const std::vector<int> group = supervariables(p, groups);
+    members.resize(std::size_t(groups));
+    for (std::size_t c = 0; c < group.size(); ++c) members[std::size_t(group[c])].push_back(int(c));
     // the groups' graph, lower triangle (CHOLMOD reads stype -1 as symmetric)
     std::vector<std::int64_t> start(std::size_t(groups) + 1, 0);
     std::vector<int> rows, seen(std::size_t(groups), -1);
     for (int g = 0; g < groups; ++g) {
-      const int c = leader[std::size_t(g)];
+      const int c = members[std::size_t(g)].front();  // every member has the group's pattern
       const std::size_t first = rows.size();
       for (std::int64_t k = p.start[std::size_t(c)]; k < p.start[std::size_t(c) + 1]; ++k) {
         const int h = group[std::size_t(p.rows[std::size_t(k)])];
@@ -135,12 +133,10 @@ std::vector<int> node_graph_ordering(const Eigen::SparseMatrix<double>& A, cholm
   common.nmethods = methods;
   cholmod_free_sparse(&graph, &common);
   if (!symbolic) return {};
-  std::vector<std::vector<int>> members(static_cast<std::size_t>(groups));
-  for (std::size_t c = 0; c < group.size(); ++c) members[std::size_t(group[c])].push_back(int(c));
   std::vector<int> perm;
-  perm.reserve(group.size());
+  perm.reserve(std::size_t(A.cols()));
   const int* order = static_cast<const int*>(symbolic->Perm);
-  for (int k = 0; k < groups; ++k) {
+  for (std::size_t k = 0; k < members.size(); ++k) {
     const auto& m = members[std::size_t(order[k])];
     perm.insert(perm.end(), m.begin(), m.end());
   }

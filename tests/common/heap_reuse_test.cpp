@@ -3,6 +3,7 @@
 // checks count it as available). Without the scope glibc maps such a block and unmaps it at
 // free, and the count does not grow; after the scope, that is so again.
 #include "isosid/common/heap_reuse.hpp"
+#include "isosid/format/isolated_probe.hpp"  // ISOSID_UNDER_ASAN
 
 #include <catch2/catch.hpp>
 #include <cstdlib>
@@ -25,7 +26,7 @@ double held_after_a_large_block() {
 }  // namespace
 
 TEST_CASE("HeapReuse: a freed large block stays in the heap while the scope lives, and not after", "[heap]") {
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__GLIBC__) && !defined(ISOSID_UNDER_ASAN)
   const double block = double(std::size_t(64) << 20);
   {
     const isosid::common::HeapReuse reuse;
