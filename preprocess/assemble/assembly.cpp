@@ -4,8 +4,23 @@
 #include "assemble/boundary_quadrature.hpp"
 #include "assemble/element_loop.hpp"
 #include "isosid/common/progress_line.hpp"
+#include "reduce/memory_budget.hpp"
+
+#include <omp.h>
 
 namespace isosid::prep {
+namespace {
+
+/// Refuses an element loop whose matrices would not fit: per matrix, a value array per thread
+/// (the first is the matrix's own) and the matrix's row indices, beside its pattern's.
+void check_element_loop_memory(const std::string& what, std::initializer_list<const ElementPattern*> patterns) {
+  double bytes = 0;
+  for (const ElementPattern* p : patterns)
+    bytes += double(p->non_zeros()) * (double(omp_get_max_threads()) * sizeof(double) + sizeof(SparseMatrix::StorageIndex));
+  check_memory("refinement", what, bytes);
+}
+
+}  // namespace
 
 SystemMatrices assemble_system(const AnalysisSpace& space, const DofMap& dofs, const BodyElasticity& elasticity,
                                int extra_points) {
@@ -14,6 +29,8 @@ SystemMatrices assemble_system(const AnalysisSpace& space, const DofMap& dofs, c
   common::set_work_step("the matrices' patterns");  // a minute for a million DOFs, before the element loop reports
   const ElementPattern coupled(space, dofs, Unknowns::FreeDofs, Coupling::AllComponents);
   const ElementPattern per_component(space, dofs, Unknowns::FreeDofs, Coupling::SameComponent);
+  check_element_loop_memory("the assembly of the stiffness and mass of " + std::to_string(dofs.free_count()) + " DOFs",
+                            {&coupled, &per_component});
   common::set_work_step("the element loop");
   std::vector<SparseMatrix> m =
       assemble_matrices(space, elasticity, {{stiffness, coupled}, {mass, per_component}}, extra_points);
@@ -24,6 +41,7 @@ SparseMatrix assemble_scalar_mass(const AnalysisSpace& space, const DofMap& dofs
                                   int extra_points) {
   const MassIntegrand mass(elasticity);
   const ElementPattern nodes(space, dofs, Unknowns::Nodes, Coupling::AllComponents);
+  check_element_loop_memory("the assembly of the scalar mass of " + std::to_string(dofs.node_count()) + " nodes", {&nodes});
   return std::move(assemble_matrices(space, elasticity, {{mass, nodes}}, extra_points)[0]);
 }
 

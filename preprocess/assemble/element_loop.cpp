@@ -47,14 +47,21 @@ std::vector<SparseMatrix> assemble_matrices(const AnalysisSpace& space, const Bo
                                             const std::vector<MatrixTerm>& terms, int extra_points) {
   const ReferenceRule rule = reference_rule(space, extra_points);
   const int n_elements = int(space.elements.size()), dim = elasticity.dim();
-  // per thread, per term: the summed values of the term's pattern
+  // per thread, per term: the summed values of the term's pattern; the first thread sums
+  // straight into the matrices' values, the others into their own, added to them after the loop
+  // (the sum of a million DOFs' stiffness takes gigabytes: one copy per thread, no more)
+  std::vector<SparseMatrix> out;
+  for (const MatrixTerm& t : terms) out.push_back(t.pattern.zero_matrix());
   const int threads = omp_get_max_threads();
   std::vector<std::vector<PatternAccumulator>> sums(static_cast<std::size_t>(threads));
   std::atomic<int> done{0};  // elements assembled, for progress
 #pragma omp parallel
   {
-    std::vector<PatternAccumulator>& mine = sums[std::size_t(omp_get_thread_num())];
-    for (const MatrixTerm& t : terms) mine.emplace_back(t.pattern);
+    const int thread = omp_get_thread_num();
+    std::vector<PatternAccumulator>& mine = sums[std::size_t(thread)];
+    mine.reserve(terms.size());
+    for (std::size_t k = 0; k < terms.size(); ++k)
+      thread == 0 ? mine.emplace_back(terms[k].pattern, out[k].valuePtr()) : mine.emplace_back(terms[k].pattern);
     const ElementEvaluator evaluator(space);
     ElementPoints points;
     Eigen::MatrixXd local, spread;
@@ -80,14 +87,9 @@ std::vector<SparseMatrix> assemble_matrices(const AnalysisSpace& space, const Bo
       }
     }
   }
-  std::vector<SparseMatrix> out;
-  for (std::size_t k = 0; k < terms.size(); ++k) {
-    std::vector<double> total(std::size_t(terms[k].pattern.non_zeros()), 0.0);
-    for (const auto& thread : sums)
-      if (!thread.empty())
-        for (std::size_t i = 0; i < total.size(); ++i) total[i] += thread[k].values()[i];
-    out.push_back(terms[k].pattern.matrix(total));
-  }
+  // in thread order: the sums, and so the SIDs, are bitwise reproducible for a thread count
+  for (std::size_t t = 1; t < sums.size(); ++t)
+    for (std::size_t k = 0; k < sums[t].size(); ++k) sums[t][k].add_into_and_release(out[k].valuePtr());
   return out;
 }
 

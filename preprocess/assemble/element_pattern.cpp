@@ -43,8 +43,21 @@ void ElementPattern::element_unknowns(const Element& element, std::vector<int>& 
     dofs_.element_nodes(element, index);
 }
 
-SparseMatrix ElementPattern::matrix(const std::vector<double>& values) const {
-  return Eigen::Map<const SparseMatrix>(size_, size_, non_zeros(), column_start_.data(), rows_.data(), values.data());
+SparseMatrix ElementPattern::zero_matrix() const {
+  SparseMatrix m(size_, size_);
+  m.resizeNonZeros(non_zeros());
+  std::copy(column_start_.begin(), column_start_.end(), m.outerIndexPtr());
+  std::copy(rows_.begin(), rows_.end(), m.innerIndexPtr());
+  std::fill_n(m.valuePtr(), non_zeros(), 0.0);
+  return m;
+}
+
+void PatternAccumulator::add_into_and_release(double* values) {
+  const std::size_t n = std::size_t(pattern_.non_zeros());
+  for (std::size_t i = 0; i < n; ++i) values[i] += values_[i];
+  own_.clear();
+  own_.shrink_to_fit();
+  values_ = nullptr;
 }
 
 void PatternAccumulator::add(const Element& element, const Eigen::MatrixXd& local) {

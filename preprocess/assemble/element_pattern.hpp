@@ -32,8 +32,8 @@ public:
   Eigen::Index non_zeros() const { return Eigen::Index(rows_.size()); }
   /// Global unknown of each local row of an element matrix (f*components + a), -1 where dropped.
   void element_unknowns(const Element& element, std::vector<int>& index) const;
-  /// The matrix with this pattern and these values (non_zeros long).
-  SparseMatrix matrix(const std::vector<double>& values) const;
+  /// The matrix with this pattern, its values zero (an accumulator may then sum into them).
+  SparseMatrix zero_matrix() const;
 
 private:
   const DofMap& dofs_;
@@ -46,18 +46,27 @@ private:
   friend class PatternAccumulator;
 };
 
-/// One thread's sum of element matrices in the values of a pattern.
+/// One thread's sum of element matrices in the values of a pattern: its own, or those of a
+/// matrix with the pattern (ElementPattern::zero_matrix), which then needs no copy.
 class PatternAccumulator {
 public:
+  /// Sums into values of its own.
   explicit PatternAccumulator(const ElementPattern& pattern)
-      : pattern_(pattern), values_(std::size_t(pattern.non_zeros()), 0.0) {}
+      : pattern_(pattern), own_(std::size_t(pattern.non_zeros()), 0.0), values_(own_.data()) {}
+  /// Sums into `values` (non_zeros long, zero at first), which must outlive it.
+  PatternAccumulator(const ElementPattern& pattern, double* values) : pattern_(pattern), values_(values) {}
+  PatternAccumulator(const PatternAccumulator&) = delete;
+  PatternAccumulator& operator=(const PatternAccumulator&) = delete;
+  PatternAccumulator(PatternAccumulator&&) = default;
   /// Adds the element matrix `local`, whose rows and columns are `element`'s local unknowns.
   void add(const Element& element, const Eigen::MatrixXd& local);
-  const std::vector<double>& values() const { return values_; }
+  /// Adds its sum into `values` (non_zeros long) and frees values of its own.
+  void add_into_and_release(double* values);
 
 private:
   const ElementPattern& pattern_;
-  std::vector<double> values_;
+  std::vector<double> own_;                    ///< empty when it sums into a matrix's values
+  double* values_;
   std::vector<int> index_;                     ///< global unknown of each local row
   std::vector<std::pair<int, int>> by_row_;    ///< (global row, local row), sorted
 };

@@ -1,12 +1,15 @@
 // The preprocessing pipeline; see prepare.hpp.
 #include "pipeline/prepare.hpp"
 
+#include "assemble/element_pattern.hpp"
 #include "isosid/common/heap_reuse.hpp"
+#include "isosid/common/progress_line.hpp"
 #include "isosid/format/error.hpp"
 #include "isosid/format/file_kind.hpp"
 #include "isosid/format/sid_io.hpp"
 #include "reduce/body_reduction.hpp"
 #include "reduce/memory_budget.hpp"
+#include "reduce/sparse_cholesky.hpp"
 #include "sid/sid_builder.hpp"
 #include "sid/transfer.hpp"
 
@@ -23,13 +26,27 @@ struct AssembledBody {
   SparseMatrix scalar_mass;
 };
 
+/// Refuses, before any value is integrated, a body whose stiffness factor (every reduction
+/// factors it, or its interior) exceeds CHOLMOD's indices or the memory even with nothing else
+/// held: its analysis needs the matrix's pattern only. The factorizations check again when they
+/// come, with what is held by then.
+void refuse_oversized_factor(const BodyModel& b) {
+  common::set_work_step("estimating the stiffness's factor");
+  SparseCholesky::check_fits(ElementPattern(b.space, b.dofs, Unknowns::FreeDofs, Coupling::AllComponents).zero_matrix(),
+                             "the stiffness's factorization");
+  common::set_work_step("");
+}
+
 /// Stages refine, assembly and, if asked, mass: what every use of a model starts with.
 AssembledBody assemble(const ModelSpec& spec, bool with_mass, StageClock& clock) {
   AssembledBody a{clock.run("refine", "refining the geometry", [&] { return build_body(spec); }), {}, {}};
   const BodyModel& b = a.body;
   a.system = clock.run("assembly",
                        "assembling " + std::to_string(b.space.elements.size()) + " elements, " + std::to_string(b.dofs.free_count()) + " DOFs",
-                       [&] { return assemble_system(b.space, b.dofs, b.elasticity, spec.extra_quadrature_points); });
+                       [&] {
+                         refuse_oversized_factor(b);
+                         return assemble_system(b.space, b.dofs, b.elasticity, spec.extra_quadrature_points);
+                       });
   if (with_mass)
     a.scalar_mass = clock.run("mass", "integrating the mass",
                               [&] { return assemble_scalar_mass(b.space, b.dofs, b.elasticity, spec.extra_quadrature_points); });

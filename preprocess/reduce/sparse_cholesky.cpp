@@ -57,6 +57,11 @@ struct SparseCholesky::Impl {
     cholmod_free_dense(&y, &llt.cholmod());
     cholmod_free_dense(&e, &llt.cholmod());
   }
+  /// The fill-reducing ordering of A's node graph and CHOLMOD's analysis in it (no factor values).
+  void analyze(const Eigen::SparseMatrix<double>& A);
+  /// Throws MemoryRefusal, naming the factorization `size`, where the analysed factor exceeds
+  /// CHOLMOD's indices (the analysis then made none) or the memory limit.
+  void refuse_unless_fits(const Eigen::SparseMatrix<double>& A, const std::string& size) const;
   /// b <- the solution of CHOLMOD's system `sys` (a triangular solve or a permutation) for b
   void solve_in_place(int sys, Eigen::Ref<Eigen::MatrixXd> b) const {
     cholmod_dense rhs{};
@@ -74,22 +79,20 @@ struct SparseCholesky::Impl {
   }
 };
 
-SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& A, const std::string& what) : impl_(std::make_unique<Impl>()) {
-  use_single_threaded_blas();
-  impl_->llt.cholmod().print = 0;  // failures become the exception below, not text on stdout (which may be JSON)
-  const std::string size = what + " of " + std::to_string(A.rows()) + " DOFs";
-  cholmod_common& common = impl_->llt.cholmod();
-  {
-    const std::string step = common::work_step();
-    common::set_work_step((step.empty() ? "" : step + ": ") + "ordering its node graph");
-    std::vector<int> order = node_graph_ordering(A, common);
-    if (order.empty())
-      impl_->llt.analyzePattern(A);  // no memory for the node graph: CHOLMOD's analysis says what it can
-    else
-      impl_->llt.analyze_in_order(A, order);
-    common::set_work_step(step);
-  }
-  if (!impl_->llt.factor()) {
+void SparseCholesky::Impl::analyze(const Eigen::SparseMatrix<double>& A) {
+  const std::string step = common::work_step();
+  common::set_work_step((step.empty() ? "" : step + ": ") + "ordering its node graph");
+  std::vector<int> order = node_graph_ordering(A, llt.cholmod());
+  if (order.empty())
+    llt.analyzePattern(A);  // no memory for the node graph: CHOLMOD's analysis says what it can
+  else
+    llt.analyze_in_order(A, order);
+  common::set_work_step(step);
+}
+
+void SparseCholesky::Impl::refuse_unless_fits(const Eigen::SparseMatrix<double>& A, const std::string& size) const {
+  const cholmod_common& common = llt.cholmod();
+  if (!llt.factor()) {
     // the analysis allocates no factor where its size overflows CHOLMOD's 32-bit indices
     // (2^31 entries) or memory ran out; its count of the factor's entries is then the estimate
     char estimate[96] = "";
@@ -99,7 +102,29 @@ SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& A, const std::
     throw MemoryRefusal("refinement", size + (common.status == CHOLMOD_TOO_LARGE ? " is beyond CHOLMOD's 32-bit indices (2^31 entries)"
                                                                                 : " ran out of memory in CHOLMOD's analysis") + estimate);
   }
-  check_memory("refinement", size, impl_->llt.factorization_bytes(A));
+  check_memory("refinement", size, llt.factorization_bytes(A));
+}
+
+namespace {
+std::string factorization_name(const std::string& what, const Eigen::SparseMatrix<double>& A) {
+  return what + " of " + std::to_string(A.rows()) + " DOFs";
+}
+}  // namespace
+
+void SparseCholesky::check_fits(const Eigen::SparseMatrix<double>& A, const std::string& what) {
+  Impl impl;
+  impl.llt.cholmod().print = 0;
+  impl.analyze(A);
+  impl.refuse_unless_fits(A, factorization_name(what, A));
+}
+
+SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& A, const std::string& what) : impl_(std::make_unique<Impl>()) {
+  use_single_threaded_blas();
+  impl_->llt.cholmod().print = 0;  // failures become the exception below, not text on stdout (which may be JSON)
+  const std::string size = factorization_name(what, A);
+  cholmod_common& common = impl_->llt.cholmod();
+  impl_->analyze(A);
+  impl_->refuse_unless_fits(A, size);
   {
     const ParallelBlas threads(common.fl);  // the analysis's count of the factorization's flops
     const FactorizationProgress progress(common.fl, common::work_step());

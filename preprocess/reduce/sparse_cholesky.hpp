@@ -16,6 +16,10 @@ public:
   /// `what` names the factorization in the memory refusal.
   explicit SparseCholesky(const Eigen::SparseMatrix<double>& A, const std::string& what = "the sparse factorization");
   ~SparseCholesky();
+  /// Throws the MemoryRefusal the constructor would for A's pattern (its values are not read):
+  /// A's analysis alone, no factor. Asked before A's values exist, it refuses up front what
+  /// cannot fit even with nothing else held.
+  static void check_fits(const Eigen::SparseMatrix<double>& A, const std::string& what);
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
 

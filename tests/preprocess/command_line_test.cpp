@@ -76,12 +76,13 @@ TEST_CASE("isosid-prep prints the project's version", "[prep][command-line]") {
 
 TEST_CASE("isosid-prep refuses a model above its memory limit before the stage, with the estimate", "[prep][command-line]") {
   const test::ScratchDir dir("prep-memory");
-  // the small sphere's factorization (its Craig-Bampton interior, 71 DOFs) needs tens of kB: a limit of 1 kB
-  // refuses it, in one line naming the model file, the part of it that sets the size, and the estimate
-  // against the limit
+  // the small sphere's stiffness factor (78 DOFs) needs tens of kB: a limit of 1 kB refuses it before the
+  // assembly, from the stiffness's pattern, in one line naming the model file, the part of it that
+  // sets the size, and the estimate against the limit (the assembly's own estimate and the
+  // factorization's at its stage: reduction_test)
   const auto r = test::run_program(kPrep + " -q --memory-limit 1e-6 " + kSphere + " -o " + dir.path("x.sid.h5"));
   CHECK(r.exit_status == 2);
-  CHECK_THAT(r.err, Contains(kSphere + ": refinement: the interior stiffness's factorization of"));
+  CHECK_THAT(r.err, Contains(kSphere + ": refinement: the stiffness's factorization of"));
   CHECK_THAT(r.err, Contains("GiB, more than the 1e-06 GiB of --memory-limit"));
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   CHECK_FALSE(std::filesystem::exists(dir.path("x.sid.h5")));

@@ -12,6 +12,7 @@
 #include <Eigen/Eigenvalues>
 #include <SuiteSparse_config.h>
 #include <catch2/catch.hpp>
+#include <omp.h>
 #include <random>
 
 using namespace isosid;
@@ -112,6 +113,40 @@ TEST_CASE("SparseCholesky: an analysis that CHOLMOD cannot allocate is refused, 
   }
   const Eigen::VectorXd ones = Eigen::VectorXd::Ones(n);
   CHECK((A * prep::SparseCholesky(A).solve(ones) - ones).norm() < 1e-12);  // the allocator back, it factors
+}
+
+TEST_CASE("the assembly and a factorization are refused above the memory limit before they start, on their estimates", "[reduction]") {
+  auto spec = test::spec_for(prep::primitives::rectangle(0.2, 0.02), AnalysisType::PlaneStress, 2.1e11, 0.3, 7850,
+                             test::uniform({3, 3}, {8, 2}));
+  const Fixture f = test::assembled(spec);
+  // the element loop holds a value array per thread (the first is the matrix's) and the matrices'
+  // row indices: a limit just below that is refused, one just above is not
+  const double estimate = double(f.sys.K.nonZeros() + f.sys.M.nonZeros()) * (omp_get_max_threads() * 8.0 + 4.0);
+  struct Limit {
+    explicit Limit(double bytes) { prep::set_memory_limit(bytes); }
+    ~Limit() { prep::set_memory_limit(0); }
+  };
+  {
+    const Limit below(0.999 * estimate);
+    try {
+      (void)test::assembled(spec);
+      FAIL("the assembly went on above its limit");
+    } catch (const prep::MemoryRefusal& e) {
+      CHECK(e.field() == "refinement");
+      CHECK_THAT(e.what(), Catch::Matchers::Contains("the assembly of the stiffness and mass of " + std::to_string(f.sys.K.rows()) + " DOFs needs about"));
+    }
+  }
+  const Limit above(1.001 * estimate);
+  CHECK(test::assembled(spec).sys.K.isApprox(f.sys.K, 0.0));
+  // the factor of K needs more than K's entries hold (fill)
+  const Limit factor_below(double(f.sys.K.nonZeros()) * 8.0);
+  try {
+    const prep::SparseCholesky refused(f.sys.K, "the test's factorization");
+    FAIL("the factorization went on above its limit");
+  } catch (const prep::MemoryRefusal& e) {
+    CHECK(e.field() == "refinement");
+    CHECK_THAT(e.what(), Catch::Matchers::Contains("the test's factorization of " + std::to_string(f.sys.K.rows()) + " DOFs needs about"));
+  }
 }
 
 TEST_CASE("Craig-Bampton reproduces the full static deflection under interface loads", "[reduction]") {
