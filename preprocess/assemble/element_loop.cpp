@@ -60,8 +60,12 @@ std::vector<SparseMatrix> assemble_matrices(const AnalysisSpace& space, const Bo
     const int thread = omp_get_thread_num();
     std::vector<PatternAccumulator>& mine = sums[std::size_t(thread)];
     mine.reserve(terms.size());
-    for (std::size_t k = 0; k < terms.size(); ++k)
-      thread == 0 ? mine.emplace_back(terms[k].pattern, out[k].valuePtr()) : mine.emplace_back(terms[k].pattern);
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+      if (thread == 0)
+        mine.emplace_back(terms[k].pattern, out[k].valuePtr());
+      else
+        mine.emplace_back(terms[k].pattern);
+    }
     const ElementEvaluator evaluator(space);
     ElementPoints points;
     Eigen::MatrixXd local, spread;

@@ -138,7 +138,8 @@ TEST_CASE("the assembly and a factorization are refused above the memory limit b
   }
   const Limit above(1.001 * estimate);
   CHECK(test::assembled(spec).sys.K.isApprox(f.sys.K, 0.0));
-  // the factor of K needs more than K's entries hold (fill)
+  // a factorization holds K's lower triangle twice at least (CHOLMOD's copy and the factor's values):
+  // more than 8 bytes per entry of K
   const Limit factor_below(double(f.sys.K.nonZeros()) * 8.0);
   try {
     const prep::SparseCholesky refused(f.sys.K, "the test's factorization");
