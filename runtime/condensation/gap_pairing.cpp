@@ -18,7 +18,15 @@ SparseRows SparseRows::from(const Eigen::Ref<const Eigen::MatrixXd>& rows) {
   for (Eigen::Index j = 0; j < rows.cols(); ++j)
     if (rows.col(j).cwiseAbs().maxCoeff() > floor) s.columns.push_back(j);
   s.values = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, Eigen::Index(s.columns.size()));
-  for (std::size_t i = 0; i < s.columns.size(); ++i) s.values.col(Eigen::Index(i)).head(rows.rows()) = rows.col(s.columns[i]);
+  s.only_row.assign(s.columns.size(), -1);
+  for (std::size_t i = 0; i < s.columns.size(); ++i) {
+    auto column = s.values.col(Eigen::Index(i));
+    column.head(rows.rows()) = rows.col(s.columns[i]);
+    // exact zeros only: the product then adds what the full column would (its other rows add 0)
+    if ((column.array() != 0.0).count() == 1)
+      for (int row = 0; row < 3; ++row)
+        if (column(row) != 0.0) s.only_row[i] = static_cast<signed char>(row);
+  }
   return s;
 }
 
