@@ -18,15 +18,7 @@ SparseRows SparseRows::from(const Eigen::Ref<const Eigen::MatrixXd>& rows) {
   for (Eigen::Index j = 0; j < rows.cols(); ++j)
     if (rows.col(j).cwiseAbs().maxCoeff() > floor) s.columns.push_back(j);
   s.values = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, Eigen::Index(s.columns.size()));
-  s.only_row.assign(s.columns.size(), -1);
-  for (std::size_t i = 0; i < s.columns.size(); ++i) {
-    auto column = s.values.col(Eigen::Index(i));
-    column.head(rows.rows()) = rows.col(s.columns[i]);
-    // exact zeros only: the product then adds what the full column would (its other rows add 0)
-    if ((column.array() != 0.0).count() == 1)
-      for (int row = 0; row < 3; ++row)
-        if (column(row) != 0.0) s.only_row[i] = static_cast<signed char>(row);
-  }
+  for (std::size_t i = 0; i < s.columns.size(); ++i) s.values.col(Eigen::Index(i)).head(rows.rows()) = rows.col(s.columns[i]);
   return s;
 }
 
@@ -305,12 +297,10 @@ void GapPairing::target_point(const double* y, std::size_t k, const Evaluation& 
   // the integrated columns only: a point load reads no others (FloatingBody::apply_force)
   t.Psi = Eigen::MatrixXd::Zero(dim_, master->n_dynamic());
   Eigen::Vector3d rate = Eigen::Vector3d::Zero();
-  const Eigen::VectorXd& qdot = master->qdot(y);
-  for (std::size_t i = 0; i < p.target_rows.columns.size(); ++i) {
-    const Eigen::Index j = p.target_rows.columns[i];
-    rate += p.target_rows.values.col(Eigen::Index(i)) * qdot(j);
-    if (j < master->n_dynamic()) t.Psi.col(j) = p.target_rows.values.col(Eigen::Index(i)).head(dim_);
-  }
+  p.target_rows.add_product(master->qdot(y), rate);
+  // the columns ascend, the integrated ones first
+  for (std::size_t i = 0; i < p.target_rows.columns.size() && p.target_rows.columns[i] < master->n_dynamic(); ++i)
+    t.Psi.col(p.target_rows.columns[i]) = p.target_rows.values.col(Eigen::Index(i)).head(dim_);
   t.velocity = master->v(y) + master->orientation(y).toRotationMatrix() * (master->omega(y).cross(e.target_point) + rate);
 }
 

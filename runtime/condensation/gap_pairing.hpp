@@ -25,18 +25,9 @@ namespace isosid::run {
 struct SparseRows {
   std::vector<Eigen::Index> columns;
   Eigen::Matrix<double, 3, Eigen::Dynamic> values;  ///< 3 x columns (unused rows zero)
-  /// Of each column, the one row it moves, or -1 where it moves more than one: a massless
-  /// boundary's coordinates are control points' displacements, each along one axis.
-  std::vector<signed char> only_row;
   /// Adds the rows' product with q (all the body's coordinates) to out.
   void add_product(const Eigen::VectorXd& q, Eigen::Vector3d& out) const {
-    for (std::size_t i = 0; i < columns.size(); ++i) {
-      const Eigen::Index c = Eigen::Index(i);
-      if (const int row = only_row[i]; row >= 0)
-        out(row) += values(row, c) * q(columns[i]);
-      else
-        out += values.col(c) * q(columns[i]);
-    }
+    for (std::size_t i = 0; i < columns.size(); ++i) out += values.col(Eigen::Index(i)) * q(columns[i]);
   }
   /// The entries of a dense dim x nq block above a relative threshold of its largest.
   static SparseRows from(const Eigen::Ref<const Eigen::MatrixXd>& rows);

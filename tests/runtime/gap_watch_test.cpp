@@ -231,26 +231,3 @@ TEST_CASE("gap space: the rows' bound holds for every pair's rows, and follows t
     CHECK(bound.of_difference(a, b) < 1e-2 * frobenius * (a - b).norm());
   }
 }
-
-TEST_CASE("gap space: a pair's rows give the dense rows' product bitwise, their one-axis columns read once", "[runtime][unit][gap-space]") {
-  // a massless boundary's columns (control points' displacements, each along one axis) beside
-  // normal modes' columns that move all three rows, and a column too small to keep
-  std::srand(11);
-  const Eigen::Index n = 40;
-  Eigen::Matrix<double, 3, Eigen::Dynamic> rows = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, n);
-  for (Eigen::Index j = 0; j < 30; ++j) rows(j % 3, j) = 0.5 + 0.01 * double(j);
-  rows.rightCols(9).setRandom();
-  rows(1, 30) = 1e-20;
-  const run::SparseRows sparse = run::SparseRows::from(rows);
-  REQUIRE(sparse.columns.size() == std::size_t(n - 1));
-  CHECK(std::count_if(sparse.only_row.begin(), sparse.only_row.end(), [](signed char r) { return r >= 0; }) == 30);
-  for (std::size_t i = 0; i < 30; ++i) CHECK(sparse.only_row[i] == sparse.columns[i] % 3);
-  for (int trial = 0; trial < 10; ++trial) {
-    const Eigen::VectorXd q = Eigen::VectorXd::Random(n);
-    Eigen::Vector3d product = Eigen::Vector3d::Constant(0.25), dense = product;
-    sparse.add_product(q, product);
-    for (Eigen::Index j = 0; j < n; ++j)
-      if (j != 30) dense += rows.col(j) * q(j);
-    CHECK(product == dense);
-  }
-}
