@@ -53,9 +53,11 @@ AssembledBody assemble(const ModelSpec& spec, bool with_mass, StageClock& clock)
   return a;
 }
 
-/// f(), with a stage's memory refusal as the input error it is: the model asks for more than fits.
+/// f(), one preparation, with a stage's memory refusal as the input error it is: the model asks
+/// for more than fits.
 template <class F>
 auto refusing_oversize(const ModelSpec& spec, F&& f) {
+  const PreparationMemory span;  // what its stages reserve on the machine ends with it
   try {
     return f();
   } catch (const MemoryRefusal& e) {

@@ -2,12 +2,18 @@
 #include "reduce/memory_budget.hpp"
 
 #include "isosid/common/heap_reuse.hpp"
+#include "isosid/common/progress_line.hpp"
+#include "reduce/memory_ledger.hpp"
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <mutex>
+#include <optional>
 #include <sys/resource.h>
+#include <thread>
 
 namespace isosid::prep {
 namespace {
@@ -32,6 +38,25 @@ double available_bytes() {
   return bytes;
 }
 
+/// The process's place in the machine's memory ledger, and the lock of its checks (a
+/// process's preparations may run on threads of their own).
+struct ProcessLedger {
+  std::mutex mutex;
+  std::optional<MemoryLedger> ledger;  ///< in ledger_folder() as it was at the last check
+  int preparations = 0;                ///< PreparationMemory scopes open
+
+  MemoryLedger& current() {
+    const std::string folder = ledger_folder();
+    if (!ledger || ledger->folder() != folder) ledger.emplace(folder);  // the old one's file withdrawn
+    return *ledger;
+  }
+};
+
+ProcessLedger& process_ledger() {
+  static ProcessLedger the;
+  return the;
+}
+
 std::string gib(double bytes) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g GiB", bytes / (1024.0 * 1024.0 * 1024.0));
@@ -48,10 +73,49 @@ double memory_limit() {
 }
 
 void check_memory(const std::string& field, const std::string& what, double bytes) {
-  const double limit = memory_limit();
-  if (limit > 0 && bytes > limit)
-    throw MemoryRefusal(field, what + " needs about " + gib(bytes) + ", more than the " + gib(limit) +
-                        (g_limit.load() > 0 ? " of --memory-limit" : " this machine has available"));
+  const double set = g_limit.load();
+  if (set > 0) {  // the user's limit for this process alone
+    if (bytes > set) throw MemoryRefusal(field, what + " needs about " + gib(bytes) + ", more than the " + gib(set) + " of --memory-limit");
+    return;
+  }
+  // the machine's memory, shared with the other preparations running on it (memory_ledger)
+  ProcessLedger& process = process_ledger();
+  const std::lock_guard<std::mutex> one_check(process.mutex);
+  MemoryLedger& ledger = process.current();
+  const std::string step = common::work_step();
+  bool waited = false;
+  for (;;) {
+    const double available = available_bytes();
+    if (available <= 0) return;  // not known here: nothing to check against
+    switch (ledger.request(bytes, available)) {
+      case Admission::Start:
+        if (waited) common::set_work_step(step);
+        return;
+      case Admission::Refuse:
+        throw MemoryRefusal(field, what + " needs about " + gib(bytes) + ", more than the " +
+                                       (ledger.others_growing() > 0 ? gib(available + ledger.others_resident()) + " this machine would have available once the " +
+                                                                          std::to_string(ledger.others_growing()) + " other preparation(s) running on it end"
+                                                                    : gib(available) + " this machine has available"));
+      case Admission::Wait:
+        if (!waited)
+          common::set_work_step("waiting for memory: " + what + " needs about " + gib(bytes) + ", and " + std::to_string(ledger.others_growing()) +
+                                " other preparation(s) running on this machine will take " + gib(ledger.others_growth()) + " more of the " + gib(available) + " available");
+        waited = true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    }
+  }
+}
+
+PreparationMemory::PreparationMemory() {
+  ProcessLedger& process = process_ledger();
+  const std::lock_guard<std::mutex> lock(process.mutex);
+  ++process.preparations;
+}
+
+PreparationMemory::~PreparationMemory() {
+  ProcessLedger& process = process_ledger();
+  const std::lock_guard<std::mutex> lock(process.mutex);
+  if (--process.preparations == 0 && process.ledger) process.ledger->withdraw();
 }
 
 }  // namespace isosid::prep

@@ -26,7 +26,20 @@ void set_memory_limit(double bytes);
 /// /proc/meminfo, or a lower RLIMIT_AS or RLIMIT_DATA).
 double memory_limit();
 /// Throws MemoryRefusal if `bytes`, the estimated peak of `what`, exceed the limit; `field`:
-/// the model file's part that sets its size.
+/// the model file's part that sets its size. Against the machine's memory (no limit set), the
+/// other preparations running on the machine count with what they are about to take: a stage
+/// that fits once they end waits for them (the step says so), one that does not is refused.
 void check_memory(const std::string& field, const std::string& what, double bytes);
+
+/// One preparation's span in this process: when the outermost ends, what its stages reserved
+/// in the machine's memory ledger is withdrawn, so that the other preparations stop counting
+/// it while the process lives on (Python's isosid.prepare).
+class PreparationMemory {
+public:
+  PreparationMemory();
+  ~PreparationMemory();
+  PreparationMemory(const PreparationMemory&) = delete;
+  PreparationMemory& operator=(const PreparationMemory&) = delete;
+};
 
 }  // namespace isosid::prep
