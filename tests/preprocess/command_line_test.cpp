@@ -1,7 +1,7 @@
 // isosid-prep's command line: flags it cannot all honour are refused in one line (exit 2)
 // before any work, never some of them dropped; an output that is no regular file is refused
 // before the work too; --version; the reduction's steps in its progress; its memory checks.
-#include "reduce/memory_ledger.hpp"
+#include "preprocess/other_preparation.hpp"
 #include "support/run_program.hpp"
 #include "support/scene_text.hpp"
 #include "support/one_line_exit.hpp"
@@ -97,20 +97,9 @@ TEST_CASE("isosid-prep refuses a model above its memory limit before the stage, 
 TEST_CASE("isosid-prep waits for the memory another preparation on the machine is about to take, and starts once it ends", "[prep][command-line]") {
   const test::ScratchDir dir("prep-ledger");
   const std::string folder = dir.path("ledger");
-  int ready[2];
-  REQUIRE(::pipe(ready) == 0);
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) {  // another preparation whose stage will take 1 PB more, running for 3 s
-    prep::MemoryLedger other(folder);
-    const char byte = other.request(1e15, 1e16) == prep::Admission::Start ? 1 : 0;
-    (void)!::write(ready[1], &byte, 1);
-    ::sleep(3);
-    ::_exit(0);  // as a killed one would: its file stays, and the ledger finds it ended
-  }
-  char byte = 0;
-  REQUIRE(::read(ready[0], &byte, 1) == 1);
-  REQUIRE(byte == 1);
+  // another preparation whose stage will take 1 PB more, ending after 3 s as a killed one would:
+  // its file stays, and the ledger finds it ended
+  const pid_t child = test::fork_other_preparation(folder, 1e15, 3);
   const auto r = test::run_program("ISOSID_MEMORY_LEDGER=" + folder + " " + kPrep + " " + kSphere + " -o " + dir.path("x.sid.h5"));
   ::waitpid(child, nullptr, 0);
   CHECK(r.exit_status == 0);

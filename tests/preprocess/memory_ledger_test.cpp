@@ -2,6 +2,7 @@
 // its decision, its files between processes, and a preparation's entry while it runs.
 #include "model/model_file.hpp"
 #include "pipeline/prepare.hpp"
+#include "preprocess/other_preparation.hpp"
 #include "reduce/memory_ledger.hpp"
 #include "support/run_program.hpp"
 
@@ -39,20 +40,7 @@ TEST_CASE("a stage starts beside the other preparations' coming growth, waits wh
 TEST_CASE("the ledger counts a live preparation's reservation and drops an ended one's or a reused pid's", "[memory]") {
   const test::ScratchDir dir("memory-ledger");
   const std::string folder = dir.path("ledger");
-  int ready[2];
-  REQUIRE(::pipe(ready) == 0);
-  const pid_t child = ::fork();
-  REQUIRE(child >= 0);
-  if (child == 0) {  // another preparation: reserves 1 TB to come, then runs until killed
-    prep::MemoryLedger other(folder);
-    const char byte = other.request(1e12, 1e13) == Admission::Start ? 1 : 0;
-    (void)!::write(ready[1], &byte, 1);
-    ::pause();
-    ::_exit(0);
-  }
-  char byte = 0;
-  REQUIRE(::read(ready[0], &byte, 1) == 1);
-  REQUIRE(byte == 1);
+  const pid_t child = test::fork_other_preparation(folder, 1e12, 0);  // 1 TB to come, running until killed
   // a file named by a live pid (1) that records another start time: a pid since reused
   std::ofstream(folder + "/1") << "12345 1000000000000 0\n";
   {
