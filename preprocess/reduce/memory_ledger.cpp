@@ -7,7 +7,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -18,9 +21,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A live process's start time (clock ticks after boot, field 22 of /proc/<pid>/stat), or
-/// none for a process that ended (also one that is a zombie until its parent reaps it).
-std::optional<unsigned long long> start_time(const std::string& pid) {
+const std::string kPrefix = "pid-";
+
+struct ProcessState {
+  unsigned long long start_ticks = 0;  ///< clock ticks after boot (field 22 of /proc/<pid>/stat)
+  bool stopped = false;                ///< by a signal or a tracer (state T or t)
+};
+
+/// A live process's start time and whether it is stopped, or none for a process that ended
+/// (also one that is a zombie until its parent reaps it).
+std::optional<ProcessState> process_state(const std::string& pid) {
   std::ifstream in("/proc/" + pid + "/stat");
   std::string line;
   if (!std::getline(in, line)) return std::nullopt;
@@ -32,9 +42,10 @@ std::optional<unsigned long long> start_time(const std::string& pid) {
   if (state == "Z" || state == "X") return std::nullopt;
   std::string skip;
   for (int field = 4; field < 22; ++field) fields >> skip;
-  unsigned long long ticks = 0;
-  if (!(fields >> ticks)) return std::nullopt;
-  return ticks;
+  ProcessState out;
+  if (!(fields >> out.start_ticks)) return std::nullopt;
+  out.stopped = state == "T" || state == "t";
+  return out;
 }
 
 /// A process's resident memory in bytes (/proc/<pid>/statm), 0 if it cannot be read.
@@ -45,82 +56,116 @@ double resident_bytes(const std::string& pid) {
   return resident * double(::sysconf(_SC_PAGESIZE));
 }
 
-/// A folder only this user may write, created if missing; false if it cannot be had.
-bool own_folder(const std::string& folder) {
+/// The folder, created if missing (mode 0700); empty if it can be used, else why not.
+std::string own_folder(const std::string& folder) {
   std::error_code ec;
-  fs::create_directories(folder, ec);
+  fs::create_directories(fs::path(folder).parent_path(), ec);
+  if (::mkdir(folder.c_str(), 0700) != 0 && errno != EEXIST) return std::strerror(errno);
   struct stat info {};
-  if (::stat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode) || info.st_uid != ::getuid()) return false;
-  return ::access(folder.c_str(), W_OK) == 0;
+  if (::lstat(folder.c_str(), &info) != 0) return std::strerror(errno);
+  if (!S_ISDIR(info.st_mode)) return "it is not a folder";
+  if (info.st_uid != ::getuid()) return "another user owns it";
+  if ((info.st_mode & 077) != 0 && ::chmod(folder.c_str(), 0700) != 0) return std::strerror(errno);
+  return "";
+}
+
+/// The pid a ledger file's name gives, or empty for a file of another name.
+std::string pid_of(const std::string& name) {
+  if (name.size() <= kPrefix.size() || name.compare(0, kPrefix.size(), kPrefix) != 0) return "";
+  const std::string pid = name.substr(kPrefix.size());
+  return pid.find_first_not_of("0123456789") == std::string::npos ? pid : "";
 }
 
 }  // namespace
 
-Admission admission(double bytes, double available, const std::vector<LedgerEntry>& others) {
-  double growth = 0, returned = 0;
-  int growing = 0;
+Growers growers(const std::vector<LedgerEntry>& others) {
+  Growers g;
   for (const LedgerEntry& o : others) {
     if (o.waiting) continue;
-    ++growing;
-    growth += std::max(0.0, o.reserved - o.resident);
-    returned += o.resident;
+    ++g.count;
+    g.growth += std::max(0.0, o.reserved - o.resident);
+    g.resident += o.resident;
   }
-  if (bytes <= available - growth) return Admission::Start;
-  return growing > 0 && bytes <= available + returned ? Admission::Wait : Admission::Refuse;
+  return g;
+}
+
+Admission admission(double bytes, double available, const std::vector<LedgerEntry>& others) {
+  const Growers g = growers(others);
+  if (bytes <= available - g.growth) return Admission::Start;
+  return g.count > 0 && bytes <= available + g.resident ? Admission::Wait : Admission::Refuse;
 }
 
 std::string ledger_folder() {
-  if (const char* set = std::getenv("ISOSID_MEMORY_LEDGER"); set && *set) return set;
-  const std::string shm = fs::is_directory("/dev/shm") ? "/dev/shm" : fs::temp_directory_path().string();
-  return shm + "/isosid-memory-" + std::to_string(::getuid());
+  std::error_code ec;
+  if (const char* set = std::getenv("ISOSID_MEMORY_LEDGER"); set && *set) {
+    const fs::path absolute = fs::absolute(set, ec);
+    return ec ? std::string(set) : absolute.string();
+  }
+  fs::path base = fs::is_directory("/dev/shm", ec) ? fs::path("/dev/shm") : fs::temp_directory_path(ec);
+  if (ec || base.empty()) base = "/tmp";
+  return (base / ("isosid-memory-" + std::to_string(::getuid()))).string();
 }
 
-MemoryLedger::MemoryLedger(std::string folder) : folder_(std::move(folder)) { usable_ = own_folder(folder_); }
+MemoryLedger::MemoryLedger(std::string folder) : folder_(std::move(folder)) { problem_ = own_folder(folder_); }
 
 void MemoryLedger::withdraw() {
-  if (!usable_) return;
+  if (!usable()) return;
   const common::FileLock lock(folder_ + "/lock", common::FileLock::Mode::Exclusive);
   std::error_code ec;
-  fs::remove(fs::path(folder_) / std::to_string(::getpid()), ec);
+  fs::remove(fs::path(folder_) / (kPrefix + std::to_string(::getpid())), ec);
 }
 
-Admission MemoryLedger::request(double bytes, double available) {
-  others_growing_ = 0;
-  others_growth_ = 0;
-  others_resident_ = 0;
-  if (!usable_) return admission(bytes, available, {});
-  const common::FileLock lock(folder_ + "/lock", common::FileLock::Mode::Exclusive);
+void MemoryLedger::update(const Decide& decide) {
   const std::string self = std::to_string(::getpid());
+  std::optional<common::FileLock> lock;
+  if (usable()) lock.emplace(folder_ + "/lock", common::FileLock::Mode::Exclusive);
+  if (!lock || !lock->held()) {  // no ledger: this process alone
+    decide({}, resident_bytes(self));
+    return;
+  }
   std::vector<LedgerEntry> others;
   std::error_code ec;
   for (const fs::directory_entry& file : fs::directory_iterator(folder_, ec)) {
-    const std::string pid = file.path().filename().string();
-    if (pid == self || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    const std::string pid = pid_of(file.path().filename().string());
+    if (pid.empty() || pid == self) continue;
     std::ifstream in(file.path());
     unsigned long long recorded = 0;
     LedgerEntry entry;
     int waiting = 0;
     const bool read = bool(in >> recorded >> entry.reserved >> waiting);
-    const auto started = start_time(pid);
-    if (!read || !started || *started != recorded) {  // ended, or its pid reused since
+    const auto state = process_state(pid);
+    if (!read || !state || state->start_ticks != recorded) {  // ended, or its pid reused since
       in.close();
       fs::remove(file.path(), ec);
       continue;
     }
-    entry.waiting = waiting != 0;
+    entry.waiting = waiting != 0 || state->stopped;  // a stopped process is not waited for
     entry.resident = resident_bytes(pid);
-    if (!entry.waiting) {
-      ++others_growing_;
-      others_growth_ += std::max(0.0, entry.reserved - entry.resident);
-      others_resident_ += entry.resident;
-    }
     others.push_back(entry);
   }
-  const Admission decision = admission(bytes, available, others);
-  const double resident = resident_bytes(self);
-  std::ofstream out(fs::path(folder_) / self, std::ios::trunc);
-  const bool starts = decision == Admission::Start;
-  out << start_time(self).value_or(0) << ' ' << static_cast<long long>(starts ? resident + bytes : resident) << ' ' << (starts ? 0 : 1) << '\n';
+  const LedgerRecord record = decide(others, resident_bytes(self));
+  // written beside and renamed over: a reader sees the old record or the new, never a part
+  const fs::path file = fs::path(folder_) / (kPrefix + self), written = fs::path(folder_) / (kPrefix + self + ".new");
+  {
+    std::ofstream out(written, std::ios::trunc);
+    out << process_state(self).value_or(ProcessState{}).start_ticks << ' ' << static_cast<long long>(record.reserved) << ' '
+        << (record.waiting ? 1 : 0) << '\n';
+    if (!out.flush()) {
+      out.close();
+      fs::remove(written, ec);
+      return;
+    }
+  }
+  fs::rename(written, file, ec);
+}
+
+Admission MemoryLedger::request(double bytes, double available, Growers* others) {
+  Admission decision = Admission::Start;
+  update([&](const std::vector<LedgerEntry>& entries, double resident) {
+    decision = admission(bytes, available, entries);
+    if (others) *others = growers(entries);
+    return decision == Admission::Start ? LedgerRecord{resident + bytes, false} : LedgerRecord{resident, true};
+  });
   return decision;
 }
 

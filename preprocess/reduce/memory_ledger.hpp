@@ -2,21 +2,37 @@
 // the adaptive loop's builds side by side. Each preparation checks a large stage's estimate
 // against the memory available (memory_budget), which shows what the others hold but not what
 // they are about to take: two stages that each fit alone could start together, and the kernel
-// would kill one part way. The ledger, a folder with one file per preparation that says how
-// much it will hold at its current stage's peak, lets a check count the others' coming growth,
-// and wait for them where its stage fits once they end.
+// would kill one part way. The ledger, a folder with one file per process that says how much
+// it will hold at most in its current stages, lets a check count the others' coming growth,
+// and wait for them where its stage fits once they end. (The preparations one process runs
+// on threads of its own are counted together by memory_budget.)
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace isosid::prep {
 
-/// Another preparation, as the ledger and /proc show it.
+/// Another process's entry, as the ledger and /proc show it.
 struct LedgerEntry {
-  double reserved = 0;   ///< bytes it will hold at its stage's peak (its resident memory at its check plus the stage's estimate)
+  double reserved = 0;   ///< bytes it will hold at most in its current stages (its resident memory at a check plus the estimates)
   double resident = 0;   ///< bytes it holds now
-  bool waiting = false;  ///< waiting for memory itself: it will not grow until it starts
+  bool waiting = false;  ///< waiting for memory itself, or stopped (a signal, a debugger): it will not grow until it goes on
 };
+
+/// What a process records of itself.
+struct LedgerRecord {
+  double reserved = 0;
+  bool waiting = false;
+};
+
+/// The entries that grow (not waiting): how many, their coming growth (reserved less resident)
+/// and what they hold, in bytes.
+struct Growers {
+  int count = 0;
+  double growth = 0, resident = 0;
+};
+Growers growers(const std::vector<LedgerEntry>& others);
 
 enum class Admission {
   Start,   ///< the stage fits beside the others' coming growth
@@ -29,13 +45,15 @@ enum class Admission {
 /// counted nor waited for: two preparations never wait for each other.
 Admission admission(double bytes, double available, const std::vector<LedgerEntry>& others);
 
-/// The ledger's folder: $ISOSID_MEMORY_LEDGER, else /dev/shm/isosid-memory-<uid> (memory of
-/// this machine: each node of a cluster has its own).
+/// The ledger's folder: $ISOSID_MEMORY_LEDGER (made absolute), else
+/// /dev/shm/isosid-memory-<uid> (memory of this machine: each node of a cluster has its own),
+/// or the temporary folder where there is no /dev/shm.
 std::string ledger_folder();
 
-/// This process's place in a ledger. Its file is named by the pid and records the process's
-/// start time, so that a file left by a process that ended (also by a crash or a kill) or of a
-/// pid since reused is recognised as stale and removed.
+/// This process's place in a ledger: a file `pid-<pid>` that records the process's start time,
+/// so that a file left by a process that ended (also by a crash or a kill) or of a pid since
+/// reused is recognised as stale and removed, and its record. The folder must be this user's
+/// own, not a link, and is kept to mode 0700; files of other names are never touched.
 class MemoryLedger {
 public:
   explicit MemoryLedger(std::string folder);
@@ -43,25 +61,25 @@ public:
   MemoryLedger(const MemoryLedger&) = delete;
   MemoryLedger& operator=(const MemoryLedger&) = delete;
 
-  /// Under the ledger's lock: reads the other live preparations, decides by admission(), and
-  /// records this one's file (Start: its resident memory plus `bytes`; Wait or Refuse: its
-  /// resident memory, waiting). Without a usable folder there are no others.
-  Admission request(double bytes, double available);
-  const std::string& folder() const { return folder_; }
-  /// Removes this process's file: it reserves nothing until its next request.
+  /// Under the ledger's lock: reads the other live processes' entries, lets `decide` choose
+  /// this process's record from them and its own resident memory, and writes it (atomically:
+  /// a reader never sees it half written). Without a usable folder or its lock, `decide` sees
+  /// no others and nothing is written.
+  using Decide = std::function<LedgerRecord(const std::vector<LedgerEntry>& others, double resident)>;
+  void update(const Decide& decide);
+  /// One preparation in this process: decides by admission() and records its resident memory
+  /// plus `bytes` on Start, else its resident memory, waiting. `others` receives the growers.
+  Admission request(double bytes, double available, Growers* others = nullptr);
+  /// Removes this process's file: it reserves nothing until its next update.
   void withdraw();
-  /// The others growing (not waiting) at the last request, their coming growth and what they
-  /// hold, in bytes.
-  int others_growing() const { return others_growing_; }
-  double others_growth() const { return others_growth_; }
-  double others_resident() const { return others_resident_; }
+
+  const std::string& folder() const { return folder_; }
+  bool usable() const { return problem_.empty(); }
+  /// Why the folder cannot be used (empty: it can).
+  const std::string& problem() const { return problem_; }
 
 private:
-  std::string folder_;
-  bool usable_ = false;
-  int others_growing_ = 0;
-  double others_growth_ = 0;
-  double others_resident_ = 0;
+  std::string folder_, problem_;
 };
 
 }  // namespace isosid::prep

@@ -97,9 +97,9 @@ TEST_CASE("isosid-prep refuses a model above its memory limit before the stage, 
 TEST_CASE("isosid-prep waits for the memory another preparation on the machine is about to take, and starts once it ends", "[prep][command-line]") {
   const test::ScratchDir dir("prep-ledger");
   const std::string folder = dir.path("ledger");
-  // another preparation whose stage will take 1 PB more, ending after 3 s as a killed one would:
-  // its file stays, and the ledger finds it ended
-  const pid_t child = test::fork_other_preparation(folder, 1e15, 3);
+  // another preparation whose stage will take 1 PB more, ending once isosid-prep waits, as a
+  // killed one would: its file stays, and the ledger finds it ended
+  const pid_t child = test::fork_other_preparation(folder, 1e15, test::OtherEnds::WhenAnotherWaits);
   const auto r = test::run_program("ISOSID_MEMORY_LEDGER=" + folder + " " + kPrep + " " + kSphere + " -o " + dir.path("x.sid.h5"));
   ::waitpid(child, nullptr, 0);
   CHECK(r.exit_status == 0);
