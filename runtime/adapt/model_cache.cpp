@@ -112,10 +112,12 @@ std::vector<CachedSid> ModelCache::lookup(const std::vector<Request>& requests) 
       }
     }
     if (running.empty()) break;
-    Running done = std::move(running.front());  // output is read to its end, one build after the other
+    Running done = std::move(running.front());  // output is passed on to its end, one build after the other
     running.pop_front();
+    std::vector<PrepProcess*> beside;  // their output read ahead meanwhile
+    for (Running& r : running) beside.push_back(&r.process);
     try {
-      finish_prep(done.process);
+      finish_prep(done.process, beside);
       // until this program had the SID: a build that ends before the one ahead of it waits for it
       out[done.index].seconds = std::chrono::duration<double>(Clock::now() - done.start).count();
       ++builds_;

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <poll.h>
 #include <sched.h>
 #include <sys/wait.h>
 #include <thread>
@@ -38,7 +39,12 @@ PrepProcess::PrepProcess(pid_t pid_, int output_, std::string model_, std::strin
     : pid(pid_), output(output_), model(std::move(model_)), sid(std::move(sid_)), quiet(quiet_) {}
 
 PrepProcess::PrepProcess(PrepProcess&& other) noexcept
-    : pid(std::exchange(other.pid, -1)), output(std::exchange(other.output, -1)), model(std::move(other.model)), sid(std::move(other.sid)), quiet(other.quiet) {}
+    : pid(std::exchange(other.pid, -1)),
+      output(std::exchange(other.output, -1)),
+      model(std::move(other.model)),
+      sid(std::move(other.sid)),
+      quiet(other.quiet),
+      pending(std::move(other.pending)) {}
 
 namespace {
 /// waitpid, again after a signal: the child's pid, or -1 with errno set.
@@ -109,22 +115,53 @@ PrepProcess start_prep(const std::string& model, const std::string& sid, const s
   return PrepProcess(pid, channel[0], model, sid, quiet);
 }
 
-void finish_prep(PrepProcess& process) {
-  std::string message;  // the program's own "error:" or "failed:" line
-  if (FILE* output = ::fdopen(process.output, "r")) {
-    process.output = -1;  // the stream owns it now
-    char* line = nullptr;
-    std::size_t capacity = 0;
-    for (ssize_t n; (n = ::getline(&line, &capacity, output)) > 0;) {
-      std::string text(line, std::size_t(n));
-      if (text.back() == '\n') text.pop_back();
-      for (const char* prefix : {"isosid-prep: error: ", "isosid-prep: failed: "})
-        if (text.rfind(prefix, 0) == 0) message = text.substr(std::strlen(prefix));
-      if (message.empty() && !process.quiet) std::fprintf(stderr, "%s\n", text.c_str());  // its report too: quiet is quiet
+namespace {
+/// Passes the complete lines of `process`'s output read so far on (its error line kept in
+/// `message`), all of it at the end (`last`).
+void take_lines(PrepProcess& process, std::string& message, bool last) {
+  std::size_t begin = 0;
+  for (std::size_t end; begin < process.pending.size(); begin = end + 1) {
+    end = process.pending.find('\n', begin);
+    if (end == std::string::npos) {
+      if (!last) break;
+      end = process.pending.size();
     }
-    std::free(line);
-    std::fclose(output);
+    const std::string text = process.pending.substr(begin, end - begin);
+    for (const char* prefix : {"isosid-prep: error: ", "isosid-prep: failed: "})
+      if (text.rfind(prefix, 0) == 0) message = text.substr(std::strlen(prefix));
+    if (message.empty() && !process.quiet) std::fprintf(stderr, "%s\n", text.c_str());  // its report too: quiet is quiet
   }
+  process.pending.erase(0, std::min(begin, process.pending.size()));
+}
+}  // namespace
+
+void finish_prep(PrepProcess& process, const std::vector<PrepProcess*>& beside) {
+  std::string message;  // the program's own "error:" or "failed:" line
+  take_lines(process, message, false);  // what was read ahead while another was waited for
+  while (process.output >= 0) {
+    std::vector<PrepProcess*> readers{&process};
+    std::vector<pollfd> fds{{process.output, POLLIN, 0}};
+    for (PrepProcess* other : beside)
+      if (other->output >= 0) {
+        readers.push_back(other);
+        fds.push_back({other->output, POLLIN, 0});
+      }
+    if (::poll(fds.data(), nfds_t(fds.size()), -1) < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    for (std::size_t i = 0; i < fds.size(); ++i) {
+      if (fds[i].revents == 0) continue;
+      char chunk[65536];
+      const ssize_t n = ::read(fds[i].fd, chunk, sizeof chunk);
+      if (n > 0)
+        readers[i]->pending.append(chunk, std::size_t(n));
+      else if (n == 0 || errno != EINTR)  // its end (the build closed its output by ending)
+        ::close(std::exchange(readers[i]->output, -1));
+    }
+    take_lines(process, message, false);
+  }
+  take_lines(process, message, true);
   if (process.output >= 0) ::close(std::exchange(process.output, -1));
   int status = 0;
   const pid_t waited = reap(process.pid, &status);

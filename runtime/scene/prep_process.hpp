@@ -18,6 +18,7 @@ struct PrepProcess {
   std::string model;
   std::string sid;  ///< the file it writes
   bool quiet = true;
+  std::string pending;  ///< its output read, not yet passed on (read ahead while another build was waited for)
 
   PrepProcess(pid_t pid, int output, std::string model, std::string sid, bool quiet);
   PrepProcess(PrepProcess&& other) noexcept;
@@ -38,7 +39,9 @@ PrepProcess start_prep(const std::string& model, const std::string& sid, const s
 /// Waits for a started isosid-prep. Its progress lines pass through to stderr; its one-line
 /// error is held back and becomes this program's: InputError for a refused model (its exit 2),
 /// ComputationError for any other failure. A SID it built gets its digest recorded (sid_digest).
-void finish_prep(PrepProcess& process);
+/// The builds `beside` it have their output read meanwhile and kept (PrepProcess::pending): one
+/// blocked on a full pipe could hold memory this build waits for (preprocess's memory ledger).
+void finish_prep(PrepProcess& process, const std::vector<PrepProcess*>& beside = {});
 
 /// start_prep, then finish_prep (`what` says why it runs, in the progress line).
 void run_prep(const std::string& model, const std::string& sid, const std::vector<std::string>& extra, bool quiet,

@@ -154,3 +154,28 @@ TEST_CASE("model cache: a refused request in a batch is thrown after the other b
   // the good request's SID is whole and in the cache: asked again, it is a hit
   CHECK(cache.fine(model, {"contact", {0.05}, 0.5e-3}).hit);
 }
+
+TEST_CASE("a build waited for does not leave the one beside it blocked on its output", "[runtime][unit][adaptive]") {
+  // Builds side by side are passed on one after the other, and one may wait for memory another
+  // is about to take (preprocess's memory ledger). A stand-in for isosid-prep: the build of
+  // "front" waits until the build of "beside" has printed 1 MB and ended; unread, "beside"
+  // would block on its full pipe and neither would end.
+  const test::ScratchDir dir("prep-output-beside");
+  const std::string script = dir.path("prep.sh"), done = dir.path("beside-done");
+  std::ofstream(script) << "#!/bin/sh\n"
+                           "if [ \"$1\" = front ]; then\n"
+                           "  i=0; while [ ! -e " << done << " ] && [ $i -lt 200 ]; do sleep 0.05; i=$((i+1)); done\n"
+                           "  [ -e " << done << " ] || { echo 'isosid-prep: failed: beside never ended' >&2; exit 1; }\n"
+                           "  echo 'front: built'; exit 0\n"
+                           "fi\n"
+                           "head -c 1000000 /dev/zero | tr '\\0' 'x' | fold -w 100 >&2\n"
+                           "touch " << done << "\n";
+  std::filesystem::permissions(script, std::filesystem::perms::owner_all);
+  ::setenv("ISOSID_PREP", script.c_str(), 1);
+  run::PrepProcess front = run::start_prep("front", "", {}, true, "");
+  run::PrepProcess beside = run::start_prep("beside", "", {}, true, "");
+  CHECK_NOTHROW(run::finish_prep(front, {&beside}));
+  CHECK(beside.pending.size() >= 1000000);  // read while the front was waited for
+  CHECK_NOTHROW(run::finish_prep(beside));
+  ::unsetenv("ISOSID_PREP");
+}
