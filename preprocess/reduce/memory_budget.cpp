@@ -40,38 +40,54 @@ double available_bytes() {
 }
 
 /// The process's place in the machine's memory ledger, and its preparations: one per thread
-/// that runs one (Python's isosid.prepare may run several at once), each with its stage's
-/// estimate, so that the process's record covers them all and each check counts the others.
+/// that runs one (Python's isosid.prepare may run several at once), each with what it will
+/// hold at most, so that the process's record covers them all and each check counts the others.
 struct ProcessLedger {
   struct Preparation {
-    double stage_bytes = 0;  ///< the estimate of its stage under way (0: none checked yet)
+    /// the process's memory this preparation will reach at most: the largest of its checks'
+    /// resident memory plus their estimates (an outer stage's stays while one within it runs)
+    double reserved = 0;
     bool waiting = false;
   };
   std::mutex mutex;
-  std::optional<MemoryLedger> ledger;  ///< in ledger_folder() as it was at the last check
-  std::map<long, Preparation> preparations;  ///< by PreparationMemory's number; 0: a check outside any
+  std::optional<MemoryLedger> ledger;        ///< in ledger_folder() as it was at the last check
+  std::map<long, Preparation> preparations;  ///< by PreparationMemory's number; 0: a check outside any, dropped after it
   long next_number = 1;
-  double reserved = 0;  ///< the process's record: the most any of its checks since its preparations began reserved
+  double base = 0;  ///< the process's resident memory when the first of its open preparations began
 
   MemoryLedger& current() {
     const std::string folder = ledger_folder();
     if (!ledger || ledger->folder() != folder) {
       ledger.emplace(folder);  // the old one's file withdrawn
       if (!ledger->usable())
-        std::fprintf(stderr, "isosid-prep: the memory ledger %s cannot be used (%s): preparations running at once on this machine do not see each other's memory\n",
+        std::fprintf(stderr, "isosid-prep: the memory ledger %s cannot be used (%s): this process's preparations do not see other processes' memory\n",
                      folder.c_str(), ledger->problem().c_str());
     }
     return *ledger;
   }
-  /// The estimates of this process's other preparations that go on (not waiting).
-  double siblings_bytes(long self) const {
-    double bytes = 0;
-    for (const auto& [number, p] : preparations)
-      if (number != self && !p.waiting) bytes += p.stage_bytes;
-    return bytes;
+  /// The process's other preparations as one more entry: what they will still take (each one's
+  /// reservation above the memory held now) and what they hold (the memory above the base).
+  std::optional<LedgerEntry> siblings(long self, double resident) const {
+    LedgerEntry entry{0, std::max(0.0, resident - base), true};
+    bool any = false;
+    for (const auto& [number, p] : preparations) {
+      if (number == self) continue;
+      any = true;
+      entry.reserved += std::max(0.0, p.reserved - resident);
+      entry.waiting = entry.waiting && p.waiting;
+    }
+    entry.reserved += entry.resident;
+    return any ? std::optional<LedgerEntry>(entry) : std::nullopt;
   }
-  bool all_waiting() const {
-    return std::all_of(preparations.begin(), preparations.end(), [](const auto& p) { return p.second.waiting; });
+  /// The process's record: the memory held now plus what each preparation will still take;
+  /// waiting when every one waits.
+  LedgerRecord record(double resident) const {
+    LedgerRecord r{resident, !preparations.empty()};
+    for (const auto& [number, p] : preparations) {
+      r.reserved += std::max(0.0, p.reserved - resident);
+      r.waiting = r.waiting && p.waiting;
+    }
+    return r;
   }
 };
 
@@ -119,22 +135,20 @@ void check_memory(const std::string& field, const std::string& what, double byte
     {
       const std::lock_guard<std::mutex> one_check(process.mutex);
       ProcessLedger::Preparation& me = process.preparations[t_preparation];
-      process.current().update([&](const std::vector<LedgerEntry>& entries, double resident) {
-        // this process's other preparations count as one more process that holds none of theirs yet
-        const double siblings = process.siblings_bytes(t_preparation);
+      MemoryLedger& ledger = process.current();
+      ledger.update([&](const std::vector<LedgerEntry>& entries, double resident) {
         std::vector<LedgerEntry> all = entries;
-        if (siblings > 0) all.push_back({siblings, 0, false});
+        if (const auto siblings = process.siblings(t_preparation, resident)) all.push_back(*siblings);
         decision = admission(bytes, available, all);
         others = growers(all);
         me.waiting = decision != Admission::Start;
-        if (decision == Admission::Start) {
-          me.stage_bytes = bytes;
-          // never less than before within the preparations: an outer stage's estimate (a MacNeal
-          // basis allocated after the factorization checked within it) stays reserved
-          process.reserved = std::max(process.reserved, resident + siblings + bytes);
-        }
-        return process.all_waiting() ? LedgerRecord{resident, true} : LedgerRecord{process.reserved, false};
+        if (decision == Admission::Start) me.reserved = std::max(me.reserved, resident + bytes);
+        return process.record(resident);
       });
+      if (t_preparation == 0 && decision != Admission::Wait) {  // a check outside any preparation reserves nothing after it
+        process.preparations.erase(0);
+        if (process.preparations.empty()) ledger.withdraw();
+      }
     }
     switch (decision) {
       case Admission::Start:
@@ -144,7 +158,8 @@ void check_memory(const std::string& field, const std::string& what, double byte
         throw MemoryRefusal(field, what + " needs about " + gib(bytes) + ", more than the " +
                                        (others.count > 0 ? gib(available + others.resident) + " this machine would have available once the " +
                                                               std::to_string(others.count) + " other preparation(s) running on it end"
-                                                        : gib(available) + " this machine has available"));
+                                                        : gib(available) + " this machine has available") +
+                                       (others.promised > 0 ? " (" + gib(others.promised) + " more of it promised to preparations that wait or are stopped)" : ""));
       case Admission::Wait:
         if (!waited)
           common::set_work_step("waiting for memory: " + what + " needs about " + gib(bytes) + ", and " + std::to_string(others.count) +
@@ -159,6 +174,8 @@ PreparationMemory::PreparationMemory() {
   if (t_depth++ > 0) return;  // nested: the outer one's
   ProcessLedger& process = process_ledger();
   const std::lock_guard<std::mutex> lock(process.mutex);
+  if (std::none_of(process.preparations.begin(), process.preparations.end(), [](const auto& p) { return p.first != 0; }))
+    process.base = own_resident_bytes();
   t_preparation = process.next_number++;
   process.preparations[t_preparation] = {};
 }
@@ -169,12 +186,11 @@ PreparationMemory::~PreparationMemory() {
   const std::lock_guard<std::mutex> lock(process.mutex);
   process.preparations.erase(t_preparation);
   t_preparation = 0;
-  const bool others = std::any_of(process.preparations.begin(), process.preparations.end(), [](const auto& p) { return p.first != 0; });
-  if (!others) {  // the last (with the checks made outside any)
-    process.preparations.clear();
-    process.reserved = 0;
-    if (process.ledger) process.ledger->withdraw();
-  }
+  if (!process.ledger) return;
+  if (process.preparations.empty())
+    process.ledger->withdraw();
+  else  // the others' record, without this one's reservation
+    process.ledger->update([&](const std::vector<LedgerEntry>&, double resident) { return process.record(resident); });
 }
 
 }  // namespace isosid::prep

@@ -81,9 +81,13 @@ std::string pid_of(const std::string& name) {
 Growers growers(const std::vector<LedgerEntry>& others) {
   Growers g;
   for (const LedgerEntry& o : others) {
-    if (o.waiting) continue;
+    const double coming = std::max(0.0, o.reserved - o.resident);
+    if (o.waiting) {
+      g.promised += coming;
+      continue;
+    }
     ++g.count;
-    g.growth += std::max(0.0, o.reserved - o.resident);
+    g.growth += coming;
     g.resident += o.resident;
   }
   return g;
@@ -91,7 +95,7 @@ Growers growers(const std::vector<LedgerEntry>& others) {
 
 Admission admission(double bytes, double available, const std::vector<LedgerEntry>& others) {
   const Growers g = growers(others);
-  if (bytes <= available - g.growth) return Admission::Start;
+  if (bytes <= available - g.growth - g.promised) return Admission::Start;
   return g.count > 0 && bytes <= available + g.resident ? Admission::Wait : Admission::Refuse;
 }
 
@@ -105,6 +109,8 @@ std::string ledger_folder() {
   if (ec || base.empty()) base = "/tmp";
   return (base / ("isosid-memory-" + std::to_string(::getuid()))).string();
 }
+
+double own_resident_bytes() { return resident_bytes(std::to_string(::getpid())); }
 
 MemoryLedger::MemoryLedger(std::string folder) : folder_(std::move(folder)) { problem_ = own_folder(folder_); }
 
@@ -126,8 +132,15 @@ void MemoryLedger::update(const Decide& decide) {
   std::vector<LedgerEntry> others;
   std::error_code ec;
   for (const fs::directory_entry& file : fs::directory_iterator(folder_, ec)) {
-    const std::string pid = pid_of(file.path().filename().string());
+    std::string name = file.path().filename().string();
+    const bool unfinished = name.size() > 4 && name.compare(name.size() - 4, 4, ".new") == 0;  // a record its writer did not rename
+    if (unfinished) name.resize(name.size() - 4);
+    const std::string pid = pid_of(name);
     if (pid.empty() || pid == self) continue;
+    if (unfinished) {
+      if (!process_state(pid)) fs::remove(file.path(), ec);
+      continue;
+    }
     std::ifstream in(file.path());
     unsigned long long recorded = 0;
     LedgerEntry entry;

@@ -27,10 +27,12 @@ struct LedgerRecord {
 };
 
 /// The entries that grow (not waiting): how many, their coming growth (reserved less resident)
-/// and what they hold, in bytes.
+/// and what they hold, in bytes; and the coming growth of those that wait or are stopped, which
+/// they will take when they go on.
 struct Growers {
   int count = 0;
   double growth = 0, resident = 0;
+  double promised = 0;
 };
 Growers growers(const std::vector<LedgerEntry>& others);
 
@@ -41,14 +43,17 @@ enum class Admission {
 };
 
 /// Whether a stage needing `bytes` more may start with `available` bytes free on the machine
-/// beside `others`. Preparations that wait neither grow nor end soon, so they are neither
-/// counted nor waited for: two preparations never wait for each other.
+/// beside `others`: beside everyone's coming growth. Preparations that wait (or are stopped)
+/// do not end soon, so they are not waited for: two preparations never wait for each other.
 Admission admission(double bytes, double available, const std::vector<LedgerEntry>& others);
 
 /// The ledger's folder: $ISOSID_MEMORY_LEDGER (made absolute), else
 /// /dev/shm/isosid-memory-<uid> (memory of this machine: each node of a cluster has its own),
 /// or the temporary folder where there is no /dev/shm.
 std::string ledger_folder();
+
+/// This process's resident memory in bytes (/proc/self/statm), 0 if it cannot be read.
+double own_resident_bytes();
 
 /// This process's place in a ledger: a file `pid-<pid>` that records the process's start time,
 /// so that a file left by a process that ended (also by a crash or a kill) or of a pid since

@@ -152,11 +152,15 @@ void finish_prep(PrepProcess& process, const std::vector<PrepProcess*>& beside) 
     }
     for (std::size_t i = 0; i < fds.size(); ++i) {
       if (fds[i].revents == 0) continue;
+      if (fds[i].revents & POLLNVAL) {  // not open (any more): nothing to close
+        readers[i]->output = -1;
+        continue;
+      }
       char chunk[65536];
       const ssize_t n = ::read(fds[i].fd, chunk, sizeof chunk);
       if (n > 0)
         readers[i]->pending.append(chunk, std::size_t(n));
-      else if (n == 0 || errno != EINTR)  // its end (the build closed its output by ending)
+      else if (n == 0 || (errno != EINTR && errno != EAGAIN))  // its end (the build closed its output by ending)
         ::close(std::exchange(readers[i]->output, -1));
     }
     take_lines(process, message, false);

@@ -33,10 +33,15 @@ TEST_CASE("a stage starts beside the other preparations' coming growth, waits wh
   CHECK(prep::admission(5, 10, growing) == Admission::Wait);
   CHECK(prep::admission(14, 10, growing) == Admission::Wait);
   CHECK(prep::admission(15, 10, growing) == Admission::Refuse);
-  // one that waits itself neither grows nor is waited for: two preparations never wait for each other
+  // one that waits itself is not waited for (two preparations never wait for each other), but
+  // what it was promised before it waited counts against a start
   const std::vector<prep::LedgerEntry> waiting{{4, 4, true}};
   CHECK(prep::admission(10, 10, waiting) == Admission::Start);
   CHECK(prep::admission(11, 10, waiting) == Admission::Refuse);
+  const std::vector<prep::LedgerEntry> promised{{10, 4, true}};
+  CHECK(prep::admission(4, 10, promised) == Admission::Start);
+  CHECK(prep::admission(5, 10, promised) == Admission::Refuse);
+  CHECK(prep::growers(promised).promised == 6);
   // growth is what is still to come: one past its reservation adds none, yet ending returns its memory
   const std::vector<prep::LedgerEntry> past{{3, 5, false}};
   CHECK(prep::admission(10, 10, past) == Admission::Start);
@@ -84,11 +89,13 @@ TEST_CASE("the ledger counts a live preparation's reservation and drops an ended
     CHECK_FALSE(std::filesystem::exists(folder + "/pid-1"));
     CHECK(std::filesystem::exists(folder + "/notes"));
     CHECK(std::filesystem::exists(child_file));
-    // stopped (a signal, a debugger), it is not waited for; going on, it is again
+    // stopped (a signal, a debugger), it is not waited for (refused, not waiting without end),
+    // though what it was promised still counts; going on, it is waited for again
     ::kill(child, SIGSTOP);
     await_state(child, "Tt");
-    CHECK(mine.request(1e9, 1e10, &others) == Admission::Start);
+    CHECK(mine.request(1e9, 1e10, &others) == Admission::Refuse);
     CHECK(others.count == 0);
+    CHECK(others.promised == Approx(1e12).margin(1e8));
     ::kill(child, SIGCONT);
     await_state(child, "SR");
     CHECK(mine.request(1e9, 1e10) == Admission::Wait);
@@ -119,19 +126,27 @@ TEST_CASE("preparations on two threads of one process count each other: the seco
     if (key == "MemAvailable:") available = kib * 1024.0;
   REQUIRE(available > 0);
   const double stage = 0.6 * available;
-  std::atomic<int> first{0};  // 1: its stage started; 2: told to end
-  std::atomic<bool> second_started{false};
+  std::atomic<int> first{0};  // 1: its stage started (or refused: -1); 2: told to end
+  std::atomic<bool> second_started{false}, refused{false};
   std::thread one([&] {
     const prep::PreparationMemory span;
-    prep::check_memory("test", "the first stage", stage);
+    try {
+      prep::check_memory("test", "the first stage", stage);
+    } catch (const prep::MemoryRefusal&) {  // the machine's memory fell meanwhile: failed below
+      refused = true;
+    }
     first = 1;
     while (first != 2) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   });
   while (first != 1) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   std::thread two([&] {
     const prep::PreparationMemory span;
-    prep::check_memory("test", "the second stage", stage);
-    second_started = true;
+    try {
+      prep::check_memory("test", "the second stage", stage);
+      second_started = true;
+    } catch (const prep::MemoryRefusal&) {
+      refused = true;
+    }
   });
   for (int i = 0; i < 400 && common::work_step().rfind("waiting for memory: the second stage", 0) != 0; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -141,6 +156,7 @@ TEST_CASE("preparations on two threads of one process count each other: the seco
   one.join();
   two.join();
   CHECK(second_started);
+  CHECK_FALSE(refused);
 }
 
 TEST_CASE("a preparation in process holds its entry in the ledger while it runs and withdraws it at its end", "[memory]") {
@@ -156,6 +172,9 @@ TEST_CASE("a preparation in process holds its entry in the ledger while it runs 
     }
   } watch;
   watch.entry = entry;
+  // a check outside any preparation (a library call on its own) reserves nothing after it
+  prep::check_memory("test", "a stage outside any preparation", 1);
+  CHECK_FALSE(std::filesystem::exists(entry));
   (void)prep::prepare(prep::read_model_file(std::string(ISOSID_GOLDEN_DIR) + "/sphere_small.model.toml"), {.build_sid = true, .output = ""}, watch);
   CHECK(watch.held_in_reduction);
   CHECK_FALSE(std::filesystem::exists(entry));  // a process that lives on (Python's) reserves nothing after it

@@ -3,6 +3,7 @@
 #pragma once
 #include <sys/file.h>
 
+#include <cerrno>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -21,7 +22,7 @@ public:
   FileLock(const std::string& path, Mode mode) : fd_(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
     if (fd_ < 0) return;
     const int operation = mode == Mode::Shared ? LOCK_SH : mode == Mode::Exclusive ? LOCK_EX : LOCK_EX | LOCK_NB;
-    held_ = ::flock(fd_, operation) == 0;
+    held_ = lock(operation);
   }
   ~FileLock() {
     if (fd_ >= 0) ::close(fd_);
@@ -33,10 +34,18 @@ public:
   /// From shared to exclusive (waiting): not atomic, so what the holder decided under the
   /// shared lock must be checked again.
   void make_exclusive() {
-    if (fd_ >= 0) held_ = ::flock(fd_, LOCK_EX) == 0;
+    if (fd_ >= 0) held_ = lock(LOCK_EX);
   }
 
 private:
+  /// flock, again after a signal interrupted the wait.
+  bool lock(int operation) const {
+    int result;
+    while ((result = ::flock(fd_, operation)) != 0 && errno == EINTR) {
+    }
+    return result == 0;
+  }
+
   int fd_ = -1;
   bool held_ = false;
 };
