@@ -65,29 +65,34 @@ struct ProcessLedger {
     }
     return *ledger;
   }
-  /// The process's other preparations as one more entry: what they will still take (each one's
-  /// reservation above the memory held now) and what they hold (the memory above the base).
-  std::optional<LedgerEntry> siblings(long self, double resident) const {
-    LedgerEntry entry{0, std::max(0.0, resident - base), true};
-    bool any = false;
+  /// What the preparations but `except` will still take above the memory held now, whether
+  /// there are any, and whether every one of them waits.
+  struct Coming {
+    double bytes = 0;
+    bool any = false, all_waiting = true;
+  };
+  Coming coming(double resident, long except) const {
+    Coming c;
     for (const auto& [number, p] : preparations) {
-      if (number == self) continue;
-      any = true;
-      entry.reserved += std::max(0.0, p.reserved - resident);
-      entry.waiting = entry.waiting && p.waiting;
+      if (number == except) continue;
+      c.any = true;
+      c.bytes += std::max(0.0, p.reserved - resident);
+      c.all_waiting = c.all_waiting && p.waiting;
     }
-    entry.reserved += entry.resident;
-    return any ? std::optional<LedgerEntry>(entry) : std::nullopt;
+    return c;
+  }
+  /// The process's other preparations as one more entry: what they will still take and what
+  /// they hold (the memory above the base).
+  std::optional<LedgerEntry> siblings(long self, double resident) const {
+    const Coming c = coming(resident, self);
+    const double held = std::max(0.0, resident - base);
+    return c.any ? std::optional<LedgerEntry>(LedgerEntry{held + c.bytes, held, c.all_waiting}) : std::nullopt;
   }
   /// The process's record: the memory held now plus what each preparation will still take;
   /// waiting when every one waits.
   LedgerRecord record(double resident) const {
-    LedgerRecord r{resident, !preparations.empty()};
-    for (const auto& [number, p] : preparations) {
-      r.reserved += std::max(0.0, p.reserved - resident);
-      r.waiting = r.waiting && p.waiting;
-    }
-    return r;
+    const Coming c = coming(resident, -1);  // numbers are never negative: every preparation
+    return {resident + c.bytes, c.any && c.all_waiting};
   }
 };
 

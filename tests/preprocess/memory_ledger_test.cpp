@@ -118,12 +118,8 @@ TEST_CASE("the ledger counts a live preparation's reservation and drops an ended
 TEST_CASE("preparations on two threads of one process count each other: the second waits for the first's stage", "[memory]") {
   const test::ScratchDir dir("memory-ledger-threads");
   const LedgerFolder ledger(dir.path("ledger"));
-  // each stage needs 60 % of what is available: one fits, two do not
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key, unit;
-  double kib = 0, available = 0;
-  while (meminfo >> key >> kib >> unit)
-    if (key == "MemAvailable:") available = kib * 1024.0;
+  // each stage needs 60 % of what is available (what check_memory compares with): one fits, two do not
+  const double available = prep::memory_limit();
   REQUIRE(available > 0);
   const double stage = 0.6 * available;
   std::atomic<int> first{0};  // 1: its stage started (or refused: -1); 2: told to end
