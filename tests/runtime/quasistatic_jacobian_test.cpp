@@ -103,6 +103,17 @@ TEST_CASE("QuasistaticJacobian with two bodies' dense blocks works as with the w
     // the round-off of a condition number near 1e3, as above
     CHECK(solve_error(reused, K, U, V, r, b) < 1e-11);
   }
+  // K^-1 B for sparse gradients, block by block: columns on one body, on the other and on both
+  // (the gap-space condensation's W = K^-1 V)
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, 4);
+  B.col(0).head(n1) = Eigen::VectorXd::Random(n1);
+  B.col(1).tail(n2) = Eigen::VectorXd::Random(n2);
+  B.col(2) = Eigen::VectorXd::Random(n);
+  B(n1 - 1, 3) = 2.0, B(n1, 3) = -1.0;  // the last row of one block and the first of the next
+  Eigen::MatrixXd X;
+  J.solve_stiffness(Eigen::SparseMatrix<double>(B.sparseView()), X);
+  const Eigen::MatrixXd expected = K.llt().solve(B);
+  CHECK((X - expected).norm() < 1e-12 * expected.norm());
 }
 
 TEST_CASE("QuasistaticJacobian reuses a kept factorization only for the same terms", "[runtime][unit]") {
