@@ -12,20 +12,16 @@
 namespace isosid::run {
 
 namespace {
-/// C = V^T W between the points. C is symmetric (V^T K^-1 V): only its lower triangle is
-/// summed, column by column, each of V's nonzeros adding the tail of one row of W, read from W's
-/// transpose as a contiguous column; the upper triangle is its mirror, so C is exactly symmetric.
+/// C = V^T W between the points: each of V's nonzeros adds one row of W, read from W's
+/// transpose as a contiguous column (the sparse product V^T W gathers every term from a
+/// column of W, a strided read). The sums and their order are the sparse product's, so C is
+/// bitwise the same.
 Eigen::MatrixXd compliance(const Eigen::SparseMatrix<double>& V, const Eigen::MatrixXd& W) {
-  const Eigen::Index m = V.cols();
   const Eigen::MatrixXd Wt = W.transpose();
-  Eigen::MatrixXd C(m, m);
-  for (Eigen::Index j = 0; j < m; ++j) {
-    auto lower = C.col(j).tail(m - j);
-    lower.setZero();
-    for (Eigen::SparseMatrix<double>::InnerIterator it(V, j); it; ++it) lower.noalias() += it.value() * Wt.col(it.index()).tail(m - j);
-  }
-  for (Eigen::Index j = 0; j + 1 < m; ++j) C.row(j).tail(m - j - 1) = C.col(j).tail(m - j - 1).transpose();
-  return C;
+  Eigen::MatrixXd Ct = Eigen::MatrixXd::Zero(W.cols(), V.cols());  // column j: row j of C
+  for (Eigen::Index j = 0; j < V.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(V, j); it; ++it) Ct.col(j).noalias() += it.value() * Wt.col(it.index());
+  return Ct.transpose();
 }
 }  // namespace
 

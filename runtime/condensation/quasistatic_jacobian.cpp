@@ -175,26 +175,10 @@ void QuasistaticJacobian::solve_stiffness(const Eigen::VectorXd& b, Eigen::Vecto
 }
 
 void QuasistaticJacobian::solve_stiffness(const Eigen::SparseMatrix<double>& B, Eigen::MatrixXd& X) const {
-  if (!dense_stiffness_.size()) {
+  if (dense_stiffness_.size())
+    X.noalias() = dense_inverse_ * B;  // K^-1 is symmetric: the columns B selects
+  else
     X = stiffness_.cwiseInverse().asDiagonal() * Eigen::MatrixXd(B);
-    return;
-  }
-  // Column j of X sums the columns of K^-1 (symmetric) that B's column j selects, each within
-  // its body's block: K^-1 has no entries between bodies, so a gradient's entries on one body
-  // move that body's coordinates alone (half the whole product's work for two bodies).
-  X.setZero(size(), B.cols());
-  for (Eigen::Index j = 0; j < B.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(B, j); it; ++it) {
-      const auto& [at, nb] = block_of(it.index());
-      X.col(j).segment(at, nb).noalias() += it.value() * dense_inverse_.col(it.index()).segment(at, nb);
-    }
-}
-
-const std::pair<Eigen::Index, Eigen::Index>& QuasistaticJacobian::block_of(Eigen::Index row) const {
-  // the blocks ascend and tile the rows
-  const auto after = std::upper_bound(dense_blocks_.begin(), dense_blocks_.end(), row,
-                                      [](Eigen::Index r, const std::pair<Eigen::Index, Eigen::Index>& b) { return r < b.first; });
-  return *(after - 1);
 }
 
 void QuasistaticJacobian::solve_stiffness_block(Eigen::Index offset, const Eigen::Ref<const Eigen::MatrixXd>& B,

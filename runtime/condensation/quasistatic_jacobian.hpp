@@ -87,8 +87,6 @@ private:
   void reserve(Eigen::Index capacity) const;
   /// out = A x for a matrix A with K_h's dense blocks (K_h itself or its inverse), block by block.
   void multiply_blocks(const Eigen::MatrixXd& A, const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
-  /// The (offset, size) of the dense block that holds a row.
-  const std::pair<Eigen::Index, Eigen::Index>& block_of(Eigen::Index row) const;
 
   Eigen::VectorXd stiffness_;                 ///< diagonal of K_h
   Eigen::VectorXd inverse_root_stiffness_;    ///< its K^-1/2, for the symmetric capacitance
