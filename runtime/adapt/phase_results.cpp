@@ -139,6 +139,16 @@ json join_phase_summaries(const std::vector<json>& phases, const std::string& jo
     for (const json& p : phases) sum += p["time_split_s"][part].get<double>();
     value = sum;
   }
+  for (const char* part : {"loaded", "unloaded"}) {
+    double seconds = 0;
+    long long steps = 0;
+    for (const json& p : phases) {
+      seconds += p["step_time_s"][part].get<double>();
+      steps += p["step_time_s"][std::string(part) + "_steps"].get<long long>();
+    }
+    j["step_time_s"][part] = seconds;
+    j["step_time_s"][std::string(part) + "_steps"] = steps;
+  }
   json warnings = {{"warnings", json::array()}, {"expected_warnings", json::array()}};  // both lists, each text once
   for (const json& p : phases)
     for (const char* key : {"warnings", "expected_warnings"})

@@ -112,7 +112,7 @@ void Recorder::sample(double t, const double* y) {
     const Eigen::VectorXd& q = system_.bodies()[b]->q(y);
     body_q_[b].insert(body_q_[b].end(), q.data(), q.data() + q.size());
   }
-  if (first) last_step_t_ = t;  // a run (or a later phase of one) starts here, not at 0
+  if (first) last_step_t_ = t, step_time_.start();  // a run (or a later phase of one) starts here, not at 0
   for (std::size_t k = 0; k < states.size(); ++k) {
     if (first) last_force_[k] = states[k].force.norm();  // a phase may start loaded
     if (first && impact_modes_[k]) impact_modes_[k]->step(t, y, states[k].force.norm(), false);  // the start
@@ -138,8 +138,10 @@ void Recorder::step(double t, const double* y) {
   const OutputClock clock(output_s_);
   const auto states = system_.contact_states(y);
   const double dt = t - last_step_t_;
+  bool loaded = false;
   for (std::size_t k = 0; k < states.size(); ++k) {
     const double f = states[k].force.norm();
+    loaded = loaded || f > 0;
     const bool new_peak = f > peak_force_[k];
     if (new_peak) peak_force_[k] = f, points_at_peak_[k] = states[k].active_points;
     if (impact_modes_[k]) impact_modes_[k]->step(t, y, f, new_peak);
@@ -150,13 +152,27 @@ void Recorder::step(double t, const double* y) {
     if (states[k].outside_interface > 0 && interface_left_[k] < 0) interface_left_[k] = t;
   }
   const auto hertz = system_.hertz_states(y);
-  for (std::size_t k = 0; k < hertz.size(); ++k) hertz_logs_[k].step(t, y, hertz[k]);
+  for (std::size_t k = 0; k < hertz.size(); ++k) {
+    hertz_logs_[k].step(t, y, hertz[k]);
+    loaded = loaded || hertz[k].force.norm() > 0;
+  }
   update_quasistatic_rates(t, y);
   for (std::size_t m = 0; m < monitor_nodes_.size(); ++m) {
     if (scene_.monitors[m].quantity == "velocity") monitor_events_[m].add(t, monitor_value(m, y));
   }
   for (StressMonitor& s : stress_monitors_) s.step(t, y);
   last_step_t_ = t;
+  step_time_.add(loaded);
+}
+
+void Recorder::StepTime::add(bool loaded) {
+  const auto now = std::chrono::steady_clock::now();
+  if (started) {
+    const double seconds = std::chrono::duration<double>(now - last).count();
+    (loaded ? loaded_s : unloaded_s) += seconds;
+    ++(loaded ? loaded_steps : unloaded_steps);
+  }
+  last = now, started = true;
 }
 
 Eigen::Vector3d Recorder::monitor_value(std::size_t m, const double* y) const {

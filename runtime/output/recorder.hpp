@@ -112,6 +112,17 @@ private:
   std::vector<StressMonitor> stress_monitors_;
   std::vector<std::optional<ImpactModes>> impact_modes_;  ///< per contact with a flexible target
   double output_s_ = 0;  ///< time spent in sample() and step()
+  /// Wall time of the accepted steps, each from the step() before (or the first sample) to its
+  /// own, split by whether a contact carried load at the step's end: a contact's steps cost
+  /// its static problem, the others little more than the floating frames.
+  struct StepTime {
+    std::chrono::steady_clock::time_point last;
+    bool started = false;
+    double loaded_s = 0, unloaded_s = 0;
+    long loaded_steps = 0, unloaded_steps = 0;
+    void start() { last = std::chrono::steady_clock::now(), started = true; }
+    void add(bool loaded);
+  } step_time_;
 
   /// Adds the time of its scope to a total.
   class OutputClock {

@@ -213,6 +213,10 @@ nlohmann::json Recorder::summary(const IntegratorStats& stats, const RunOutcome&
   const MultibodySystem::RhsCost& cost = system_.rhs_cost();
   j["time_split_s"] = {{"static_solve", cost.static_solve_s}, {"contacts", cost.contacts_s}, {"joints", cost.joints_s},
                        {"floating_frame", cost.floating_frame_s}, {"output", output_s_}};
+  j["step_time_s"] = {{"loaded", step_time_.loaded_s},
+                      {"loaded_steps", step_time_.loaded_steps},
+                      {"unloaded", step_time_.unloaded_s},
+                      {"unloaded_steps", step_time_.unloaded_steps}};
   j["rhs_cost"] = {{"evaluations", cost.evaluations},
                    {"repeated", cost.repeated},
                    {"quasistatic_passes", system_.quasistatic_passes()},

@@ -58,6 +58,13 @@ TEST_CASE("gap space: impacts on a beam equal the general path's on the same SID
   INFO("pairs " << c["pairs"] << ", condensed " << c["condensed_points"]);
   CHECK(c["condensed_points"].get<int>() < c["pairs"].get<int>());
   CHECK(c["reach_widenings"].get<int>() == 0);
+  // the steps' time split by load: every step counted once, and the loaded ones span the
+  // contact in 0.1 us steps (within a step at either end)
+  const json& split = gap["step_time_s"];
+  CHECK(split["loaded_steps"].get<long>() + split["unloaded_steps"].get<long>() == gap["steps"].get<long>());
+  CHECK(std::abs(double(split["loaded_steps"].get<long>()) - c["duration_s"].get<double>() / 0.1e-6) <= 2);
+  CHECK(split["loaded"].get<double>() > 0);
+  CHECK(split["loaded"].get<double>() + split["unloaded"].get<double>() <= gap["wall_time_s"].get<double>());
   // the beam's modes take the same energy (1F and 3F carry 4-9 % of it); found by label, since
   // an index may hold a mode the impact does not excite, whose share is round-off (1e-31)
   for (const std::string label : {"1F", "3F"}) {
