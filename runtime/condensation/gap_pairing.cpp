@@ -19,6 +19,12 @@ SparseRows SparseRows::from(const Eigen::Ref<const Eigen::MatrixXd>& rows) {
     if (rows.col(j).cwiseAbs().maxCoeff() > floor) s.columns.push_back(j);
   s.values = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, Eigen::Index(s.columns.size()));
   for (std::size_t i = 0; i < s.columns.size(); ++i) s.values.col(Eigen::Index(i)).head(rows.rows()) = rows.col(s.columns[i]);
+  for (int r = 0; r < 3; ++r) {
+    s.row_begin[std::size_t(r)] = s.entry_values.size();
+    for (std::size_t i = 0; i < s.columns.size(); ++i)
+      if (const double v = s.values(r, Eigen::Index(i)); v != 0) s.entry_columns.push_back(s.columns[i]), s.entry_values.push_back(v);
+  }
+  s.row_begin[3] = s.entry_values.size();
   return s;
 }
 

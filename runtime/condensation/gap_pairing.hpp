@@ -15,6 +15,7 @@
 #include "body/floating_body.hpp"
 #include "contact/contact_target.hpp"
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -25,9 +26,20 @@ namespace isosid::run {
 struct SparseRows {
   std::vector<Eigen::Index> columns;
   Eigen::Matrix<double, 3, Eigen::Dynamic> values;  ///< 3 x columns (unused rows zero)
-  /// Adds the rows' product with q (all the body's coordinates) to out.
+  /// The non-zero entries of those columns, row by row (each row's in the columns' order) and
+  /// where each row's begin: a massless boundary's surface point reads each control point's x,
+  /// y and z in one row each, so two thirds of `values` are zeros the products skip.
+  std::vector<Eigen::Index> entry_columns;
+  std::vector<double> entry_values;
+  std::array<std::size_t, 4> row_begin{};
+  /// Adds the rows' product with q (all the body's coordinates) to out: each row's sum in the
+  /// columns' order, as the product with `values` forms it (its zeros add nothing).
   void add_product(const Eigen::VectorXd& q, Eigen::Vector3d& out) const {
-    for (std::size_t i = 0; i < columns.size(); ++i) out += values.col(Eigen::Index(i)) * q(columns[i]);
+    for (int r = 0; r < 3; ++r) {
+      double sum = out(r);  // in a register: the row's terms add up without a store between them
+      for (std::size_t e = row_begin[std::size_t(r)]; e < row_begin[std::size_t(r) + 1]; ++e) sum += entry_values[e] * q(entry_columns[e]);
+      out(r) = sum;
+    }
   }
   /// The entries of a dense dim x nq block above a relative threshold of its largest.
   static SparseRows from(const Eigen::Ref<const Eigen::MatrixXd>& rows);
