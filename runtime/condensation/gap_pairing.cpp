@@ -289,24 +289,28 @@ void GapPairing::add_gradient(const double* y, std::size_t k, Eigen::Ref<Eigen::
   if (master && master->n_quasistatic() > 0) add(*master, p.target_rows, p.normal, -1.0);
 }
 
-void GapPairing::target_point(const double* y, std::size_t k, const Evaluation& e, TargetPoint& t) const {
+void GapPairing::target_point(const double* y, std::size_t k, const Evaluation& e, bool with_velocity, TargetPoint& t) const {
   const Pair& p = pairs_[k];
   const FloatingBody* master = target_.body();
   t.gap = e.gap;
   t.normal = e.normal;
   t.body_point = e.target_point;
   t.velocity.setZero();
-  if (!master) {
+  // the integrated columns only: a point load reads no others (FloatingBody::apply_force). The
+  // columns ascend, the integrated ones first; a point of a massless boundary reads none, and
+  // its load then moves no integrated coordinate.
+  const std::vector<Eigen::Index>& columns = p.target_rows.columns;
+  const bool integrated = master && !columns.empty() && columns.front() < master->n_dynamic();
+  if (!integrated) {
     t.Psi.resize(dim_, 0);
-    return;
+  } else {
+    t.Psi.setZero(dim_, master->n_dynamic());
+    for (std::size_t i = 0; i < columns.size() && columns[i] < master->n_dynamic(); ++i)
+      t.Psi.col(columns[i]) = p.target_rows.values.col(Eigen::Index(i)).head(dim_);
   }
-  // the integrated columns only: a point load reads no others (FloatingBody::apply_force)
-  t.Psi = Eigen::MatrixXd::Zero(dim_, master->n_dynamic());
+  if (!master || !with_velocity) return;
   Eigen::Vector3d rate = Eigen::Vector3d::Zero();
   p.target_rows.add_product(master->qdot(y), rate);
-  // the columns ascend, the integrated ones first
-  for (std::size_t i = 0; i < p.target_rows.columns.size() && p.target_rows.columns[i] < master->n_dynamic(); ++i)
-    t.Psi.col(p.target_rows.columns[i]) = p.target_rows.values.col(Eigen::Index(i)).head(dim_);
   t.velocity = master->v(y) + master->orientation(y).toRotationMatrix() * (master->omega(y).cross(e.target_point) + rate);
 }
 

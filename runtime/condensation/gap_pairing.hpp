@@ -158,9 +158,10 @@ public:
   /// d gap / d z of pair k over the stacked quasistatic coordinates (n entries; each body's
   /// block at its quasistatic_offset()), with the frames' rotations at y.
   void add_gradient(const double* y, std::size_t k, Eigen::Ref<Eigen::VectorXd> v) const;
-  /// The target point of an evaluation as the loads need it: body point, normal, velocity
-  /// and the target's integrated rows.
-  void target_point(const double* y, std::size_t k, const Evaluation& e, TargetPoint& t) const;
+  /// The target point of an evaluation as the loads need it: body point, normal, the target's
+  /// integrated rows (none where the point reads no integrated coordinate) and, if asked for
+  /// (friction), the velocity of its material point (else zero).
+  void target_point(const double* y, std::size_t k, const Evaluation& e, bool with_velocity, TargetPoint& t) const;
 
   /// The contact is paired once its gap is below this, m: a fiftieth of the slave surface's
   /// radius (its points around their centroid; 9 um for the seed sphere's). A pairing made

@@ -182,7 +182,7 @@ void SurfaceContact::for_each_pressed_pair(const double* y, F&& f) const {
   const auto load = [&](std::size_t k, const GapPairing::Evaluation& e) {
     const Eigen::Index g = pairing_->pairs()[k].g;
     if (pressure(g, e.gap) <= 0) return;
-    pairing_->target_point(y, k, e, point_);
+    pairing_->target_point(y, k, e, spec_.friction > 0, point_);  // the velocity only for friction's sliding
     f(g, surface_.Psi.middleRows(g * dim_, dim_), e.slave_point, at.A_slave, point_);
   };
   if (const std::vector<GapPairing::Evaluation>* pressed = pairing_->pressed_evaluations(at)) {
