@@ -129,14 +129,8 @@ int GapSpaceSolve::solve_forces() {
   int iterations = 0;
   switch (points_.solve(free_gaps_, iterations)) {
     case PenaltyComplementarity::Outcome::Solved:
-      // W f: with most points pressed one matrix-vector product (the open points' forces are
-      // zero), else the pressed points' columns alone
-      if (2 * points_.pressed().size() > std::size_t(points_.size())) {
-        response_.noalias() = W_ * points_.forces();
-      } else {
-        response_.setZero(stiffness_.size());
-        for (const Eigen::Index a : points_.pressed()) response_.noalias() += points_.forces()(a) * W_.col(a);
-      }
+      response_.setZero(stiffness_.size());
+      for (const Eigen::Index a : points_.pressed()) response_.noalias() += points_.forces()(a) * W_.col(a);
       return iterations;
     case PenaltyComplementarity::Outcome::NotPositiveDefinite:
       throw QuasistaticDivergence("the gap-space compliance of contact '" + contacts_.front()->name() + "' is not positive definite");

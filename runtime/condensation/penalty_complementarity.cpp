@@ -55,12 +55,6 @@ bool PenaltyComplementarity::pressed_forces(const Eigen::VectorXd& free_gaps, Ei
 
 void PenaltyComplementarity::update_gaps(const Eigen::VectorXd& free_gaps) {
   gaps_ = free_gaps;
-  // with most points pressed one matrix-vector product (the open points' forces are zero),
-  // else the pressed points' columns alone
-  if (2 * pressed_.size() > std::size_t(size())) {
-    gaps_.noalias() += compliance_ * forces_;
-    return;
-  }
   for (const Eigen::Index a : pressed_) gaps_.noalias() += forces_(a) * compliance_.col(a);
 }
 
