@@ -97,7 +97,6 @@ FloatingBody::FloatingBody(const BodySpec& spec, format::Sid sid, Dimension dime
     oe1_.resize(n_inertial_, 6 * ni);  // rows beyond n_inertial_ carry no inertia
     for (Index j = 0; j < ni; ++j) oe1_.middleCols(6 * j, 6) = sid_.Oe.M1[std::size_t(j)].topRows(n_inertial_);
   }
-  q_high_ = VectorXd::Zero(n - n_dynamic_);
   form_rotation_bound();
   // in the normal form Ke's off-diagonal entries are round-off, dropped as ModalMatrix drops
   // them: the integrated modes couple to the quasistatic ones only beyond its diagonal rows
@@ -146,8 +145,7 @@ void FloatingBody::initial_state(double* y) const {
 
 const VectorXd& FloatingBody::q(const double* y) const {
   q_full_.head(n_dynamic_) = Eigen::Map<const VectorXd>(y + offset_ + 7, n_dynamic_);
-  q_full_.tail(nq() - n_dynamic_) = q_high_;
-  return q_full_;
+  return q_full_;  // its tail: the quasistatic modes as set
 }
 
 const VectorXd& FloatingBody::qdot(const double* y) const {

@@ -56,8 +56,9 @@ public:
   const Eigen::VectorXd& qdot(const double* y) const;
   Eigen::Map<const Eigen::Vector3d> v(const double* y) const { return Eigen::Map<const Eigen::Vector3d>(y + offset_ + 7 + n_dynamic_); }
   Eigen::Map<const Eigen::Vector3d> omega(const double* y) const { return Eigen::Map<const Eigen::Vector3d>(y + offset_ + 10 + n_dynamic_); }
-  /// The quasistatic modes' values (set by the quasistatic solve before each use of q).
-  Eigen::VectorXd& quasistatic_modes() const { return q_high_; }
+  /// The quasistatic modes' values (set by the quasistatic solve before each use of q): the
+  /// tail of the vector q() returns, kept there so that q() copies only the integrated modes.
+  Eigen::VectorBlock<Eigen::VectorXd> quasistatic_modes() const { return q_full_.tail(q_full_.size() - n_dynamic_); }
   /// Where this body's quasistatic modes start in the system's stacked quasistatic vector.
   Eigen::Index quasistatic_offset() const { return quasistatic_offset_; }
   void set_quasistatic_offset(Eigen::Index offset) { quasistatic_offset_ = offset; }
@@ -175,7 +176,7 @@ private:
   void inertia_at(const Eigen::VectorXd& q, Eigen::Vector3d& mc, Eigen::Ref<Eigen::MatrixXd> Ct, Eigen::Ref<Eigen::MatrixXd> Cr,
                   Eigen::Matrix3d& J) const;
   mutable MassFactor mass_;
-  mutable Eigen::VectorXd q_high_, q_full_, qdot_full_;
+  mutable Eigen::VectorXd q_full_, qdot_full_;
   /// The terms of rotation_response_bound, formed once: the Frobenius norms of Ge's, Oe0's
   /// and Oe1's quasistatic rows, the largest displacement per unit load (m/N: the largest
   /// point's mode rows over the smallest quasistatic stiffness; 0: no bound), the resolution.

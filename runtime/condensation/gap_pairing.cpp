@@ -296,19 +296,17 @@ void GapPairing::target_point(const double* y, std::size_t k, const Evaluation& 
   t.normal = e.normal;
   t.body_point = e.target_point;
   t.velocity.setZero();
-  // the integrated columns only: a point load reads no others (FloatingBody::apply_force). The
-  // columns ascend, the integrated ones first; a point of a massless boundary reads none, and
-  // its load then moves no integrated coordinate.
-  const std::vector<Eigen::Index>& columns = p.target_rows.columns;
-  const bool integrated = master && !columns.empty() && columns.front() < master->n_dynamic();
-  if (!integrated) {
+  if (!master) {
     t.Psi.resize(dim_, 0);
-  } else {
-    t.Psi.setZero(dim_, master->n_dynamic());
-    for (std::size_t i = 0; i < columns.size() && columns[i] < master->n_dynamic(); ++i)
-      t.Psi.col(columns[i]) = p.target_rows.values.col(Eigen::Index(i)).head(dim_);
+    return;
   }
-  if (!master || !with_velocity) return;
+  // the integrated columns only: a point load reads no others (FloatingBody::apply_force); the
+  // columns ascend, the integrated ones first. Always this size, so the loads allocate nothing.
+  t.Psi.setZero(dim_, master->n_dynamic());
+  const std::vector<Eigen::Index>& columns = p.target_rows.columns;
+  for (std::size_t i = 0; i < columns.size() && columns[i] < master->n_dynamic(); ++i)
+    t.Psi.col(columns[i]) = p.target_rows.values.col(Eigen::Index(i)).head(dim_);
+  if (!with_velocity) return;
   Eigen::Vector3d rate = Eigen::Vector3d::Zero();
   p.target_rows.add_product(master->qdot(y), rate);
   t.velocity = master->v(y) + master->orientation(y).toRotationMatrix() * (master->omega(y).cross(e.target_point) + rate);

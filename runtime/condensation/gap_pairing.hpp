@@ -33,7 +33,8 @@ struct SparseRows {
   std::vector<double> entry_values;
   std::array<std::size_t, 4> row_begin{};
   /// Adds the rows' product with q (all the body's coordinates) to out: each row's sum in the
-  /// columns' order, as the product with `values` forms it (its zeros add nothing).
+  /// columns' order, as the product with `values` forms it (its zeros add nothing where q is
+  /// finite). The entries are `from()`'s: rows filled by hand have none.
   void add_product(const Eigen::VectorXd& q, Eigen::Vector3d& out) const {
     for (int r = 0; r < 3; ++r) {
       double sum = out(r);  // in a register: the row's terms add up without a store between them
@@ -159,8 +160,7 @@ public:
   /// block at its quasistatic_offset()), with the frames' rotations at y.
   void add_gradient(const double* y, std::size_t k, Eigen::Ref<Eigen::VectorXd> v) const;
   /// The target point of an evaluation as the loads need it: body point, normal, the target's
-  /// integrated rows (none where the point reads no integrated coordinate) and, if asked for
-  /// (friction), the velocity of its material point (else zero).
+  /// integrated rows and, if asked for (friction), the velocity of its material point (else zero).
   void target_point(const double* y, std::size_t k, const Evaluation& e, bool with_velocity, TargetPoint& t) const;
 
   /// The contact is paired once its gap is below this, m: a fiftieth of the slave surface's
