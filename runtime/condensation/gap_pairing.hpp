@@ -15,6 +15,7 @@
 #include "body/floating_body.hpp"
 #include "contact/contact_target.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -36,11 +37,20 @@ struct SparseRows {
   /// columns' order, as the product with `values` forms it (its zeros add nothing where q is
   /// finite). The entries are `from()`'s: rows filled by hand have none.
   void add_product(const Eigen::VectorXd& q, Eigen::Vector3d& out) const {
-    for (int r = 0; r < 3; ++r) {
-      double sum = out(r);  // in a register: the row's terms add up without a store between them
-      for (std::size_t e = row_begin[std::size_t(r)]; e < row_begin[std::size_t(r) + 1]; ++e) sum += entry_values[e] * q(entry_columns[e]);
-      out(r) = sum;
-    }
+    // the three rows' sums side by side, three independent chains of additions (one row after
+    // another waits on each addition's latency)
+    const double* v[3];
+    const Eigen::Index* c[3];
+    std::size_t n[3];
+    for (std::size_t r = 0; r < 3; ++r)
+      v[r] = entry_values.data() + row_begin[r], c[r] = entry_columns.data() + row_begin[r], n[r] = row_begin[r + 1] - row_begin[r];
+    const std::size_t common = std::min({n[0], n[1], n[2]});
+    double s0 = out(0), s1 = out(1), s2 = out(2);
+    for (std::size_t i = 0; i < common; ++i) s0 += v[0][i] * q(c[0][i]), s1 += v[1][i] * q(c[1][i]), s2 += v[2][i] * q(c[2][i]);
+    for (std::size_t i = common; i < n[0]; ++i) s0 += v[0][i] * q(c[0][i]);
+    for (std::size_t i = common; i < n[1]; ++i) s1 += v[1][i] * q(c[1][i]);
+    for (std::size_t i = common; i < n[2]; ++i) s2 += v[2][i] * q(c[2][i]);
+    out << s0, s1, s2;
   }
   /// The entries of a dense dim x nq block above a relative threshold of its largest.
   static SparseRows from(const Eigen::Ref<const Eigen::MatrixXd>& rows);
