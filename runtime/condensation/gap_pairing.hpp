@@ -39,6 +39,7 @@ struct SparseRows {
   void add_product(const Eigen::VectorXd& q, Eigen::Vector3d& out) const {
     // the three rows' sums side by side, three independent chains of additions (one row after
     // another waits on each addition's latency)
+    if (entry_values.empty()) return;
     const double* v[3];
     const Eigen::Index* c[3];
     std::size_t n[3];
