@@ -103,8 +103,8 @@ TEST_CASE("QuasistaticJacobian with two bodies' dense blocks works as with the w
     // the round-off of a condition number near 1e3, as above
     CHECK(solve_error(reused, K, U, V, r, b) < 1e-11);
   }
-  // K^-1 B for sparse gradients, block by block: columns on one body, on the other and on both
-  // (the gap-space condensation's W = K^-1 V)
+  // K^-1 B for sparse gradients (the gap-space condensation's W = K^-1 V): columns on one body,
+  // on the other and on both
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, 4);
   B.col(0).head(n1) = Eigen::VectorXd::Random(n1);
   B.col(1).tail(n2) = Eigen::VectorXd::Random(n2);
