@@ -1,12 +1,49 @@
 // Slave points paired once with target points; see gap_pairing.hpp.
 #include "condensation/gap_pairing.hpp"
 
+#include "contact/deformed_patch.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace isosid::run {
 
 namespace {
+/// Largest difference, relative to the surface's largest row entry, between a point's rows and
+/// its carrier's sum over the master patch's rows, for the carriers to stand for the rows (the
+/// two are the same sums in another order).
+constexpr double kCarrierTolerance = 1e-10;
+
+/// The carriers of the surface's points on its master patch, if the patch's control points'
+/// rows give the points' own rows; else empty. The side's free parameters, in order, are the
+/// patch's (as surface_touch.cpp reads them).
+std::vector<ControlNetCarrier> surface_carriers(const FloatingBody& body, const format::ContactSurface& s, int dim) {
+  const format::MasterPatch* patch = format::find_master_patch(body.sid(), s.master_patch);
+  if (!patch || s.patch.find(' ') != std::string::npos || s.points() == 0) return {};
+  DeformedPatch deformed(*patch, dim);
+  const int pd = deformed.parameter_dim();
+  if (s.parameter.cols() != pd + 1) return {};
+  const Eigen::VectorXd lo = s.parameter.colwise().minCoeff(), hi = s.parameter.colwise().maxCoeff();
+  std::vector<Eigen::Index> free;
+  for (Eigen::Index d = 0; d < s.parameter.cols(); ++d)
+    if (hi(d) > lo(d)) free.push_back(d);
+  if (int(free.size()) != pd) return {};
+  deformed.deform(Eigen::VectorXd::Zero(body.nq()));
+  const double floor = kCarrierTolerance * s.Psi.cwiseAbs().maxCoeff();
+  std::vector<ControlNetCarrier> carriers(std::size_t(s.points()));
+  DeformedPatch::Point point;
+  Eigen::MatrixXd rows;
+  for (Eigen::Index g = 0; g < s.points(); ++g) {
+    Eigen::Vector2d u = Eigen::Vector2d::Zero();
+    for (int a = 0; a < pd; ++a) u(a) = s.parameter(g, free[std::size_t(a)]);
+    deformed.evaluate(u, point);
+    deformed.shape_rows(point, rows);
+    if (!((rows - s.Psi.middleRows(g * dim, dim)).cwiseAbs().maxCoeff() <= floor)) return {};
+    carriers[std::size_t(g)] = {point.control_points, point.R};
+  }
+  return carriers;
+}
+
 /// Entries below this fraction of a point's largest displacement row entry are round-off of the
 /// reduction (a massless boundary's surface points have 1e-17 in the columns of the normal modes).
 constexpr double kDroppedEntry = 1e-13;
@@ -92,6 +129,7 @@ void GapPairing::pair(const double* y) {
   watched_.valid = evaluated_at_.valid = false;
   slave_reach_ = target_reach_ = 0;
   slave_rows_.clear(), target_rows_.clear();
+  slave_net_.clear(), target_net_.clear();
   target_.update(y);
   const FloatingBody* master = target_.body();
   const Eigen::Matrix3d A = slave_.orientation(y).toRotationMatrix();
@@ -124,9 +162,21 @@ void GapPairing::pair(const double* y) {
     slave_reach_ = std::max(slave_reach_, surface_.position.row(g).norm());
     target_reach_ = std::max(target_reach_, p.target_point.norm());
     slave_rows_.add(p.slave_rows), target_rows_.add(p.target_rows);
+    if (master && !t.control_points.empty()) target_net_.add(t.control_points, t.basis);
     pairs_.push_back(std::move(p));
   }
   slave_rows_.finish(), target_rows_.finish();
+  // rows that fill most of the modes are evaluated through the control points that carry them
+  std::size_t slave_entries = 0, target_entries = 0;
+  for (const Pair& p : pairs_) slave_entries += p.slave_rows.entry_values.size(), target_entries += p.target_rows.entry_values.size();
+  if (2 * slave_entries > pairs_.size() * std::size_t(dim_ * slave_.nq()) && !slave_carriers().empty()) {
+    for (const Pair& p : pairs_) slave_net_.add(slave_carriers_[std::size_t(p.g)].control_points, slave_carriers_[std::size_t(p.g)].basis);
+    slave_net_.finish(format::find_master_patch(slave_.sid(), surface_.master_patch)->Phi, dim_, slave_entries);
+  }
+  if (const format::MasterPatch* patch = target_.master_patch(); master && patch && target_net_.added() == pairs_.size())
+    target_net_.finish(patch->Phi, dim_, target_entries);
+  else
+    target_net_.clear();
   for (Pair& p : pairs_) p.offset -= smallest;
   largest_ = std::max(largest_, pairs_.size());
   forget_solution();
@@ -150,13 +200,36 @@ GapPairing::Poses GapPairing::poses(const double* y) const {
   return at;
 }
 
+const std::vector<ControlNetCarrier>& GapPairing::slave_carriers() {
+  if (!slave_carriers_found_) slave_carriers_ = surface_carriers(slave_, surface_, dim_), slave_carriers_found_ = true;
+  return slave_carriers_;
+}
+
+void GapPairing::deform_nets(const Poses& at) const {
+  if (slave_net_.active()) slave_net_.deform(*at.q_slave);
+  if (target_net_.active() && at.q_target) target_net_.deform(*at.q_target);
+}
+
 void GapPairing::evaluate(const Poses& at, std::size_t k, Evaluation& e) const {
+  deform_nets(at);
+  evaluate_deformed(at, k, e);
+}
+
+void GapPairing::evaluate_deformed(const Poses& at, std::size_t k, Evaluation& e) const {
   const Pair& p = pairs_[k];
   e.slave_point.setZero();
   e.slave_point.head(dim_) = surface_.position.row(p.g).transpose();
-  p.slave_rows.add_product(*at.q_slave, e.slave_point);
+  if (slave_net_.active())
+    slave_net_.add_displacement(k, e.slave_point);
+  else
+    p.slave_rows.add_product(*at.q_slave, e.slave_point);
   e.target_point = p.target_point;
-  if (at.q_target) p.target_rows.add_product(*at.q_target, e.target_point);
+  if (at.q_target) {
+    if (target_net_.active())
+      target_net_.add_displacement(k, e.target_point);
+    else
+      p.target_rows.add_product(*at.q_target, e.target_point);
+  }
   // a fixed target's frame is the world's (identity poses)
   const Eigen::Vector3d x_target = at.r_target + at.A_target * e.target_point;
   e.normal = at.A_target * p.normal;
@@ -188,7 +261,8 @@ bool GapPairing::PosesCopy::same(const Poses& at, const std::vector<Eigen::Index
 const std::vector<GapPairing::Evaluation>& GapPairing::evaluations(const Poses& at) const {
   if (same_poses(evaluated_at_, at) && evaluations_.size() == pairs_.size()) return evaluations_;
   evaluations_.resize(pairs_.size());
-  for (std::size_t k = 0; k < pairs_.size(); ++k) evaluate(at, k, evaluations_[k]);
+  deform_nets(at);
+  for (std::size_t k = 0; k < pairs_.size(); ++k) evaluate_deformed(at, k, evaluations_[k]);
   evaluated_at_.assign(at);
   return evaluations_;
 }
@@ -197,7 +271,8 @@ const std::vector<GapPairing::Evaluation>* GapPairing::pressed_evaluations(const
   if (!same_poses(solved_at_, at)) return nullptr;
   if (!pressed_evaluated_) {
     pressed_evaluations_.resize(pressed_pairs_.size());  // within the capacity pair() reserved
-    for (std::size_t i = 0; i < pressed_pairs_.size(); ++i) evaluate(at, pressed_pairs_[i], pressed_evaluations_[i]);
+    deform_nets(at);
+    for (std::size_t i = 0; i < pressed_pairs_.size(); ++i) evaluate_deformed(at, pressed_pairs_[i], pressed_evaluations_[i]);
     pressed_evaluated_ = true;
   }
   return &pressed_evaluations_;
@@ -237,8 +312,9 @@ double GapPairing::watched_gap(const double* y) {
   }
   Evaluation e;
   double smallest = INFINITY, slip = 0, separation = 0;
+  deform_nets(at);
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    evaluate(at, k, e);
+    evaluate_deformed(at, k, e);
     // a point that slid by d past its pair is off by about its target's curvature times d^2
     // at most, far less than the 2 d kept in hand: beyond, the pairs no longer tell
     if (e.slip > distance) return watching_ = false, NAN;

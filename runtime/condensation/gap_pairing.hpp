@@ -13,6 +13,7 @@
 // between the condensed points to the contact and its rim, not the whole surface.
 #pragma once
 #include "body/floating_body.hpp"
+#include "condensation/control_net_rows.hpp"
 #include "contact/contact_target.hpp"
 
 #include <algorithm>
@@ -140,6 +141,10 @@ public:
   /// The most pairs any pairing made, and the most of them within reach at once.
   std::size_t largest_pairing() const { return largest_; }
   std::size_t largest_condensed() const { return largest_condensed_; }
+  /// Whether the slave's (the target's) pairs are evaluated through the control points that
+  /// carry them (ControlNetRows), not through their own rows.
+  bool slave_factored() const { return slave_net_.active(); }
+  bool target_factored() const { return target_net_.active(); }
   /// Times the reach was widened.
   long widenings() const { return widenings_; }
 
@@ -206,6 +211,14 @@ private:
   /// to `at`, m: bounds from the frames' moves and the coordinates' change, through the largest
   /// reference point and displacement rows of the pairs.
   std::pair<double, double> watched_change(const Poses& at) const;
+  /// Forms the factored sides' control-point displacements at `at` (ControlNetRows), for the
+  /// evaluations there.
+  void deform_nets(const Poses& at) const;
+  /// evaluate() once deform_nets(at) has run.
+  void evaluate_deformed(const Poses& at, std::size_t k, Evaluation& e) const;
+  /// The slave surface's points' carriers on its master patch (found at the first pairing whose
+  /// slave rows fill most of the modes): empty where the patch's rows do not give the points'.
+  const std::vector<ControlNetCarrier>& slave_carriers();
 
   const FloatingBody& slave_;
   const format::ContactSurface& surface_;
@@ -220,6 +233,10 @@ private:
   /// The pairs' rows of each body: the coordinates they read (a massless boundary's, or all
   /// modes' where the rows fill them: Craig-Bampton) and how far those can move a point
   RowsBound slave_rows_, target_rows_;
+  /// The pairs' rows of each body factored through its control points, where that is cheaper.
+  ControlNetRows slave_net_, target_net_;
+  std::vector<ControlNetCarrier> slave_carriers_;
+  bool slave_carriers_found_ = false;
   WatchedState watched_;
   mutable PosesCopy evaluated_at_;  ///< the poses of evaluations_
   mutable std::vector<Evaluation> evaluations_;

@@ -30,6 +30,7 @@ public:
 
   DeformedPatch(const format::MasterPatch& patch, int dim);
 
+  const format::MasterPatch& patch() const { return patch_; }
   int parameter_dim() const { return int(patch_.degrees.size()); }
   double lower(int direction) const { return patch_.knots[std::size_t(direction)](0); }
   double upper(int direction) const { return patch_.knots[std::size_t(direction)](patch_.knots[std::size_t(direction)].size() - 1); }

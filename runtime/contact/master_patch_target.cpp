@@ -77,6 +77,8 @@ bool MasterPatchTarget::project(const Eigen::Vector3d& x_world, const double* y,
 void MasterPatchTarget::fill_loads(const double* y, TargetPoint& out) const {
   out.body_point = point_.C;
   patch_.shape_rows(point_, out.Psi);
+  out.control_points = point_.control_points;
+  out.basis = point_.R;
   out.velocity = body_.point_velocity(point_.C, out.Psi, y);
 }
 

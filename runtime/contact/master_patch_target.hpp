@@ -21,6 +21,7 @@ public:
   Eigen::Vector2d curvatures(const Eigen::Vector3d& x) const override;
   /// max_i |Phi_i|_F: the patch lies in its control net's convex hull
   double displacement_bound() const override { return patch_.largest_row_norm(); }
+  const format::MasterPatch* master_patch() const override { return &patch_.patch(); }
 
 private:
   /// The outward unit normal at an evaluated point (body frame).

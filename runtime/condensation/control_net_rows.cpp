@@ -1,0 +1,60 @@
+// Paired points' rows factored through their control points; see control_net_rows.hpp.
+#include "condensation/control_net_rows.hpp"
+
+#include <algorithm>
+
+namespace isosid::run {
+
+void ControlNetRows::clear() {
+  carriers_.clear(), begin_.clear(), local_.clear(), basis_.clear();
+  rows_.resize(0, 0);
+  active_ = formed_ = false;
+}
+
+void ControlNetRows::add(const std::vector<int>& control_points, const std::vector<double>& basis) {
+  carriers_.push_back({control_points, basis});
+}
+
+void ControlNetRows::finish(const Eigen::MatrixXd& Phi, int dim, std::size_t direct_entries) {
+  dim_ = dim;
+  std::vector<int> used;
+  std::size_t sums = 0;
+  for (const ControlNetCarrier& c : carriers_) {
+    used.insert(used.end(), c.control_points.begin(), c.control_points.end());
+    sums += c.control_points.size() * std::size_t(dim);
+  }
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  const std::size_t factored = used.size() * std::size_t(dim) * std::size_t(Phi.cols()) + sums;
+  active_ = !carriers_.empty() && 2 * factored < direct_entries;
+  if (!active_) {
+    carriers_.clear();
+    return;
+  }
+  rows_.resize(Eigen::Index(used.size()) * dim, Phi.cols());
+  for (std::size_t j = 0; j < used.size(); ++j)
+    rows_.middleRows(Eigen::Index(j) * dim, dim) = Phi.middleRows(Eigen::Index(used[j]) * dim, dim);
+  begin_.assign(1, 0);
+  for (const ControlNetCarrier& c : carriers_) {
+    for (std::size_t i = 0; i < c.control_points.size(); ++i) {
+      local_.push_back(std::lower_bound(used.begin(), used.end(), c.control_points[i]) - used.begin());
+      basis_.push_back(c.basis[i]);
+    }
+    begin_.push_back(Eigen::Index(local_.size()));
+  }
+  carriers_.clear();
+}
+
+void ControlNetRows::deform(const Eigen::VectorXd& q) const {
+  if (formed_ && q.size() == q_.size() && (q.array() == q_.array()).all()) return;
+  q_ = q;
+  displacements_.noalias() = rows_ * q;
+  formed_ = true;
+}
+
+void ControlNetRows::add_displacement(std::size_t k, Eigen::Vector3d& out) const {
+  for (Eigen::Index i = begin_[k]; i < begin_[k + 1]; ++i)
+    out.head(dim_) += basis_[std::size_t(i)] * displacements_.segment(local_[std::size_t(i)] * dim_, dim_);
+}
+
+}  // namespace isosid::run
