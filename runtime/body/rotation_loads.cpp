@@ -109,7 +109,10 @@ bool FloatingBody::add_rotation_loads(const VectorXd& qv, const VectorXd& qd, co
   // of the six), instead of summing the matrix first (the floating frame's largest term)
   const Eigen::Matrix<double, 6, 1> w2 = rotation_squares(w);
   if (formed[1]) part.noalias() -= sid_.Oe.M0.middleRows(first, rows) * w2;
-  const Index m = formed[2] ? oe1_.cols() / 6 : 0;
+  // up to the last coordinate that is not zero: quasistatic modes rest at zero between
+  // impacts where nothing else loads them, and their columns then add nothing
+  Index m = formed[2] ? oe1_.cols() / 6 : 0;
+  while (m > 0 && qv(m - 1) == 0) --m;
   for (int c = 0; c < 6 && m > 0; ++c) {
     if (w2(c) == 0) continue;
     const Eigen::Map<const MatrixXd, 0, Eigen::OuterStride<>> column(oe1_.data() + c * oe1_.rows(), oe1_.rows(), m,

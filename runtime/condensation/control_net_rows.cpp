@@ -53,6 +53,14 @@ void ControlNetRows::deform(const Eigen::VectorXd& q) const {
 }
 
 void ControlNetRows::add_displacement(std::size_t k, Eigen::Vector3d& out) const {
+  const double* u = displacements_.data();
+  if (dim_ == 3) {  // fixed-size sums: the pairs' evaluations run thousands of times per impact
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (Eigen::Index i = begin_[k]; i < begin_[k + 1]; ++i)
+      sum += basis_[std::size_t(i)] * Eigen::Map<const Eigen::Vector3d>(u + 3 * local_[std::size_t(i)]);
+    out += sum;
+    return;
+  }
   for (Eigen::Index i = begin_[k]; i < begin_[k + 1]; ++i)
     out.head(dim_) += basis_[std::size_t(i)] * displacements_.segment(local_[std::size_t(i)] * dim_, dim_);
 }
