@@ -276,8 +276,11 @@ void FloatingBody::add_quasistatic_loads(const double* y, const Vector3d& gravit
 
 bool FloatingBody::add_uncoupled_quasistatic_loads(const double* y, const Vector3d& gravity, Eigen::Ref<VectorXd> out) const {
   const bool rotation = add_rotation_loads(q(y), qdot(y), omega(y), n_dynamic_, out);
-  if (held_gravity_rows_.size()) out.noalias() += held_gravity_rows_ * (orientation(y).toRotationMatrix().transpose() * gravity);
-  return rotation || held_gravity_rows_.size() > 0;
+  // a held frame's weight on the modes: none in a scene without gravity, whose modes then rest
+  // at zero between impacts without a solve
+  const bool weight = held_gravity_rows_.size() > 0 && !gravity.isZero(0.0);
+  if (weight) out.noalias() += held_gravity_rows_ * (orientation(y).toRotationMatrix().transpose() * gravity);
+  return rotation || weight;
 }
 
 Eigen::VectorXd FloatingBody::modal_energies(const VectorXd& qv, const VectorXd& qd) const {

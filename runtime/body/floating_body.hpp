@@ -83,7 +83,8 @@ public:
   void add_quasistatic_loads(const double* y, const Eigen::Vector3d& gravity, Eigen::Ref<Eigen::VectorXd> out) const;
   /// The same loads but the coupling: the rotation and held-gravity loads. False (and out
   /// untouched) where the body has neither: its frame cannot turn or its quasistatic
-  /// coordinates carry no inertia (a massless boundary), and no gravity is held.
+  /// coordinates carry no inertia (a massless boundary), and it holds no weight (a held frame
+  /// in a scene with gravity).
   bool add_uncoupled_quasistatic_loads(const double* y, const Eigen::Vector3d& gravity, Eigen::Ref<Eigen::VectorXd> out) const;
   /// An upper bound on how far the rotation loads on the quasistatic modes at (q, qdot, w) can
   /// move any point of the body (m): their size through the Frobenius norms of Ge's and Oe's

@@ -5,9 +5,8 @@
 // at every pass. So on one discretization they must give one impact.
 #include "isosid/format/sid_io.hpp"
 #include "scene/scene.hpp"
+#include "paired_step_observer.hpp"
 #include "scene_runner.hpp"
-#include "solve/multibody_system.hpp"
-#include "solve/simulation.hpp"
 #include "support/impact_scene.hpp"
 #include "support/scene_text.hpp"
 #include "support/one_line_exit.hpp"
@@ -36,18 +35,10 @@ void check_same_impact(const json& gap, const json& general, double tolerance, d
 }
 /// While the contact is paired, evaluates every pair as the run does and through the pair's
 /// own displacement rows, and keeps the largest difference of the deformed points.
-struct FactoredRowsObserver : run::SimulationObserver {
-  const run::Simulation* simulation = nullptr;
-  int paired_steps = 0;
+struct FactoredRowsObserver : test::PairedStepObserver {
   bool slave_factored = false, target_factored = false;
   double largest_difference = 0, largest_displacement = 0;  ///< m
-  void sample(double, const double*) override {}
-  void contact_event(int, bool, double) override {}
-  void step(double, const double* y) override {
-    const run::SurfaceContact& c = simulation->system().contacts()[0];
-    const run::GapPairing& pairing = c.gap_pairing();
-    if (!pairing.paired()) return;
-    ++paired_steps;
+  void paired_step(const run::SurfaceContact& c, const run::GapPairing& pairing, const double* y) override {
     slave_factored = slave_factored || pairing.slave_factored();
     target_factored = target_factored || pairing.target_factored();
     const run::GapPairing::Poses poses = pairing.poses(y);

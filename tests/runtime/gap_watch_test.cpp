@@ -6,6 +6,7 @@
 // without the bound. An axisymmetric sphere bouncing on a plane exercises the frame's move and
 // the coordinates' change; the terms of turning frames are not exercised here.
 #include "isosid/format/sid_io.hpp"
+#include "paired_step_observer.hpp"
 #include "scene/scene.hpp"
 #include "solve/multibody_system.hpp"
 #include "solve/simulation.hpp"
@@ -101,22 +102,15 @@ TEST_CASE("gap space: between impacts the watched gap never exceeds its pairs' s
 namespace {
 /// While the contact is paired, checks the pairs' kept evaluations at each step's state and at
 /// states moved from it: they must be those evaluate() gives there, never those of another state.
-struct KeptEvaluationsObserver : run::SimulationObserver {
-  const run::Simulation* simulation = nullptr;
-  int paired_steps = 0, mismatches = 0, unchanged_after_move = 0;
+struct KeptEvaluationsObserver : test::PairedStepObserver {
+  int mismatches = 0, unchanged_after_move = 0;
   /// The solve's pressed pairs: steps without them, steps where they differ from the pairs whose
   /// gap closes by more than round-off, and moved states at which they were still given.
   int pressed_unknown = 0, pressed_mismatches = 0, pressed_after_move = 0;
   /// The largest difference between the pairing's smallest gap at the step's state (the solve's)
   /// and the smallest of the pairs evaluated there, relative to the deepest penetration.
   double min_gap_error = 0;
-  void sample(double, const double*) override {}
-  void contact_event(int, bool, double) override {}
-  void step(double, const double* y) override {
-    const run::SurfaceContact& c = simulation->system().contacts()[0];
-    const run::GapPairing& pairing = c.gap_pairing();
-    if (!pairing.paired()) return;
-    ++paired_steps;
+  void paired_step(const run::SurfaceContact&, const run::GapPairing& pairing, const double* y) override {
     const run::FloatingBody& body = *simulation->system().bodies()[0];
     const Eigen::VectorXd quasistatic = body.quasistatic_modes();
     std::vector<double> moved(y, y + simulation->system().size());
