@@ -48,7 +48,11 @@ void ControlNetRows::finish(const Eigen::MatrixXd& Phi, int dim, std::size_t dir
 void ControlNetRows::deform(const Eigen::VectorXd& q) const {
   if (formed_ && q.size() == q_.size() && (q.array() == q_.array()).all()) return;
   q_ = q;
-  displacements_.noalias() = rows_ * q;
+  // up to q's last coordinate that is not zero: the quasistatic modes (q's tail) rest at zero
+  // while nothing presses
+  Eigen::Index used = q.size();
+  while (used > 0 && q(used - 1) == 0) --used;
+  displacements_.noalias() = rows_.leftCols(used) * q.head(used);
   formed_ = true;
 }
 

@@ -378,10 +378,14 @@ void GapPairing::target_point(const double* y, std::size_t k, const Evaluation& 
   }
   // the integrated columns only: a point load reads no others (FloatingBody::apply_force); the
   // columns ascend, the integrated ones first. Always this size, so the loads allocate nothing.
-  t.Psi.setZero(dim_, master->n_dynamic());
+  const Eigen::Index nd = master->n_dynamic();
   const std::vector<Eigen::Index>& columns = p.target_rows.columns;
-  for (std::size_t i = 0; i < columns.size() && columns[i] < master->n_dynamic(); ++i)
-    t.Psi.col(columns[i]) = p.target_rows.values.col(Eigen::Index(i)).head(dim_);
+  if (nd > 0 && Eigen::Index(columns.size()) >= nd && columns[std::size_t(nd - 1)] == nd - 1) {
+    t.Psi = p.target_rows.values.topLeftCorner(dim_, nd);  // rows that read every integrated column: one block
+  } else {
+    t.Psi.setZero(dim_, nd);
+    for (std::size_t i = 0; i < columns.size() && columns[i] < nd; ++i) t.Psi.col(columns[i]) = p.target_rows.values.col(Eigen::Index(i)).head(dim_);
+  }
   if (!with_velocity) return;
   Eigen::Vector3d rate = Eigen::Vector3d::Zero();
   p.target_rows.add_product(master->qdot(y), rate);
