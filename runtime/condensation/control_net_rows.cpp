@@ -6,43 +6,30 @@
 namespace isosid::run {
 
 void ControlNetRows::clear() {
-  carriers_.clear(), begin_.clear(), local_.clear(), basis_.clear();
+  begin_.assign(1, 0), local_.clear(), basis_.clear();
   rows_.resize(0, 0);
   active_ = formed_ = false;
 }
 
 void ControlNetRows::add(const std::vector<int>& control_points, const std::vector<double>& basis) {
-  carriers_.push_back({control_points, basis});
+  local_.insert(local_.end(), control_points.begin(), control_points.end());
+  basis_.insert(basis_.end(), basis.begin(), basis.end());
+  begin_.push_back(Eigen::Index(local_.size()));
 }
 
 void ControlNetRows::finish(const Eigen::MatrixXd& Phi, int dim, std::size_t direct_entries) {
   dim_ = dim;
-  std::vector<int> used;
-  std::size_t sums = 0;
-  for (const ControlNetCarrier& c : carriers_) {
-    used.insert(used.end(), c.control_points.begin(), c.control_points.end());
-    sums += c.control_points.size() * std::size_t(dim);
-  }
+  std::vector<Eigen::Index> used = local_;
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
+  const std::size_t sums = local_.size() * std::size_t(dim);
   const std::size_t factored = used.size() * std::size_t(dim) * std::size_t(Phi.cols()) + sums;
-  active_ = !carriers_.empty() && 2 * factored < direct_entries;
-  if (!active_) {
-    carriers_.clear();
-    return;
-  }
+  active_ = added() > 0 && 2 * factored < direct_entries;
+  if (!active_) return clear();
   rows_.resize(Eigen::Index(used.size()) * dim, Phi.cols());
   for (std::size_t j = 0; j < used.size(); ++j)
-    rows_.middleRows(Eigen::Index(j) * dim, dim) = Phi.middleRows(Eigen::Index(used[j]) * dim, dim);
-  begin_.assign(1, 0);
-  for (const ControlNetCarrier& c : carriers_) {
-    for (std::size_t i = 0; i < c.control_points.size(); ++i) {
-      local_.push_back(std::lower_bound(used.begin(), used.end(), c.control_points[i]) - used.begin());
-      basis_.push_back(c.basis[i]);
-    }
-    begin_.push_back(Eigen::Index(local_.size()));
-  }
-  carriers_.clear();
+    rows_.middleRows(Eigen::Index(j) * dim, dim) = Phi.middleRows(used[j] * dim, dim);
+  for (Eigen::Index& i : local_) i = std::lower_bound(used.begin(), used.end(), i) - used.begin();
 }
 
 void ControlNetRows::deform(const Eigen::VectorXd& q) const {

@@ -29,8 +29,8 @@ public:
   /// Appends the next pair's carrier (pairs in their order): its control points and their
   /// basis values.
   void add(const std::vector<int>& control_points, const std::vector<double>& basis);
-  /// Pairs added since clear(), until finish().
-  std::size_t added() const { return carriers_.size(); }
+  /// Pairs added since clear().
+  std::size_t added() const { return begin_.size() - 1; }
   /// Decides the form once every pair is added: factored if forming the used control points'
   /// displacements and summing the carriers reads fewer than half the `direct_entries` that
   /// the pairs' own rows hold. `Phi`: the patch's control-point rows (ncp dim x nq, row i dim + a).
@@ -42,9 +42,8 @@ public:
   void add_displacement(std::size_t k, Eigen::Vector3d& out) const;
 
 private:
-  std::vector<ControlNetCarrier> carriers_;  ///< until finish(): the pairs' carriers over the patch's control points
-  std::vector<Eigen::Index> begin_;          ///< pair k's entries: [begin_[k], begin_[k + 1])
-  std::vector<Eigen::Index> local_;          ///< per entry: its control point among the used ones
+  std::vector<Eigen::Index> begin_{0};       ///< pair k's entries: [begin_[k], begin_[k + 1])
+  std::vector<Eigen::Index> local_;          ///< per entry: its control point among the used ones (the patch's until finish())
   std::vector<double> basis_;                ///< per entry: its basis value
   Eigen::MatrixXd rows_;                     ///< (used dim) x nq: the used control points' rows
   int dim_ = 3;

@@ -14,20 +14,15 @@ namespace {
 /// two are the same sums in another order).
 constexpr double kCarrierTolerance = 1e-10;
 
-/// The carriers of the surface's points on its master patch, if the patch's control points'
-/// rows give the points' own rows; else empty. The side's free parameters, in order, are the
-/// patch's (as surface_touch.cpp reads them).
-std::vector<ControlNetCarrier> surface_carriers(const FloatingBody& body, const format::ContactSurface& s, int dim) {
-  const format::MasterPatch* patch = format::find_master_patch(body.sid(), s.master_patch);
-  if (!patch || s.patch.find(' ') != std::string::npos || s.points() == 0) return {};
+/// The carriers of the surface's points on its master patch (null: none), if the patch's
+/// control points' rows give the points' own rows; else empty.
+std::vector<ControlNetCarrier> surface_carriers(const format::MasterPatch* patch, const FloatingBody& body, const format::ContactSurface& s,
+                                                int dim) {
+  if (!patch) return {};
   DeformedPatch deformed(*patch, dim);
   const int pd = deformed.parameter_dim();
-  if (s.parameter.cols() != pd + 1) return {};
-  const Eigen::VectorXd lo = s.parameter.colwise().minCoeff(), hi = s.parameter.colwise().maxCoeff();
-  std::vector<Eigen::Index> free;
-  for (Eigen::Index d = 0; d < s.parameter.cols(); ++d)
-    if (hi(d) > lo(d)) free.push_back(d);
-  if (int(free.size()) != pd) return {};
+  const std::vector<Eigen::Index> free = side_parameters(s, pd);
+  if (free.empty()) return {};
   deformed.deform(Eigen::VectorXd::Zero(body.nq()));
   const double floor = kCarrierTolerance * s.Psi.cwiseAbs().maxCoeff();
   std::vector<ControlNetCarrier> carriers(std::size_t(s.points()));
@@ -104,7 +99,8 @@ double RowsBound::of_difference(const Eigen::VectorXd& a, const Eigen::VectorXd&
 }
 
 GapPairing::GapPairing(const FloatingBody& slave, const format::ContactSurface& surface, const ContactTarget& target)
-    : slave_(slave), surface_(surface), target_(target), dim_(slave.sid().dim()) {
+    : slave_(slave), surface_(surface), target_(target), dim_(slave.sid().dim()),
+      slave_patch_(format::find_master_patch(slave.sid(), surface.master_patch)) {
   // the spacing of the points: each point's distance to its nearest neighbour
   const Eigen::Index n = surface_.points();
   spacing_ = Eigen::VectorXd::Constant(n, INFINITY);
@@ -162,7 +158,8 @@ void GapPairing::pair(const double* y) {
     slave_reach_ = std::max(slave_reach_, surface_.position.row(g).norm());
     target_reach_ = std::max(target_reach_, p.target_point.norm());
     slave_rows_.add(p.slave_rows), target_rows_.add(p.target_rows);
-    if (master && !t.control_points.empty()) target_net_.add(t.control_points, t.basis);
+    if (master && target_.carriers(target_carrier_.control_points, target_carrier_.basis))
+      target_net_.add(target_carrier_.control_points, target_carrier_.basis);
     pairs_.push_back(std::move(p));
   }
   slave_rows_.finish(), target_rows_.finish();
@@ -171,7 +168,7 @@ void GapPairing::pair(const double* y) {
   for (const Pair& p : pairs_) slave_entries += p.slave_rows.entry_values.size(), target_entries += p.target_rows.entry_values.size();
   if (2 * slave_entries > pairs_.size() * std::size_t(dim_ * slave_.nq()) && !slave_carriers().empty()) {
     for (const Pair& p : pairs_) slave_net_.add(slave_carriers_[std::size_t(p.g)].control_points, slave_carriers_[std::size_t(p.g)].basis);
-    slave_net_.finish(format::find_master_patch(slave_.sid(), surface_.master_patch)->Phi, dim_, slave_entries);
+    slave_net_.finish(slave_patch_->Phi, dim_, slave_entries);
   }
   if (const format::MasterPatch* patch = target_.master_patch(); master && patch && target_net_.added() == pairs_.size())
     target_net_.finish(patch->Phi, dim_, target_entries);
@@ -201,7 +198,7 @@ GapPairing::Poses GapPairing::poses(const double* y) const {
 }
 
 const std::vector<ControlNetCarrier>& GapPairing::slave_carriers() {
-  if (!slave_carriers_found_) slave_carriers_ = surface_carriers(slave_, surface_, dim_), slave_carriers_found_ = true;
+  if (!slave_carriers_found_) slave_carriers_ = surface_carriers(slave_patch_, slave_, surface_, dim_), slave_carriers_found_ = true;
   return slave_carriers_;
 }
 

@@ -235,8 +235,10 @@ private:
   RowsBound slave_rows_, target_rows_;
   /// The pairs' rows of each body factored through its control points, where that is cheaper.
   ControlNetRows slave_net_, target_net_;
+  const format::MasterPatch* slave_patch_;  ///< the slave surface's master patch (null: none)
   std::vector<ControlNetCarrier> slave_carriers_;
   bool slave_carriers_found_ = false;
+  ControlNetCarrier target_carrier_;        ///< pair()'s buffer for each target point's carrier
   WatchedState watched_;
   mutable PosesCopy evaluated_at_;  ///< the poses of evaluations_
   mutable std::vector<Evaluation> evaluations_;

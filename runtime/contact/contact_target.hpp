@@ -17,10 +17,6 @@ struct TargetPoint {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();   ///< world velocity of the target's material point
   Eigen::Vector3d body_point = Eigen::Vector3d::Zero(); ///< body targets: the point in the body frame
   Eigen::MatrixXd Psi;                                  ///< body targets: dim x nq shape rows at the point
-  /// Targets on a master patch (ContactTarget::master_patch()), with Psi: the patch's control
-  /// points that carry the point and their rational basis values, Psi = sum basis_i Phi_i.
-  std::vector<int> control_points;
-  std::vector<double> basis;
 };
 
 class ContactTarget {
@@ -58,9 +54,14 @@ public:
   /// gap is linear in its position, so the static solve's linearized gaps are exact and the
   /// gaps of all points are one product. False for every other target.
   virtual bool fixed_plane(Eigen::Vector3d& normal, double& offset) const { return (void)normal, (void)offset, false; }
-  /// The master patch whose control points a TargetPoint's control_points index, or nullptr
-  /// for targets that are none.
+  /// The master patch a flexible target is, or nullptr for targets that are none.
   virtual const format::MasterPatch* master_patch() const { return nullptr; }
+  /// The control points of master_patch() that carry the point of the last project() and their
+  /// rational basis values there (its Psi = sum basis_i Phi_i). False, the vectors untouched,
+  /// for targets without a master patch.
+  virtual bool carriers(std::vector<int>& control_points, std::vector<double>& basis) const {
+    return (void)control_points, (void)basis, false;
+  }
 };
 
 }  // namespace isosid::run

@@ -210,4 +210,14 @@ bool DeformedPatch::closest_point(const Eigen::Vector3d& x, Eigen::Vector2d& u, 
   return false;
 }
 
+std::vector<Eigen::Index> side_parameters(const format::ContactSurface& s, int parameter_dim) {
+  if (s.patch.find(' ') != std::string::npos || s.points() == 0 || s.parameter.cols() != parameter_dim + 1) return {};
+  const Eigen::VectorXd lo = s.parameter.colwise().minCoeff(), hi = s.parameter.colwise().maxCoeff();
+  std::vector<Eigen::Index> free;
+  for (Eigen::Index d = 0; d < s.parameter.cols(); ++d)
+    if (hi(d) > lo(d)) free.push_back(d);
+  if (int(free.size()) != parameter_dim) free.clear();
+  return free;
+}
+
 }  // namespace isosid::run

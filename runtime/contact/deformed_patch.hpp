@@ -11,6 +11,11 @@
 
 namespace isosid::run {
 
+/// The columns of a contact surface's parameters that are its master patch's, in order: the
+/// side's free directions (those along which its points' parameters vary). Empty unless the
+/// surface lies on one patch and has parameter_dim of them.
+std::vector<Eigen::Index> side_parameters(const format::ContactSurface& surface, int parameter_dim);
+
 class DeformedPatch {
 public:
   /// A point of the patch with derivatives and the rational basis functions that carry it.

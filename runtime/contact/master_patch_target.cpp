@@ -77,9 +77,12 @@ bool MasterPatchTarget::project(const Eigen::Vector3d& x_world, const double* y,
 void MasterPatchTarget::fill_loads(const double* y, TargetPoint& out) const {
   out.body_point = point_.C;
   patch_.shape_rows(point_, out.Psi);
-  out.control_points = point_.control_points;
-  out.basis = point_.R;
   out.velocity = body_.point_velocity(point_.C, out.Psi, y);
+}
+
+bool MasterPatchTarget::carriers(std::vector<int>& control_points, std::vector<double>& basis) const {
+  control_points = point_.control_points, basis = point_.R;
+  return true;
 }
 
 Eigen::Vector2d MasterPatchTarget::curvatures(const Eigen::Vector3d& x_world) const {

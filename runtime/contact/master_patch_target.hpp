@@ -22,6 +22,7 @@ public:
   /// max_i |Phi_i|_F: the patch lies in its control net's convex hull
   double displacement_bound() const override { return patch_.largest_row_norm(); }
   const format::MasterPatch* master_patch() const override { return &patch_.patch(); }
+  bool carriers(std::vector<int>& control_points, std::vector<double>& basis) const override;
 
 private:
   /// The outward unit normal at an evaluated point (body frame).

@@ -17,20 +17,16 @@ SurfaceTouch::SurfaceTouch(const SurfaceContact& contact) : contact_(contact), d
   // knots around it), as the contact does; beyond lie parts of the side no contact is meant
   // on, poles among them, where normals degenerate
   const format::ContactSurface& s = contact.surface();
-  if (s.patch.find(' ') == std::string::npos && s.points() > 0 && s.parameter.cols() == pd + 1) {
+  if (const std::vector<Eigen::Index> free = side_parameters(s, pd); !free.empty()) {
     const Eigen::VectorXd lo = s.parameter.colwise().minCoeff(), hi = s.parameter.colwise().maxCoeff();
-    std::vector<Eigen::Index> free;
-    for (Eigen::Index d = 0; d < s.parameter.cols(); ++d)
-      if (hi(d) > lo(d)) free.push_back(d);
-    if (int(free.size()) == pd)
-      for (int a = 0; a < pd; ++a) {
-        const Eigen::VectorXd& knots = patch->knots[std::size_t(a)];
-        const double first = lo(free[std::size_t(a)]), last = hi(free[std::size_t(a)]);
-        for (Eigen::Index k = 0; k < knots.size(); ++k) {
-          if (knots(k) <= first) lower_(a) = knots(k);
-          if (knots(k) >= last) upper_(a) = std::min(upper_(a), knots(k));
-        }
+    for (int a = 0; a < pd; ++a) {
+      const Eigen::VectorXd& knots = patch->knots[std::size_t(a)];
+      const double first = lo(free[std::size_t(a)]), last = hi(free[std::size_t(a)]);
+      for (Eigen::Index k = 0; k < knots.size(); ++k) {
+        if (knots(k) <= first) lower_(a) = knots(k);
+        if (knots(k) >= last) upper_(a) = std::min(upper_(a), knots(k));
       }
+    }
   }
   // the start grid's points per direction in proportion to the surface's lengths along them
   // (about 81 in all, at least 3 per direction): a long band gets cells as long as wide, so
